@@ -1,0 +1,388 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/contact_data.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <shared_mutex>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+
+namespace contactlaws {
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// The process-wide hooks and the mjData -> ContactData registry behind them.
+
+int FilterHook(const mjModel* m, mjData* d, int g1, int g2);
+void PassiveHook(const mjModel* m, mjData* d);
+
+struct Registry {
+  std::shared_mutex mutex;
+  std::unordered_map<const mjData*, ContactData*> data;
+  std::atomic<uint64_t> generation{1};  // bumped by every (un)registration
+  mjfConFilt previous_filter = nullptr;
+  mjfGeneric previous_passive = nullptr;
+};
+
+Registry& GetRegistry() {
+  static Registry* registry = new Registry;  // never destroyed: hooks may run late
+  return *registry;
+}
+
+// Per-thread cache of the last lookup: the hooks run per geom pair, so the
+// common case (the same mjData again) takes no lock.
+struct LookupCache {
+  const mjData* d = nullptr;
+  ContactData* contact_data = nullptr;
+  uint64_t generation = 0;
+};
+thread_local LookupCache lookup_cache;
+
+ContactData* Lookup(const mjModel* m, const mjData* d) {
+  Registry& registry = GetRegistry();
+  const uint64_t generation = registry.generation.load(std::memory_order_acquire);
+  if (lookup_cache.d != d || lookup_cache.generation != generation) {
+    std::shared_lock lock(registry.mutex);
+    auto found = registry.data.find(d);
+    lookup_cache.d = d;
+    lookup_cache.contact_data = found == registry.data.end() ? nullptr : found->second;
+    lookup_cache.generation = registry.generation.load(std::memory_order_acquire);
+  }
+  ContactData* cd = lookup_cache.contact_data;
+  return cd && cd->model().model() == m ? cd : nullptr;
+}
+
+void Register(mjData* d, ContactData* cd) {
+  Registry& registry = GetRegistry();
+  std::unique_lock lock(registry.mutex);
+  if (!registry.data.emplace(d, cd).second) {
+    throw Error("this mjData already has a ContactData");
+  }
+  if (registry.data.size() == 1) {
+    registry.previous_filter = mjcb_contactfilter;
+    registry.previous_passive = mjcb_passive;
+    mjcb_contactfilter = FilterHook;
+    mjcb_passive = PassiveHook;
+  }
+  registry.generation.fetch_add(1, std::memory_order_acq_rel);
+}
+
+void Unregister(mjData* d) {
+  Registry& registry = GetRegistry();
+  std::unique_lock lock(registry.mutex);
+  registry.data.erase(d);
+  if (registry.data.empty()) {
+    // give back what we found, unless somebody replaced us since
+    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter;
+    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive;
+    registry.previous_filter = nullptr;
+    registry.previous_passive = nullptr;
+  }
+  registry.generation.fetch_add(1, std::memory_order_acq_rel);
+}
+
+int FilterHook(const mjModel* m, mjData* d, int g1, int g2) {
+  // tagged: no MuJoCo constraint, the passive hook applies the law
+  if (ContactData* cd = Lookup(m, d); cd && cd->model().FindPair(g1, g2) >= 0) {
+    return 1;
+  }
+  mjfConFilt previous = GetRegistry().previous_filter;
+  return previous ? previous(m, d, g1, g2) : DefaultContactFilter(m, g1, g2);
+}
+
+void PassiveHook(const mjModel* m, mjData* d) {
+  if (mjfGeneric previous = GetRegistry().previous_passive) previous(m, d);
+  if (ContactData* cd = Lookup(m, d)) cd->ApplyForces();
+}
+
+// ---------------------------------------------------------------------------
+// Geometry helpers.
+
+// Bounding-sphere test of MuJoCo's broadphase (margin 0): true if g1 and g2
+// cannot touch.
+bool FarApart(const mjModel* m, const mjData* d, int g1, int g2) {
+  const mjtNum r1 = m->geom_rbound[g1];
+  const mjtNum r2 = m->geom_rbound[g2];
+  auto plane_distance = [&](int plane, int other) {
+    const mjtNum* mat = d->geom_xmat + 9 * plane;
+    const mjtNum* p = d->geom_xpos + 3 * plane;
+    const mjtNum* q = d->geom_xpos + 3 * other;
+    return (q[0] - p[0]) * mat[2] + (q[1] - p[1]) * mat[5] + (q[2] - p[2]) * mat[8];
+  };
+  if (r1 > 0 && r2 > 0) {
+    mjtNum dif[3];
+    mju_sub3(dif, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g2);
+    return mju_dot3(dif, dif) > (r1 + r2) * (r1 + r2);
+  }
+  if (m->geom_type[g1] == mjGEOM_PLANE && r2 > 0) return plane_distance(g1, g2) > r2;
+  if (m->geom_type[g2] == mjGEOM_PLANE && r1 > 0) return plane_distance(g2, g1) > r1;
+  return false;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+ContactData::ContactData(const ContactModel& model, mjData* d)
+    : model_(model), m_(model.model()), d_(d) {
+  contacts_.resize(mjMAXCONPAIR);
+  const size_t points = std::min<size_t>(model.slot_count(), 4 * model.pairs().size());
+  latest_.reserve(points);
+  captured_.reserve(points);
+  slot_impact_.assign(model.slot_count(), -1);
+  tag_count_.assign(model.tags().size(), 0);
+  Register(d, this);
+}
+
+ContactData::~ContactData() { Unregister(d_); }
+
+void ContactData::Step() {
+  BeforeStep();
+  mj_step(m_, d_);
+  AfterStep();
+}
+
+void ContactData::BeforeStep() {
+  for (const Drive& drive : model_.drives()) {
+    drive.Position(d_->time, d_->mocap_pos + 3 * drive.mocap);
+  }
+  capture_armed_ = true;
+  has_capture_ = false;
+}
+
+void ContactData::Reset() {
+  latest_.clear();
+  captured_.clear();
+  capture_armed_ = has_capture_ = false;
+  std::fill(slot_impact_.begin(), slot_impact_.end(), -1);
+  std::fill(tag_count_.begin(), tag_count_.end(), 0);
+  open_.clear();
+  impacts_.clear();
+  tracks_.clear();
+  commits_ = 0;
+  has_committed_ = false;
+  committed_time_ = committed_power_ = dissipated_ = 0;
+}
+
+void ContactData::PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const {
+  if (const Drive* drive = model_.FindDrive(body)) {
+    drive->Velocity(d_->time, vel);
+    return;
+  }
+  if (m_->body_weldid[body] == 0) {
+    mju_zero3(vel);
+    return;
+  }
+  // cvel: (angular, linear) velocity at the subtree com of the body's root
+  const mjtNum* cvel = d_->cvel + 6 * body;
+  mjtNum offset[3], turn[3];
+  mju_sub3(offset, point, d_->subtree_com + 3 * m_->body_rootid[body]);
+  mju_cross(turn, cvel, offset);
+  mju_add3(vel, cvel + 3, turn);
+}
+
+double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
+                                  const mjtNum normal[3]) {
+  const int nv = m_->nv;
+  const int mark = d_->pstack;
+  mjtNum* jac0 = mj_stackAlloc(d_, 3 * nv);
+  mjtNum* jac1 = mj_stackAlloc(d_, 3 * nv);
+  mjtNum* jn = mj_stackAlloc(d_, nv);
+  mjtNum* x = mj_stackAlloc(d_, nv);
+
+  // n^T (J1 - J0): the normal relative velocity per dof
+  mj_jac(m_, d_, jac0, nullptr, point, pair.body[0]);
+  mj_jac(m_, d_, jac1, nullptr, point, pair.body[1]);
+  for (int j = 0; j < nv; ++j) {
+    jn[j] = normal[0] * (jac1[j] - jac0[j]) + normal[1] * (jac1[nv + j] - jac0[nv + j]) +
+            normal[2] * (jac1[2 * nv + j] - jac0[2 * nv + j]);
+  }
+  mj_solveM(m_, d_, x, jn, 1);
+  const double inverse_mass = mju_dot(jn, x, nv);
+  d_->pstack = mark;
+  return inverse_mass > 0 ? 1.0 / inverse_mass : std::numeric_limits<double>::infinity();
+}
+
+void ContactData::ApplyDrives() {
+  // translate each driven body (and its geoms) to its pose at d->time: exact at
+  // every RK4 stage, where mocap_pos still holds the step's start
+  for (const Drive& drive : model_.drives()) {
+    mjtNum pos[3], delta[3];
+    drive.Position(d_->time, pos);
+    mju_sub3(delta, pos, d_->xpos + 3 * drive.body);
+    mju_addTo3(d_->xpos + 3 * drive.body, delta);
+    mju_addTo3(d_->xipos + 3 * drive.body, delta);
+    const int first = m_->body_geomadr[drive.body];
+    for (int g = first; g < first + m_->body_geomnum[drive.body]; ++g) {
+      mju_addTo3(d_->geom_xpos + 3 * g, delta);
+    }
+  }
+}
+
+void ContactData::ApplyForces() {
+  latest_.clear();
+  latest_time_ = d_->time;
+  ApplyDrives();
+
+  const std::vector<GeomPair>& pairs = model_.pairs();
+  for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
+    const GeomPair& pair = pairs[p];
+    const int g0 = pair.geom[0];
+    const int g1 = pair.geom[1];
+    if (FarApart(m_, d_, g0, g1)) continue;
+
+    // MuJoCo's narrowphase: dist < 0 is penetration, frame[0..2] the normal
+    // from geom[0] to geom[1], pos midway between the surfaces
+    mjfCollision collide = mjCOLLISIONFUNC[m_->geom_type[g0]][m_->geom_type[g1]];
+    const int count = std::min(collide(m_, d_, contacts_.data(), g0, g1, 0), pair.slots);
+
+    for (int i = 0; i < count; ++i) {
+      const mjContact& con = contacts_[i];
+      const double depth = -con.dist;
+      if (!(depth > 0)) continue;
+      const mjtNum* normal = con.frame;
+
+      // depth rate: approach speed of geom[0] towards geom[1] along the normal
+      mjtNum v0[3], v1[3], relative[3];
+      PointVelocity(pair.body[0], con.pos, v0);
+      PointVelocity(pair.body[1], con.pos, v1);
+      mju_sub3(relative, v0, v1);
+
+      Evaluation e;
+      e.pair = p;
+      e.slot = pair.first_slot + i;
+      e.depth = depth;
+      e.depth_rate = mju_dot3(relative, normal);
+      const int open = slot_impact_[e.slot];
+      e.impact_velocity = std::max(open >= 0 ? impacts_[open].impact_velocity : e.depth_rate,
+                                   pair.params.min_impact_velocity);
+
+      ContactState state{e.depth, e.depth_rate, e.impact_velocity, 0.0};
+      if (pair.params.kind == LawKind::kKelvinVoigt && !pair.params.damping) {
+        state.effective_mass = EffectiveMass(pair, con.pos, normal);
+      }
+      const ContactForce f = EvaluateLaw(pair.params, state);
+      e.force = f.total;
+      e.elastic_energy = contactlaws::ElasticEnergy(pair.params, depth);
+      e.dissipated_power = f.dissipated_power(e.depth_rate);
+
+      // equal and opposite, at the same point: geom[1] pushed along +normal
+      mjtNum push[3], zero[3] = {0, 0, 0};
+      for (int b = 0; b < 2; ++b) {
+        if (m_->body_weldid[pair.body[b]] == 0) continue;  // world, mocap: no dofs
+        mju_scl3(push, normal, b == 1 ? f.total : -f.total);
+        mj_applyFT(m_, d_, push, zero, con.pos, pair.body[b], d_->qfrc_passive);
+      }
+      latest_.push_back(e);
+    }
+  }
+
+  if (capture_armed_) {
+    captured_ = latest_;
+    captured_time_ = latest_time_;
+    capture_armed_ = false;
+    has_capture_ = true;
+  }
+}
+
+double ContactData::Power(const std::vector<Evaluation>& evaluations) const {
+  double power = 0;
+  for (const Evaluation& e : evaluations) power += e.dissipated_power;
+  return power;
+}
+
+void ContactData::AfterStep() {
+  capture_armed_ = false;
+  if (!has_capture_) return;
+  has_capture_ = false;
+  const double t = captured_time_;
+  ++commits_;
+
+  // energy dissipated since the last commit (trapezoid)
+  const double power = Power(captured_);
+  if (has_committed_) dissipated_ += 0.5 * (power + committed_power_) * (t - committed_time_);
+  has_committed_ = true;
+  committed_time_ = t;
+  committed_power_ = power;
+
+  // open new episodes, advance the open ones
+  for (const Evaluation& e : captured_) {
+    int& index = slot_impact_[e.slot];
+    if (index < 0) {
+      Impact impact;
+      impact.pair = e.pair;
+      impact.tag = model_.pairs()[e.pair].tag;
+      impact.index = ++tag_count_[impact.tag];
+      impact.impact_velocity = e.depth_rate;
+      impact.time_contact = e.depth_rate > 0 ? t - e.depth / e.depth_rate : t;
+      index = static_cast<int>(impacts_.size());
+      impacts_.push_back(impact);
+      tracks_.push_back(Track{e.slot});
+      open_.push_back(index);
+    }
+    Impact& impact = impacts_[index];
+    Track& track = tracks_[index];
+    impact.max_depth = std::max(impact.max_depth, e.depth);
+    impact.max_force = std::max(impact.max_force, e.force);
+    track.last_commit = commits_;
+    track.last_time = t;
+    track.last_depth = e.depth;
+    track.last_rate = e.depth_rate;
+  }
+
+  // close the episodes whose point is out of contact
+  for (size_t k = 0; k < open_.size();) {
+    const int index = open_[k];
+    Track& track = tracks_[index];
+    if (track.last_commit == commits_) {
+      ++k;
+      continue;
+    }
+    Impact& impact = impacts_[index];
+    impact.open = false;
+    impact.separation_velocity = -track.last_rate;
+    impact.time_separation = track.last_rate < 0
+                                 ? track.last_time + track.last_depth / -track.last_rate
+                                 : track.last_time;
+    slot_impact_[track.slot] = -1;
+    open_[k] = open_.back();
+    open_.pop_back();
+  }
+}
+
+TagReading ContactData::Reading(int tag) const {
+  TagReading reading;
+  for (const Evaluation& e : latest_) {
+    if (model_.pairs()[e.pair].tag != tag) continue;
+    if (e.depth > reading.depth) {
+      reading.depth = e.depth;
+      reading.depth_rate = e.depth_rate;
+    }
+    reading.force += e.force;
+  }
+  return reading;
+}
+
+double ContactData::ElasticEnergy() const {
+  double energy = 0;
+  for (const Evaluation& e : latest_) energy += e.elastic_energy;
+  return energy;
+}
+
+double ContactData::DissipatedEnergy() const {
+  double energy = dissipated_;
+  if (has_committed_ && latest_time_ > committed_time_) {
+    energy += 0.5 * (Power(latest_) + committed_power_) * (latest_time_ - committed_time_);
+  }
+  return energy;
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,161 @@
+// Copyright contactlaws authors.
+//
+// ContactData: the laws acting on one mjData.
+//
+// While a ContactData exists, MuJoCo's global hooks are ours (installed by the
+// first ContactData, the callbacks found before restored when the last one is
+// destroyed):
+//   mjcb_contactfilter  discards the tagged geom pairs of this data's model
+//                       (MuJoCo makes no constraint for them) and applies
+//                       MuJoCo's own rule, or the callback found before, to
+//                       every other pair;
+//   mjcb_passive        runs MuJoCo's narrowphase on each tagged pair, evaluates
+//                       the pair's law at each contact point and adds the force
+//                       to qfrc_passive (after the callback found before).
+// An mjData with no ContactData is left entirely to MuJoCo.
+//
+// The hooks are pure functions of the state they are given (RK4 calls the
+// passive hook four times a step): the per-contact memory (impact velocity v0,
+// episode, energy) is committed once per accepted step, from the evaluation
+// at the step's start state, by AfterStep(). A user's loop is therefore
+//
+//   contactlaws::ContactData contacts(contact_model, d);
+//   while (...) contacts.Step();      // BeforeStep(); mj_step(m, d); AfterStep();
+//
+// and after mj_resetData (or any jump of the state), call Reset().
+
+#ifndef CONTACTLAWS_CONTACT_DATA_H_
+#define CONTACTLAWS_CONTACT_DATA_H_
+
+#include <cstdint>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_model.h"
+
+namespace contactlaws {
+
+// One contact episode of one contact point: first touch to separation.
+struct Impact {
+  int tag = -1;             // ContactModel::tags() index
+  int pair = -1;            // ContactModel::pairs() index
+  int index = 0;            // 1 for the tag's first episode, 2 for its second ...
+  double time_contact = 0;  // s, extrapolated to d = 0
+  double impact_velocity = 0;     // d' at first touch, m/s (> 0)
+  bool open = true;               // still in contact
+  double time_separation = 0;     // s, extrapolated to d = 0 (closed only)
+  double separation_velocity = 0; // -d' at the last state in contact, m/s
+  double max_depth = 0;           // m
+  double max_force = 0;           // N
+  // separation / impact depth rate (closed only)
+  double restitution_post() const { return separation_velocity / impact_velocity; }
+};
+
+// The latest evaluation of one tag: its deepest contact point, and the sum of
+// the forces of all its points.
+struct TagReading {
+  double depth = 0;       // m, 0 when out of contact
+  double depth_rate = 0;  // m/s, 0 when out of contact
+  double force = 0;       // N
+};
+
+class ContactData {
+ public:
+  // model must describe d's mjModel and outlive this object.
+  ContactData(const ContactModel& model, mjData* d);
+  ~ContactData();
+
+  ContactData(const ContactData&) = delete;
+  ContactData& operator=(const ContactData&) = delete;
+
+  // One accepted step: BeforeStep(); mj_step(m, d); AfterStep().
+  void Step();
+
+  // Moves driven (mocap) bodies to their prescribed pose at d->time and arms
+  // the capture of the step's first hook evaluation.
+  void BeforeStep();
+
+  // Commits the per-contact memory from the evaluation captured at the step's
+  // start state.
+  void AfterStep();
+
+  // Forgets every episode and the energy ledger; call after mj_resetData.
+  void Reset();
+
+  const ContactModel& model() const { return model_; }
+  mjData* data() const { return d_; }
+
+  // Every contact episode so far, in order of first touch.
+  const std::vector<Impact>& impacts() const { return impacts_; }
+
+  // The latest hook evaluation (call mj_forward first for the current state).
+  TagReading Reading(int tag) const;
+  double ElasticEnergy() const;   // J, latest evaluation
+  // J, integrated (trapezoid) over committed steps, up to the latest evaluation
+  double DissipatedEnergy() const;
+
+  // Called by the passive hook: adds the laws' forces to d->qfrc_passive.
+  void ApplyForces();
+
+  // World-frame velocity of a point fixed to body (driven bodies: their
+  // prescribed motion). Needs cvel (mj_forward, or inside the hooks).
+  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const;
+
+ private:
+  // One contact point as the hook saw it.
+  struct Evaluation {
+    int pair = -1;
+    int slot = -1;     // absolute slot index (pair.first_slot + point)
+    double depth = 0;
+    double depth_rate = 0;
+    double impact_velocity = 0;
+    double force = 0;
+    double elastic_energy = 0;
+    double dissipated_power = 0;
+  };
+
+  // 1 / (n^T J M^-1 J^T n) at a point, for the two bodies of pair.
+  double EffectiveMass(const GeomPair& pair, const mjtNum point[3],
+                       const mjtNum normal[3]);
+  void ApplyDrives();
+  double Power(const std::vector<Evaluation>& evaluations) const;
+
+  const ContactModel& model_;
+  const mjModel* m_;
+  mjData* d_;
+
+  // What AfterStep needs of an open episode beyond Impact.
+  struct Track {
+    int slot = -1;
+    int64_t last_commit = -1;  // the commit that last saw it in contact
+    double last_time = 0;
+    double last_depth = 0;
+    double last_rate = 0;
+  };
+
+  std::vector<mjContact> contacts_;   // narrowphase output, mjMAXCONPAIR
+  std::vector<Evaluation> latest_;    // the hook's last evaluation
+  double latest_time_ = 0;
+  std::vector<Evaluation> captured_;  // the evaluation at the step's start
+  double captured_time_ = 0;
+  bool capture_armed_ = false;
+  bool has_capture_ = false;
+
+  std::vector<int> slot_impact_;  // slot -> index of its open impact, or -1
+  std::vector<int> open_;         // indices of open impacts
+  std::vector<int> tag_count_;    // episodes per tag
+  std::vector<Impact> impacts_;
+  std::vector<Track> tracks_;     // parallel to impacts_
+  int64_t commits_ = 0;
+
+  // energy ledger
+  bool has_committed_ = false;
+  double committed_time_ = 0;
+  double committed_power_ = 0;
+  double dissipated_ = 0;
+};
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_CONTACT_DATA_H_

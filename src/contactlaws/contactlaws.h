@@ -1,0 +1,15 @@
+// Copyright contactlaws authors.
+//
+// Everything a program needs to use the contact laws with MuJoCo 2.2.
+
+#ifndef CONTACTLAWS_CONTACTLAWS_H_
+#define CONTACTLAWS_CONTACTLAWS_H_
+
+#include "contactlaws/contact_data.h"
+#include "contactlaws/contact_model.h"
+#include "contactlaws/error.h"
+#include "contactlaws/law.h"
+#include "contactlaws/model_io.h"
+#include "contactlaws/simulation.h"
+
+#endif  // CONTACTLAWS_CONTACTLAWS_H_

@@ -1,0 +1,56 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/model_io.h"
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+
+namespace contactlaws {
+
+namespace {
+
+// MuJoCo's messages may end in a newline; a one-line message must not.
+std::string OneLine(const char* text) {
+  std::string s(text);
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+UniqueModel LoadModelFile(const std::string& path) {
+  char error[1000] = "";
+  UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
+  if (!m) {
+    throw Error(fmt::format("{}: {}", path, error[0] ? OneLine(error) : "MuJoCo could not load it"));
+  }
+  return m;
+}
+
+UniqueModel LoadModelString(std::string_view xml, const std::string& name) {
+  // mjVFS holds mjMAXVFS file names and pointers: too large for the stack
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), name.c_str(), static_cast<int>(xml.size())) != 0) {
+    throw Error(fmt::format("{}: could not be put in MuJoCo's virtual file system", name));
+  }
+  const int index = mj_findFileVFS(vfs.get(), name.c_str());
+  std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+  char error[1000] = "";
+  UniqueModel m(mj_loadXML(name.c_str(), vfs.get(), error, sizeof(error)));
+  mj_deleteVFS(vfs.get());
+  if (!m) {
+    throw Error(fmt::format("{}: {}", name, error[0] ? OneLine(error) : "MuJoCo could not load it"));
+  }
+  return m;
+}
+
+int MujocoVersion() { return mj_version(); }
+
+}  // namespace contactlaws
