@@ -1,0 +1,115 @@
+// Copyright contactlaws authors.
+//
+// Test helpers: a fixture that fails on any MuJoCo warning, RAII model and
+// data from inline XML, and the drop scenes the physics tests share.
+
+#ifndef CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
+#define CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contactlaws.h"
+
+namespace contactlaws::testing {
+
+// Fails the test on any MuJoCo warning: those sent to mju_user_warning, and
+// those counted in the warning statistics of every mjData made by MakeData.
+class MujocoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    previous_warning_ = mju_user_warning;
+    mju_user_warning = &MujocoTest::RecordWarning;
+    Warnings().clear();
+  }
+
+  void TearDown() override {
+    mju_user_warning = previous_warning_;
+    for (const std::string& w : Warnings()) ADD_FAILURE() << "MuJoCo warning: " << w;
+    for (const UniqueData& d : data_) CheckNoWarnings(d.get());
+    for (const auto& sim : simulations_) CheckNoWarnings(sim->data());
+  }
+
+  static void CheckNoWarnings(const mjData* d) {
+    for (int i = 0; i < mjNWARNING; ++i) {
+      EXPECT_EQ(d->warning[i].number, 0) << "MuJoCo warning " << i << " raised";
+    }
+  }
+
+  // A model from inline XML, named after the test in messages.
+  UniqueModel Load(std::string_view xml) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return LoadModelString(xml, fmt::format("{}.xml", info->name()));
+  }
+
+  // A Simulation of inline XML, checked for warnings at the end of the test.
+  Simulation& MakeSimulation(std::string_view xml, const SimulationOptions& options = {}) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name = fmt::format("{}.xml", info->name());
+    simulations_.push_back(
+        std::make_unique<Simulation>(LoadModelString(xml, name), name, options));
+    return *simulations_.back();
+  }
+
+  // Data owned by the fixture, checked for warnings at the end of the test.
+  mjData* MakeData(const mjModel* m) {
+    data_.emplace_back(mj_makeData(m));
+    return data_.back().get();
+  }
+
+ private:
+  static std::vector<std::string>& Warnings() {
+    static std::vector<std::string> warnings;
+    return warnings;
+  }
+  static void RecordWarning(const char* message) { Warnings().emplace_back(message); }
+
+  void (*previous_warning_)(const char*) = nullptr;
+  std::vector<UniqueData> data_;
+  std::vector<std::unique_ptr<Simulation>> simulations_;
+};
+
+// A ball (radius 0.1 m, mass `mass` kg) just above a floor plane, moving down
+// at `speed` m/s, gravity off unless asked: the 1-D impact of the closed forms.
+inline std::string DropXml(std::string_view tag_data, double speed,
+                           std::string_view integrator = "Euler", double timestep = 1e-5,
+                           bool gravity = false, double mass = 1.0) {
+  return fmt::format(R"(
+<mujoco>
+  <option timestep="{timestep}" integrator="{integrator}" gravity="0 0 {g}"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="ball" pos="0 0 0.1001">
+      <freejoint/>
+      <inertial pos="0 0 0" mass="{mass}" diaginertia="0.004 0.004 0.004"/>
+      <geom name="ball" type="sphere" size="0.1"/>
+    </body>
+  </worldbody>
+  <keyframe><key qvel="0 0 -{speed} 0 0 0"/></keyframe>
+  <custom><text name="contactlaw:ball-floor" data="geom1=ball geom2=floor {tag}"/></custom>
+</mujoco>)",
+                     fmt::arg("timestep", timestep), fmt::arg("integrator", integrator),
+                     fmt::arg("g", gravity ? -9.81 : 0.0), fmt::arg("mass", mass),
+                     fmt::arg("speed", speed), fmt::arg("tag", tag_data));
+}
+
+// Steps sim until its first contact episode closes (or max_time): the episode.
+inline Impact FirstImpact(Simulation& sim, double max_time = 0.5) {
+  while (sim.time() < max_time) {
+    sim.Step();
+    const std::vector<Impact>& impacts = sim.contacts().impacts();
+    if (!impacts.empty() && !impacts[0].open) return impacts[0];
+  }
+  ADD_FAILURE() << "no closed contact episode within " << max_time << " s";
+  return Impact{};
+}
+
+}  // namespace contactlaws::testing
+
+#endif  // CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
