@@ -67,3 +67,196 @@ TEST_F(PhysicsTest, HertzMaxDepthMatchesClosedForm) {
 
 }  // namespace
 }  // namespace contactlaws
+
+namespace contactlaws {
+namespace {
+
+using testing::DropXml;
+using testing::FirstImpact;
+
+class LedgerTest : public testing::MujocoTest {};
+
+TEST_F(LedgerTest, HertzConservesEnergy) {
+  // The paper's ball falls 0.9 m, with gravity, and bounces 3 times on a
+  // Hertz floor. total = kinetic + potential + elastic + dissipated must stay
+  // at its start. Tolerance: semi-implicit Euler at 1e-5 s gains or loses a
+  // bounded energy ~ h/tau ~ 1e-3 relative while in contact (measured
+  // ~1.3e-3 mid-contact), and nothing drifts between contacts.
+  constexpr double kEnergyTolerance = 3e-3;  // relative
+  std::string xml = DropXml(
+      fmt::format("law=hertz stiffness={} exponent=1.5", kStiffness), 0.0, "Euler", 1e-5,
+      /*gravity=*/true);
+  Simulation& sim = MakeSimulation(xml);
+  mj_forward(sim.model(), sim.data());
+  const double start = sim.Energy().total();
+  double worst = 0;
+  while (sim.time() < 0.6) {
+    sim.Step();
+    mj_forward(sim.model(), sim.data());
+    worst = std::max(worst, std::abs(sim.Energy().total() / start - 1));
+    EXPECT_NEAR(sim.Energy().dissipated, 0.0, 1e-9);
+  }
+  EXPECT_LT(worst, kEnergyTolerance);
+  EXPECT_GE(sim.contacts().impacts().size(), 3u);
+}
+
+TEST_F(LedgerTest, DissipationMatchesTheKineticEnergyLost) {
+  // Flores e = 0.5, gravity off: after the episode, dissipated = the kinetic
+  // energy lost, 1/2 m v0^2 (1 - e_post^2). The ledger integrates the damping
+  // power sampled once per step (trapezoid), while the step itself is
+  // semi-implicit Euler: they differ by O(h / tau), measured 0.7% at
+  // h = 1e-5 s for this 1.5 ms contact. Held to 1%, and to first-order
+  // convergence: ten times smaller step, at least five times smaller error.
+  double error[2];
+  const double steps[2] = {1e-5, 1e-6};
+  for (int i = 0; i < 2; ++i) {
+    Simulation& sim =
+        MakeSimulation(DropXml(LawTag(LawKind::kFlores, 0.5), 2.0, "Euler", steps[i]));
+    const Impact impact = FirstImpact(sim);
+    sim.Step();  // one more step: the ledger's trapezoid reaches the separation
+    mj_forward(sim.model(), sim.data());
+    const double lost = 0.5 * 1.0 * 4.0 * (1 - std::pow(impact.restitution_post(), 2));
+    error[i] = std::abs(sim.Energy().dissipated / lost - 1);
+    EXPECT_NEAR(sim.Energy().elastic, 0.0, 1e-12);
+  }
+  EXPECT_LT(error[0], 1e-2);
+  EXPECT_LT(error[1], error[0] / 5);
+}
+
+class TwoSpheresTest : public testing::MujocoTest {
+ protected:
+  // Two free spheres, masses 1 and 3 kg, meeting head-on along x.
+  static std::string Xml(std::string_view tag) {
+    return fmt::format(R"(
+<mujoco>
+  <option timestep="1e-5" gravity="0 0 0"/>
+  <worldbody>
+    <body name="a" pos="-0.1001 0 1"><freejoint/>
+      <inertial pos="0 0 0" mass="1" diaginertia="0.004 0.004 0.004"/>
+      <geom name="a" type="sphere" size="0.1"/></body>
+    <body name="b" pos="0.1001 0 1"><freejoint/>
+      <inertial pos="0 0 0" mass="3" diaginertia="0.012 0.012 0.012"/>
+      <geom name="b" type="sphere" size="0.1"/></body>
+  </worldbody>
+  <keyframe><key qvel="2 0 0 0 0 0  -1 0 0 0 0 0"/></keyframe>
+  <custom><text name="contactlaw:a-b" data="geom1=a geom2=b {}"/></custom>
+</mujoco>)",
+                       tag);
+  }
+};
+
+TEST_F(TwoSpheresTest, MomentumAndPaperEquations13To15) {
+  constexpr double m1 = 1, m2 = 3, v1 = 2, v2 = -1;
+  Simulation& sim = MakeSimulation(Xml(LawTag(LawKind::kFlores, 0.7)));
+  const Impact impact = FirstImpact(sim);
+  EXPECT_NEAR(impact.impact_velocity, v1 - v2, 1e-3);
+  const double* qvel = sim.data()->qvel;
+  // momentum: the pair's forces are equal and opposite at one point, so it is
+  // conserved to rounding
+  EXPECT_NEAR(m1 * qvel[0] + m2 * qvel[6], m1 * v1 + m2 * v2, 1e-9);
+  // eqs. 13-14 with c_r the measured rebound (tolerance as the rebound's,
+  // times the velocities' scale 3 m/s)
+  const double c = impact.restitution_post();
+  EXPECT_NEAR(c, ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.7)), 2e-4);
+  EXPECT_NEAR(qvel[0], ((m1 - c * m2) * v1 + (1 + c) * m2 * v2) / (m1 + m2), 6e-4);
+  EXPECT_NEAR(qvel[6], ((m2 - c * m1) * v2 + (1 + c) * m1 * v1) / (m1 + m2), 6e-4);
+  // eq. 15: energy dissipated (ledger accurate to O(h / tau), see LedgerTest)
+  mj_forward(sim.model(), sim.data());
+  const double dissipated = 0.5 * m1 * m2 / (m1 + m2) * 9 * (1 - c * c);
+  EXPECT_NEAR(sim.Energy().dissipated / dissipated, 1.0, 1e-2);
+  // no spin from a central contact
+  for (int k : {3, 4, 5, 9, 10, 11}) EXPECT_NEAR(qvel[k], 0.0, 1e-9);
+}
+
+TEST_F(TwoSpheresTest, KelvinVoigtUsesTheEffectiveMass) {
+  // With tension allowed, the linear oscillator of mass m_eff = m1 m2/(m1+m2)
+  // = 0.75 kg rebounds with exactly e when c = 2 zeta(e) sqrt(k m_eff): a
+  // wrong m_eff (1 or 3 kg) would miss by > 0.05. Tolerance: the force jumps
+  // by c v0 at first touch, an O(h / tau) = 1e-5 / 1.2e-3 error on e.
+  for (double e : {0.3, 0.6, 0.9}) {
+    Simulation& sim = MakeSimulation(
+        Xml(fmt::format("law=kelvin-voigt restitution={} linear_stiffness=5e6 "
+                        "allow_tension=true",
+                        e)));
+    EXPECT_NEAR(FirstImpact(sim).restitution_post(), e, 1e-2) << "e = " << e;
+  }
+}
+
+TEST_F(PhysicsTest, KelvinVoigtClampedReboundsAboveE) {
+  // Clamped to F >= 0, Kelvin-Voigt separates before d returns to 0 and
+  // keeps more energy: e_post > e (the paper's criticism of the model).
+  Simulation& sim = MakeSimulation(
+      DropXml("law=kelvin-voigt restitution=0.5 linear_stiffness=5e6", 2.0));
+  const Impact impact = FirstImpact(sim);
+  EXPECT_GT(impact.restitution_post(), 0.5 + 0.02);
+  EXPECT_LT(impact.restitution_post(), 1.0);
+}
+
+TEST_F(PhysicsTest, RungeKuttaEulerAndImplicitAgree) {
+  // The memory is committed once per accepted step, so RK4's four hook
+  // calls give the same physics. Tolerance: each integrator's own error,
+  // <= 6e-5 for Euler (above), smaller for RK4.
+  for (LawKind law : {LawKind::kHuntCrossley, LawKind::kFlores}) {
+    double e_post[3];
+    const char* integrators[3] = {"Euler", "RK4", "implicit"};
+    for (int i = 0; i < 3; ++i) {
+      Simulation& sim = MakeSimulation(DropXml(LawTag(law, 0.5), kSpeed, integrators[i]));
+      e_post[i] = FirstImpact(sim).restitution_post();
+    }
+    const double exact = ExactRebound(HysteresisCoefficient(law, 0.5));
+    EXPECT_NEAR(e_post[1], exact, 2e-5) << LawName(law) << " RK4";
+    EXPECT_NEAR(e_post[0], e_post[1], kReboundTolerance) << LawName(law);
+    EXPECT_NEAR(e_post[2], e_post[1], kReboundTolerance) << LawName(law);
+  }
+}
+
+TEST_F(PhysicsTest, MaterialStiffnessFromTheGeoms) {
+  // steel ball (R = 0.1) on a steel plane: K = 4/(3 * 2s) sqrt(0.1),
+  // s = (1 - 0.3^2)/2.1e11  ->  K = 4.8654e10 N/m^1.5. So stiff a contact
+  // lasts ~0.2 ms: a 1e-6 s step resolves it as 1e-5 s does the paper's.
+  Simulation& sim = MakeSimulation(DropXml(
+      "law=flores restitution=0.8 youngs1=2.1e11 poisson1=0.3 youngs2=2.1e11 poisson2=0.3",
+      1.0, "Euler", 1e-6));
+  const double s = 0.91 / 2.1e11;
+  const double expected = 4.0 / (3.0 * 2 * s) * std::sqrt(0.1);
+  EXPECT_NEAR(sim.contact_model().pairs()[0].params.stiffness / expected, 1.0, 1e-12);
+  EXPECT_NEAR(expected, 4.8654e10, 1e7);
+  // and it acts: the rebound and the Hertz-family depth bound for that K
+  const Impact impact = FirstImpact(sim);
+  EXPECT_NEAR(impact.restitution_post(),
+              ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.8)), kReboundTolerance);
+  EXPECT_LT(impact.max_depth, std::pow(5.0 / (4 * expected), 0.4));
+  EXPECT_GT(impact.max_depth, 0.5 * std::pow(5.0 / (4 * expected), 0.4));
+}
+
+TEST_F(PhysicsTest, GroupTagsCoverEveryPair) {
+  // three balls in group 1, the floor in group 2, one tag for all of them
+  Simulation& sim = MakeSimulation(R"(
+<mujoco>
+  <option timestep="1e-5" gravity="0 0 0"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1" group="2"/>
+    <body pos="0 0 0.1001"><freejoint/><geom type="sphere" size="0.1" mass="1" group="1"/></body>
+    <body pos="1 0 0.1001"><freejoint/><geom type="sphere" size="0.1" mass="1" group="1"/></body>
+    <body pos="2 0 0.1001"><freejoint/><geom type="sphere" size="0.1" mass="1" group="1"/></body>
+  </worldbody>
+  <keyframe><key qvel="0 0 -1 0 0 0  0 0 -2 0 0 0  0 0 -3 0 0 0"/></keyframe>
+  <custom><text name="contactlaw:balls" data="geom1=group:1 geom2=group:2 law=hunt-crossley restitution=0.6 stiffness=1e8"/></custom>
+</mujoco>)");
+  EXPECT_EQ(sim.contact_model().pairs().size(), 3u);
+  while (sim.time() < 0.05) sim.Step();
+  const std::vector<Impact>& impacts = sim.contacts().impacts();
+  ASSERT_EQ(impacts.size(), 3u);
+  const double exact = ExactRebound(HysteresisCoefficient(LawKind::kHuntCrossley, 0.6));
+  for (const Impact& impact : impacts) {
+    EXPECT_FALSE(impact.open);
+    EXPECT_NEAR(impact.restitution_post(), exact, kReboundTolerance);
+  }
+  // numbered per tag in order of first touch: the fastest ball lands first
+  EXPECT_EQ(impacts[0].index, 1);
+  EXPECT_EQ(impacts[2].index, 3);
+  EXPECT_NEAR(impacts[0].impact_velocity, 3.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace contactlaws

@@ -1,0 +1,191 @@
+// Copyright contactlaws authors.
+//
+// The hooks: untagged pairs exactly as MuJoCo, callbacks restored and
+// chained, no state shared between mjData, drives exact at any time.
+
+#include <cstring>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class HooksTest : public testing::MujocoTest {};
+
+// Untagged geoms of every kind the default filter decides: contype and
+// conaffinity that match one way only or not at all, a parent-child pair, a
+// pair of the same body, boxes resting on the floor; plus an optional
+// tagged ball far from them.
+std::string UntaggedXml(bool filterparent, bool with_tag) {
+  return fmt::format(R"(
+<mujoco>
+  <option timestep="2e-3"><flag filterparent="{fp}"/></option>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body pos="0 0 0.3"><freejoint/>
+      <geom type="box" size="0.1 0.1 0.1" mass="1"/>
+      <geom type="sphere" size="0.1" pos="0.1 0 0" mass="0.1"/>
+      <body pos="0 0 0.25"><joint type="hinge" axis="1 0 0"/>
+        <geom type="capsule" size="0.05 0.1" mass="0.2"/></body>
+    </body>
+    <body pos="1 0 0.3"><freejoint/>
+      <geom type="box" size="0.1 0.1 0.1" contype="2" conaffinity="2" mass="1"/></body>
+    <body pos="1 0 0.6"><freejoint/>
+      <geom type="sphere" size="0.1" contype="2" conaffinity="1" mass="1"/></body>
+    <body pos="2 0 0.3"><freejoint/>
+      <geom type="sphere" size="0.1" contype="0" conaffinity="1" mass="1"/></body>
+    {tagged}
+  </worldbody>
+  {custom}
+</mujoco>)",
+                     fmt::arg("fp", filterparent ? "enable" : "disable"),
+                     fmt::arg("tagged", with_tag ? R"(<body pos="4 4 0.3"><freejoint/>
+      <geom name="tagged" type="sphere" size="0.1" mass="1"/></body>)"
+                                                 : ""),
+                     fmt::arg("custom", with_tag ? R"(<custom><text name="contactlaw:t"
+      data="geom1=tagged geom2=floor law=hertz stiffness=1e7"/></custom>)"
+                                                 : ""));
+}
+
+TEST_F(HooksTest, UntaggedPairsBehaveExactlyAsWithoutTheLibrary) {
+  for (bool filterparent : {true, false}) {
+    UniqueModel m = Load(UntaggedXml(filterparent, false));
+    mjData* plain = MakeData(m.get());
+    mjData* hooked = MakeData(m.get());
+    ContactModel cm(m.get(), "untagged");
+    ContactData contacts(cm, hooked);
+    int max_contacts = 0;
+    for (int i = 0; i < 500; ++i) {
+      mj_step(m.get(), plain);
+      contacts.Step();
+      ASSERT_EQ(plain->ncon, hooked->ncon) << "step " << i;
+      max_contacts = std::max(max_contacts, plain->ncon);
+    }
+    // bit for bit: the filter reproduces MuJoCo's rule, the hook adds nothing
+    EXPECT_EQ(std::memcmp(plain->qpos, hooked->qpos, sizeof(mjtNum) * m->nq), 0);
+    EXPECT_EQ(std::memcmp(plain->qvel, hooked->qvel, sizeof(mjtNum) * m->nv), 0);
+    EXPECT_GT(max_contacts, 4) << "the scene must actually collide";
+  }
+}
+
+TEST_F(HooksTest, TaggedPairsLeaveOtherContactsAlone) {
+  // the same untagged bodies next to a tagged ball: same MuJoCo contacts,
+  // minus the tagged pair's
+  UniqueModel plain_model = Load(UntaggedXml(true, false));
+  UniqueModel tagged_model = Load(UntaggedXml(true, true));
+  mjData* plain = MakeData(plain_model.get());
+  mjData* tagged = MakeData(tagged_model.get());
+  ContactModel cm(tagged_model.get(), "tagged");
+  ContactData contacts(cm, tagged);
+  for (int i = 0; i < 300; ++i) {
+    mj_step(plain_model.get(), plain);
+    contacts.Step();
+    ASSERT_EQ(plain->ncon, tagged->ncon) << "step " << i;
+  }
+  // the tagged ball rests on its law, not on a MuJoCo constraint
+  EXPECT_GE(contacts.impacts().size(), 1u);
+}
+
+int previous_filter_calls = 0;
+int previous_passive_calls = 0;
+int PreviousFilter(const mjModel* m, mjData*, int g1, int g2) {
+  ++previous_filter_calls;
+  return DefaultContactFilter(m, g1, g2);
+}
+void PreviousPassive(const mjModel*, mjData*) { ++previous_passive_calls; }
+
+TEST_F(HooksTest, CallbacksFoundBeforeAreChainedAndRestored) {
+  mjcb_contactfilter = PreviousFilter;
+  mjcb_passive = PreviousPassive;
+  previous_filter_calls = previous_passive_calls = 0;
+  {
+    UniqueModel m = Load(UntaggedXml(true, true));
+    ContactModel cm(m.get(), "chain");
+    mjData* d = MakeData(m.get());
+    ContactData contacts(cm, d);
+    EXPECT_NE(mjcb_contactfilter, PreviousFilter);
+    EXPECT_NE(mjcb_passive, PreviousPassive);
+    for (int i = 0; i < 10; ++i) contacts.Step();
+    EXPECT_GT(previous_filter_calls, 0) << "untagged pairs go to the previous filter";
+    EXPECT_GE(previous_passive_calls, 10) << "the previous passive hook runs too";
+  }
+  EXPECT_EQ(mjcb_contactfilter, PreviousFilter);
+  EXPECT_EQ(mjcb_passive, PreviousPassive);
+  mjcb_contactfilter = nullptr;
+  mjcb_passive = nullptr;
+}
+
+TEST_F(HooksTest, OneMjDataOneContactData) {
+  UniqueModel m = Load(UntaggedXml(true, true));
+  ContactModel cm(m.get(), "twice");
+  mjData* d = MakeData(m.get());
+  ContactData first(cm, d);
+  EXPECT_THROW(ContactData second(cm, d), Error);
+}
+
+TEST_F(HooksTest, DataOfOneModelShareNothing) {
+  // two mjData of one model, stepped interleaved, each with its own memory,
+  // end exactly where one alone ends
+  const std::string xml = testing::DropXml(
+      "law=flores restitution=0.5 stiffness=1.4e8", 3.0);
+  UniqueModel m = Load(xml);
+  ContactModel cm(m.get(), "shared");
+  mjData* alone = MakeData(m.get());
+  mjData* a = MakeData(m.get());
+  mjData* b = MakeData(m.get());
+  for (mjData* d : {alone, a, b}) mj_resetDataKeyframe(m.get(), d, 0);
+  b->qvel[2] = -1.0;  // b differs: a different impact velocity
+  {
+    ContactData only(cm, alone);
+    for (int i = 0; i < 3000; ++i) only.Step();
+    ASSERT_EQ(only.impacts().size(), 1u);
+  }
+  ContactData ca(cm, a);
+  ContactData cb(cm, b);
+  for (int i = 0; i < 3000; ++i) {
+    ca.Step();
+    cb.Step();
+  }
+  EXPECT_EQ(std::memcmp(alone->qpos, a->qpos, sizeof(mjtNum) * m->nq), 0);
+  EXPECT_EQ(std::memcmp(alone->qvel, a->qvel, sizeof(mjtNum) * m->nv), 0);
+  ASSERT_EQ(cb.impacts().size(), 1u);
+  EXPECT_NEAR(cb.impacts()[0].impact_velocity, 1.0, 1e-3);
+}
+
+TEST_F(HooksTest, ResetForgetsTheEpisodes) {
+  Simulation& sim = MakeSimulation(testing::DropXml("law=flores restitution=0.5 stiffness=1.4e8", 3.0));
+  const Impact first = testing::FirstImpact(sim);
+  sim.Reset();
+  EXPECT_TRUE(sim.contacts().impacts().empty());
+  EXPECT_EQ(sim.time(), 0.0);
+  const Impact again = testing::FirstImpact(sim);
+  EXPECT_EQ(again.index, 1);
+  EXPECT_EQ(again.restitution_post(), first.restitution_post());
+}
+
+TEST_F(HooksTest, DrivenBodyIsExactAtAnyTime) {
+  // the passive hook places the table from d->time alone, whatever
+  // mocap_pos holds: so at every RK4 stage
+  UniqueModel m = LoadModelFile(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/ball_table.xml");
+  ContactModel cm(m.get(), "ball_table.xml");
+  mjData* d = MakeData(m.get());
+  ContactData contacts(cm, d);
+  const int table = mj_name2id(m.get(), mjOBJ_BODY, "table");
+  const int geom = mj_name2id(m.get(), mjOBJ_GEOM, "table");
+  for (double t : {0.0, 0.1234, 0.5, 2.0}) {
+    d->time = t;
+    mj_forward(m.get(), d);
+    const double z = 0.5 + 0.1 * std::sin(7.5 * t);
+    EXPECT_NEAR(d->xpos[3 * table + 2], z, 1e-15) << "t = " << t;
+    EXPECT_NEAR(d->geom_xpos[3 * geom + 2], z - 0.05, 1e-15) << "t = " << t;
+    mjtNum vel[3];
+    contacts.PointVelocity(table, d->xpos + 3 * table, vel);
+    EXPECT_NEAR(vel[2], 0.75 * std::cos(7.5 * t), 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace contactlaws
