@@ -250,11 +250,11 @@ void ContactModel::ReadTags(const Overrides& overrides) {
             fmt::format("({}, {})", GeomName(m, g1), GeomName(m, g2));
         // pairs a law cannot act on: an error when named, skipped in a group
         const char* problem = nullptr;
-        if (m->body_weldid[b1] == m->body_weldid[b2]) {
-          problem = "the two geoms belong to the same body (or welded bodies)";
-        } else if (!mjCOLLISIONFUNC[std::min(m->geom_type[g1], m->geom_type[g2])]
-                                   [std::max(m->geom_type[g1], m->geom_type[g2])]) {
+        if (!mjCOLLISIONFUNC[std::min(m->geom_type[g1], m->geom_type[g2])]
+                            [std::max(m->geom_type[g1], m->geom_type[g2])]) {
           problem = "MuJoCo has no collision function for these geom types";
+        } else if (m->body_weldid[b1] == m->body_weldid[b2]) {
+          problem = "the two geoms belong to the same body (or to bodies welded together)";
         } else if (IsExcluded(m, b1, b2)) {
           problem = "the bodies are excluded by <contact><exclude>";
         }

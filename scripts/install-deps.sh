@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs, only if missing, the Debian 12 packages contactlaws needs to build,
+# test and plot. Safe to run repeatedly and without stdin (CI): prints one line
+# naming what it installs, or nothing when everything is present.
+set -euo pipefail
+
+packages=(
+  build-essential
+  cmake
+  libmujoco-dev
+  libqhull-dev        # Debian's mujoco CMake config references /usr/include/libqhull_r
+  libeigen3-dev
+  libfmt-dev
+  libgtest-dev
+  libcli11-dev
+  libbenchmark-dev
+  python3-matplotlib
+  python3-numpy
+)
+
+missing=()
+for pkg in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then
+  sudo_cmd=(sudo)
+fi
+
+"${sudo_cmd[@]}" apt-get update < /dev/null
+"${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y --no-install-recommends "${missing[@]}" < /dev/null
