@@ -77,27 +77,43 @@ using testing::FirstImpact;
 class LedgerTest : public testing::MujocoTest {};
 
 TEST_F(LedgerTest, HertzConservesEnergy) {
-  // The paper's ball falls 0.9 m, with gravity, and bounces 3 times on a
-  // Hertz floor. total = kinetic + potential + elastic + dissipated must stay
-  // at its start. Tolerance: semi-implicit Euler at 1e-5 s gains or loses a
-  // bounded energy ~ h/tau ~ 1e-3 relative while in contact (measured
-  // ~1.3e-3 mid-contact), and nothing drifts between contacts.
-  constexpr double kEnergyTolerance = 3e-3;  // relative
-  std::string xml = DropXml(
-      fmt::format("law=hertz stiffness={} exponent=1.5", kStiffness), 0.0, "Euler", 1e-5,
-      /*gravity=*/true);
-  Simulation& sim = MakeSimulation(xml);
-  mj_forward(sim.model(), sim.data());
-  const double start = sim.Energy().total();
-  double worst = 0;
-  while (sim.time() < 0.6) {
-    sim.Step();
+  // The paper's ball, switched to Hertz, falls 0.9 m with gravity and
+  // bounces twice in 2 s. total = kinetic + potential + elastic + dissipated
+  // must stay at its start:
+  // - RK4: everywhere to 1e-5 (measured 1.9e-6);
+  // - semi-implicit Euler is symplectic: no drift across contacts (1e-4 out
+  //   of contact, measured 2.2e-5), but inside a contact its energy
+  //   oscillates by ~ h omega / 2 = 1e-5 * (pi / 1.3 ms) / 2 = 1.2% (measured
+  //   1.17%): held to 2%.
+  const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";
+  for (int integrator : {mjINT_RK4, mjINT_EULER}) {
+    SimulationOptions options;
+    options.overrides.law = LawKind::kHertz;
+    options.integrator = integrator;
+    Simulation sim(LoadModelFile(path), "bouncing_ball.xml", options);
     mj_forward(sim.model(), sim.data());
-    worst = std::max(worst, std::abs(sim.Energy().total() / start - 1));
-    EXPECT_NEAR(sim.Energy().dissipated, 0.0, 1e-9);
+    const double start = sim.Energy().total();
+    EXPECT_NEAR(start, 9.81, 1e-12) << "m g h, h = 1 m";
+    double worst_in = 0, worst_out = 0;
+    for (int step = 1; sim.time() < 2.0; ++step) {
+      sim.Step();
+      if (step % 10) continue;
+      mj_forward(sim.model(), sim.data());
+      const double error = std::abs(sim.Energy().total() / start - 1);
+      (sim.Energy().elastic > 0 ? worst_in : worst_out) =
+          std::max(error, sim.Energy().elastic > 0 ? worst_in : worst_out);
+      ASSERT_EQ(sim.Energy().dissipated, 0.0);
+    }
+    CheckNoWarnings(sim.data());
+    EXPECT_EQ(sim.contacts().impacts().size(), 2u);
+    if (integrator == mjINT_RK4) {
+      EXPECT_LT(std::max(worst_in, worst_out), 1e-5);
+    } else {
+      EXPECT_LT(worst_out, 1e-4);
+      EXPECT_LT(worst_in, 2e-2);
+      EXPECT_GT(worst_in, 1e-3) << "the oscillation the bound explains is there";
+    }
   }
-  EXPECT_LT(worst, kEnergyTolerance);
-  EXPECT_GE(sim.contacts().impacts().size(), 3u);
 }
 
 TEST_F(LedgerTest, DissipationMatchesTheKineticEnergyLost) {
