@@ -49,8 +49,10 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   // during a contact of duration tau, gravity shifts e_post by at most
   // g tau / v0 (~3e-3 here)
   const Impact impact = testing::FirstImpact(sim, 1.0);
-  EXPECT_NEAR(impact.impact_velocity, std::sqrt(2 * 9.81 * 0.9), 1e-3);
+  // the first state in contact is up to one step past the touch: g h = 1e-4
+  EXPECT_NEAR(impact.impact_velocity, std::sqrt(2 * 9.81 * 0.9), 2e-4);
   const double tau = impact.time_separation - impact.time_contact;
+  // the Hertz duration 2.94 delta_max / v0 = 1.33 ms, lengthened by damping
   EXPECT_NEAR(tau, 1.3e-3, 0.2e-3);
   EXPECT_NEAR(impact.restitution_post(),
               ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.9)),

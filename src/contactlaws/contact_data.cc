@@ -10,6 +10,7 @@
 #include <shared_mutex>
 #include <unordered_map>
 
+#include <Eigen/Core>
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
@@ -191,22 +192,20 @@ void ContactData::PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) 
 
 double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
                                   const mjtNum normal[3]) {
+  using RowJacobian = Eigen::Matrix<mjtNum, 3, Eigen::Dynamic, Eigen::RowMajor>;
   const int nv = m_->nv;
   const int mark = d_->pstack;
-  mjtNum* jac0 = mj_stackAlloc(d_, 3 * nv);
-  mjtNum* jac1 = mj_stackAlloc(d_, 3 * nv);
-  mjtNum* jn = mj_stackAlloc(d_, nv);
-  mjtNum* x = mj_stackAlloc(d_, nv);
+  Eigen::Map<RowJacobian> jac0(mj_stackAlloc(d_, 3 * nv), 3, nv);
+  Eigen::Map<RowJacobian> jac1(mj_stackAlloc(d_, 3 * nv), 3, nv);
+  Eigen::Map<Eigen::VectorX<mjtNum>> jn(mj_stackAlloc(d_, nv), nv);
+  Eigen::Map<Eigen::VectorX<mjtNum>> x(mj_stackAlloc(d_, nv), nv);
 
-  // n^T (J1 - J0): the normal relative velocity per dof
-  mj_jac(m_, d_, jac0, nullptr, point, pair.body[0]);
-  mj_jac(m_, d_, jac1, nullptr, point, pair.body[1]);
-  for (int j = 0; j < nv; ++j) {
-    jn[j] = normal[0] * (jac1[j] - jac0[j]) + normal[1] * (jac1[nv + j] - jac0[nv + j]) +
-            normal[2] * (jac1[2 * nv + j] - jac0[2 * nv + j]);
-  }
-  mj_solveM(m_, d_, x, jn, 1);
-  const double inverse_mass = mju_dot(jn, x, nv);
+  // n^T (J1 - J0): the normal relative velocity per dof; then n^T J M^-1 J^T n
+  mj_jac(m_, d_, jac0.data(), nullptr, point, pair.body[0]);
+  mj_jac(m_, d_, jac1.data(), nullptr, point, pair.body[1]);
+  jn.noalias() = (jac1 - jac0).transpose() * Eigen::Map<const Eigen::Vector3<mjtNum>>(normal);
+  mj_solveM(m_, d_, x.data(), jn.data(), 1);
+  const double inverse_mass = jn.dot(x);
   d_->pstack = mark;
   return inverse_mass > 0 ? 1.0 / inverse_mass : std::numeric_limits<double>::infinity();
 }
