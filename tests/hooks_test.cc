@@ -155,6 +155,32 @@ TEST_F(HooksTest, DataOfOneModelShareNothing) {
   EXPECT_NEAR(cb.impacts()[0].impact_velocity, 1.0, 1e-3);
 }
 
+TEST_F(HooksTest, ModelsShareNothing) {
+  // the paper's two scenes stepped interleaved end exactly where each ends
+  // alone
+  const std::string dir = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/";
+  auto run = [&](Simulation* sim) {
+    for (int i = 0; i < 50000; ++i) sim->Step();
+  };
+  Simulation ball_alone(LoadModelFile(dir + "bouncing_ball.xml"), "ball");
+  run(&ball_alone);
+  Simulation table_alone(LoadModelFile(dir + "ball_table.xml"), "table");
+  run(&table_alone);
+  Simulation ball(LoadModelFile(dir + "bouncing_ball.xml"), "ball");
+  Simulation table(LoadModelFile(dir + "ball_table.xml"), "table");
+  for (int i = 0; i < 50000; ++i) {
+    ball.Step();
+    table.Step();
+  }
+  for (auto [a, b] : {std::pair{&ball, &ball_alone}, std::pair{&table, &table_alone}}) {
+    EXPECT_EQ(std::memcmp(a->data()->qpos, b->data()->qpos, sizeof(mjtNum) * a->model()->nq), 0);
+    EXPECT_EQ(a->contacts().impacts().size(), b->contacts().impacts().size());
+    CheckNoWarnings(a->data());
+  }
+  EXPECT_GE(ball.contacts().impacts().size(), 1u);
+  EXPECT_GE(table.contacts().impacts().size(), 1u);
+}
+
 TEST_F(HooksTest, ResetForgetsTheEpisodes) {
   Simulation& sim = MakeSimulation(testing::DropXml("law=flores restitution=0.5 stiffness=1.4e8", 3.0));
   const Impact first = testing::FirstImpact(sim);
