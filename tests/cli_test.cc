@@ -95,6 +95,19 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
   EXPECT_EQ(log.find("\nhunt-crossley,0.8,ball-floor,ball,floor,1,0.42"), log.find('\n'));
 }
 
+TEST(CliTest, LawsListsEveryLaw) {
+  const Result r = RunCli("laws");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* expected :
+       {"\nhertz\n  F = K d^n\n", "\nkelvin-voigt\n  F = k d + c d'\n",
+        "\nhunt-crossley\n  F = K d^n (1 + 3(1-e)/2 * d'/v0)\n",
+        "\nlankarani-nikravesh\n  F = K d^n (1 + 3(1-e^2)/4 * d'/v0)\n",
+        "\nflores\n  F = K d^n (1 + 8(1-e)/(5e) * d'/v0)\n", "Hunt, F. R. E. Crossley",
+        "restitution e in (0, 1]", "default 0.001 m/s"}) {
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  }
+}
+
 TEST(CliTest, TrajectoryToStandardOutput) {
   const Result r = RunCli("run " + kBall + " --duration 0.002 --output -");
   ASSERT_EQ(r.status, 0) << r.output;

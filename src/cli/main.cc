@@ -169,6 +169,20 @@ int Run(const RunArgs& args) {
   return 0;
 }
 
+// contactlaws laws: every law with its formula, parameters and citation.
+int PrintLaws() {
+  fmt::print("Convention: depth d > 0 in contact (m), depth rate d' > 0 approaching (m/s),\n"
+             "v0 = d' at first touch (m/s, floored by min_impact_velocity, default {} m/s),\n"
+             "force F >= 0 pushes apart (N); F = 0 for d <= 0; clamped to F >= 0 unless\n"
+             "allow_tension=true.\n",
+             kDefaultMinImpactVelocity);
+  for (LawKind kind : kAllLaws) {
+    fmt::print("\n{}\n  {}\n  parameters: {}\n  reference:  {}\n", LawName(kind),
+               LawFormula(kind), LawParameters(kind), LawReference(kind));
+  }
+  return 0;
+}
+
 int Main(int argc, char** argv) {
   CLI::App app{"contactlaws: continuous contact force laws (Flores et al. 2011) in MuJoCo 2.2",
                "contactlaws"};
@@ -191,6 +205,9 @@ int Main(int argc, char** argv) {
   run_cmd->add_option("--output", run.output, "trajectory CSV ('-' for stdout); none if absent");
   run_cmd->add_option("--impacts", run.impacts, "impact log CSV, one row per contact episode");
 
+  CLI::App* laws_cmd =
+      app.add_subcommand("laws", "list the laws: formula, parameters, units, citation");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -205,6 +222,7 @@ int Main(int argc, char** argv) {
 
   try {
     if (run_cmd->parsed()) return Run(run);
+    if (laws_cmd->parsed()) return PrintLaws();
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     return kExitRefused;

@@ -44,6 +44,41 @@ std::string_view LawFormula(LawKind kind) {
   return "?";
 }
 
+std::string_view LawParameters(LawKind kind) {
+  switch (kind) {
+    case LawKind::kHertz: return "stiffness K (N/m^n) > 0, exponent n in [1, 3] (default 1.5)";
+    case LawKind::kKelvinVoigt:
+      return "linear_stiffness k (N/m) > 0, restitution e in [0, 1] "
+             "(c = 2 zeta(e) sqrt(k m_eff)) or damping c (N s/m) >= 0";
+    case LawKind::kHuntCrossley:
+    case LawKind::kLankaraniNikravesh:
+      return "stiffness K (N/m^n) > 0, exponent n in [1, 3], restitution e in [0, 1]";
+    case LawKind::kFlores:
+      return "stiffness K (N/m^n) > 0, exponent n in [1, 3], restitution e in (0, 1]";
+  }
+  return "?";
+}
+
+std::string_view LawReference(LawKind kind) {
+  switch (kind) {
+    case LawKind::kHertz:
+      return "H. Hertz, On the contact of solids (1896); Flores et al. (2011) eq. 1";
+    case LawKind::kKelvinVoigt:
+      return "Y. A. Khulief, A. A. Shabana, Mech. Mach. Theory 22:213-224 (1987); "
+             "Flores et al. (2011) eq. 4";
+    case LawKind::kHuntCrossley:
+      return "K. H. Hunt, F. R. E. Crossley, J. Appl. Mech. 42:440-445 (1975); "
+             "Flores et al. (2011) eqs. 6-7";
+    case LawKind::kLankaraniNikravesh:
+      return "H. M. Lankarani, P. E. Nikravesh, J. Mech. Des. 112:369-376 (1990); "
+             "Flores et al. (2011) eqs. 8-9";
+    case LawKind::kFlores:
+      return "P. Flores, M. Machado, M. T. Silva, J. M. Martins, Multibody Syst. Dyn. "
+             "25:357-375 (2011), eqs. 43-44";
+  }
+  return "?";
+}
+
 double HysteresisCoefficient(LawKind kind, double restitution) {
   switch (kind) {
     case LawKind::kHuntCrossley: return HuntCrossleyCoefficient(restitution);

@@ -107,6 +107,12 @@ double HysteresisCoefficient(LawKind kind, double restitution);
 // The one-line formula of the law, for help texts and `laws`.
 std::string_view LawFormula(LawKind kind);
 
+// The tag keys the law reads, with units and ranges.
+std::string_view LawParameters(LawKind kind);
+
+// The law's reference, and its equations in Flores et al. (2011).
+std::string_view LawReference(LawKind kind);
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_LAW_H_
