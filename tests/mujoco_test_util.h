@@ -57,6 +57,13 @@ class MujocoTest : public ::testing::Test {
     return *simulations_.back();
   }
 
+  // A Simulation of a scene of mjcf/, checked like MakeSimulation's.
+  Simulation& MakeSceneSimulation(const std::string& file, const SimulationOptions& options = {}) {
+    const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/" + file;
+    simulations_.push_back(std::make_unique<Simulation>(LoadModelFile(path), file, options));
+    return *simulations_.back();
+  }
+
   // Data owned by the fixture, checked for warnings at the end of the test.
   mjData* MakeData(const mjModel* m) {
     data_.emplace_back(mj_makeData(m));

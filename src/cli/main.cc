@@ -81,11 +81,6 @@ SimulationOptions ParseSimulationOptions(const RunArgs& a) {
   return options;
 }
 
-std::string GeomName(const mjModel* m, int g) {
-  const char* name = mj_id2name(m, mjOBJ_GEOM, g);
-  return name ? std::string(name) : fmt::format("geom{}", g);
-}
-
 // Empty for a value that does not exist (an episode still open).
 std::string Number(double v) { return fmt::format("{}", v); }
 
@@ -99,7 +94,8 @@ void WriteImpacts(const Simulation& sim, CsvFile* file) {
     const GeomPair& pair = cm.pairs()[impact.pair];
     const bool closed = !impact.open;
     file->Fields({std::string(LawName(tag.law)), Number(pair.params.restitution), tag.label,
-                  GeomName(sim.model(), pair.named[0]), GeomName(sim.model(), pair.named[1]),
+                  ObjectName(sim.model(), mjOBJ_GEOM, pair.named[0]),
+                  ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]),
                   Number(impact.index), Number(impact.time_contact),
                   closed ? Number(impact.time_separation) : "",
                   Number(impact.impact_velocity),

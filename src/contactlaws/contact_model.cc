@@ -12,6 +12,7 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/hertz.h"
+#include "contactlaws/model_io.h"
 #include "contactlaws/tags.h"
 
 namespace contactlaws {
@@ -36,11 +37,6 @@ bool StartsWith(std::string_view s, std::string_view prefix) {
 uint64_t PairKey(int g1, int g2) {
   if (g1 > g2) std::swap(g1, g2);
   return (static_cast<uint64_t>(g1) << 32) | static_cast<uint32_t>(g2);
-}
-
-std::string GeomName(const mjModel* m, int g) {
-  const char* name = mj_id2name(m, mjOBJ_GEOM, g);
-  return name ? std::string(name) : fmt::format("geom{}", g);
 }
 
 // Most contact points MuJoCo's narrowphase returns for two geom types.
@@ -247,7 +243,7 @@ void ContactModel::ReadTags(const Overrides& overrides) {
         const int b1 = m->geom_bodyid[g1];
         const int b2 = m->geom_bodyid[g2];
         const std::string pair_name =
-            fmt::format("({}, {})", GeomName(m, g1), GeomName(m, g2));
+            fmt::format("({}, {})", ObjectName(m, mjOBJ_GEOM, g1), ObjectName(m, mjOBJ_GEOM, g2));
         // pairs a law cannot act on: an error when named, skipped in a group
         const char* problem = nullptr;
         if (!mjCOLLISIONFUNC[std::min(m->geom_type[g1], m->geom_type[g2])]

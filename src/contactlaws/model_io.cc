@@ -51,6 +51,12 @@ UniqueModel LoadModelString(std::string_view xml, const std::string& name) {
   return m;
 }
 
+std::string ObjectName(const mjModel* m, mjtObj type, int id) {
+  const char* name = mj_id2name(m, type, id);
+  if (name && name[0]) return name;
+  return fmt::format("{}{}", type == mjOBJ_BODY ? "body" : "geom", id);
+}
+
 int MujocoVersion() { return mj_version(); }
 
 }  // namespace contactlaws

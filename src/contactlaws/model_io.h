@@ -30,6 +30,10 @@ UniqueModel LoadModelFile(const std::string& path);
 // file in messages. Throws Error.
 UniqueModel LoadModelString(std::string_view xml, const std::string& name = "inline.xml");
 
+// The name of a MuJoCo object, or "<kind><id>" (geom3, body2) when unnamed:
+// how every message and CSV column names geoms and bodies.
+std::string ObjectName(const mjModel* m, mjtObj type, int id);
+
 // The mjVERSION_HEADER of the MuJoCo library this process runs (222 = 2.2.2).
 int MujocoVersion();
 

@@ -10,15 +10,6 @@
 
 namespace contactlaws {
 
-namespace {
-
-std::string BodyName(const mjModel* m, int b) {
-  const char* name = mj_id2name(m, mjOBJ_BODY, b);
-  return name ? std::string(name) : fmt::format("body{}", b);
-}
-
-}  // namespace
-
 Simulation::Simulation(UniqueModel model, std::string source,
                        const SimulationOptions& options)
     : model_(std::move(model)), source_(std::move(source)) {
@@ -52,7 +43,7 @@ std::vector<std::string> Simulation::Columns() const {
   std::vector<std::string> columns = {"time"};
   for (int b : recorded_bodies_) {
     for (const char* q : {"x", "y", "z", "vx", "vy", "vz"}) {
-      columns.push_back(fmt::format("{}.{}", BodyName(model_.get(), b), q));
+      columns.push_back(fmt::format("{}.{}", ObjectName(model_.get(), mjOBJ_BODY, b), q));
     }
   }
   for (const PairTag& tag : contact_model_->tags()) {
