@@ -44,8 +44,14 @@ void CsvFile::Fields(const std::vector<std::string>& fields) {
   std::fwrite(line_.data(), 1, line_.size(), file_);
 }
 
-void CsvFile::Row(const std::vector<double>& values) {
+void CsvFile::Row(const std::vector<double>& values) { Row({}, values); }
+
+void CsvFile::Row(const std::vector<std::string>& prefix, const std::vector<double>& values) {
   line_.clear();
+  for (const std::string& field : prefix) {
+    line_ += field;
+    line_ += ',';
+  }
   for (size_t i = 0; i < values.size(); ++i) {
     if (!std::isfinite(values[i])) {
       throw Error(fmt::format("{}: refusing to write a non-finite value", path_));

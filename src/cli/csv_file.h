@@ -24,6 +24,8 @@ class CsvFile {
   void Header(const std::vector<std::string>& columns);
   // Numbers in their shortest exact form; NaN/inf are refused (Error).
   void Row(const std::vector<double>& values);
+  // Preformatted leading fields, then numbers as Row.
+  void Row(const std::vector<std::string>& prefix, const std::vector<double>& values);
   // A row of preformatted fields.
   void Fields(const std::vector<std::string>& fields);
   void Commit();

@@ -8,8 +8,12 @@
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/error.h"
+#include "contactlaws/estimate.h"
+#include "contactlaws/hertz.h"
+#include "contactlaws/hysteresis.h"
 #include "contactlaws/law.h"
 #include "contactlaws/model_io.h"
 #include "contactlaws/simulation.h"
+#include "contactlaws/summary.h"
 
 #endif  // CONTACTLAWS_CONTACTLAWS_H_

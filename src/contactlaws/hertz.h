@@ -48,6 +48,26 @@ inline double HertzSphereStiffness(double r1, double r2, double s1, double s2) {
   return 4.0 / (3.0 * (s1 + s2)) * std::sqrt(effective_radius);
 }
 
+// Greatest depth of an elastic impact at closing speed v of an effective mass
+// m (gravity neglected): K d^(n+1)/(n+1) = m v^2/2, so
+//   d_max = ((n+1) m v^2 / (2K))^(1/(n+1))   (n = 3/2: (5 m v^2 / (4K))^(2/5)).
+inline double HertzMaxDepth(double stiffness, double exponent, double mass, double speed) {
+  return std::pow((exponent + 1.0) * mass * speed * speed / (2.0 * stiffness),
+                  1.0 / (exponent + 1.0));
+}
+
+// Duration of that impact, first touch to separation (s):
+//   t_c = 2 (d_max / v) * I_n,  I_n = int_0^1 dx / sqrt(1 - x^(n+1))
+//       = B(1/(n+1), 1/2) / (n+1)
+// (n = 3/2: t_c = 2.9432 d_max / v). Infinite mass (a body against a fixed or
+// driven one only through the other) gives an infinite duration.
+inline double HertzContactDuration(double stiffness, double exponent, double mass,
+                                   double speed) {
+  const double p = 1.0 / (exponent + 1.0);
+  const double beta = std::tgamma(p) * std::tgamma(0.5) / std::tgamma(p + 0.5);
+  return 2.0 * HertzMaxDepth(stiffness, exponent, mass, speed) / speed * beta * p;
+}
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_HERTZ_H_

@@ -1,0 +1,50 @@
+// Copyright contactlaws authors.
+//
+// The commands of the contactlaws program. Each returns the exit status and
+// throws Error for refused input (the caller prints it and exits 2).
+
+#ifndef CONTACTLAWS_CLI_COMMANDS_H_
+#define CONTACTLAWS_CLI_COMMANDS_H_
+
+#include <optional>
+#include <string>
+
+#include "cli/options.h"
+
+namespace contactlaws::cli {
+
+inline constexpr int kExitRefused = 2;     // bad input: nothing was run
+inline constexpr int kExitIncomplete = 3;  // a run did not give what was asked
+
+struct RunArgs : CommonArgs {
+  std::optional<std::string> law;
+  std::optional<double> restitution;
+  std::optional<std::string> output;
+  std::optional<std::string> impacts;
+};
+
+struct SweepArgs : CommonArgs {
+  std::string laws = "all";
+  std::optional<std::string> restitution;  // list or range
+  std::string output_dir = "results";      // compare
+  std::string output = "-";                // restitution
+  bool quiet = false;
+};
+
+struct CheckArgs {
+  std::string scene;
+  std::optional<std::string> law;
+  std::optional<double> restitution;
+  std::optional<double> timestep;
+  std::optional<double> impact_velocity;
+};
+
+int RunCommand(const RunArgs& args);
+int CompareCommand(const SweepArgs& args);
+int RestitutionCommand(const SweepArgs& args);
+int CheckCommand(const CheckArgs& args);
+int LawsCommand();
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_COMMANDS_H_

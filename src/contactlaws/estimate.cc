@@ -1,0 +1,92 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/estimate.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "contactlaws/hertz.h"
+
+namespace contactlaws {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A body the contact force cannot move: the world, a static body, a driven one.
+bool Immovable(const ContactModel& cm, int body) {
+  return cm.model()->body_weldid[body] == 0 || cm.FindDrive(body) != nullptr;
+}
+
+}  // namespace
+
+ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
+                                std::optional<double> impact_velocity) {
+  const ContactModel& cm = contacts.model();
+  const mjModel* m = cm.model();
+  const mjData* d = contacts.data();
+  const GeomPair& pair = cm.pairs()[pair_index];
+  ContactEstimate e;
+
+  double inverse_mass = 0;
+  for (int body : pair.body) {
+    if (!Immovable(cm, body)) inverse_mass += 1.0 / m->body_subtreemass[m->body_rootid[body]];
+  }
+  e.effective_mass = inverse_mass > 0 ? 1.0 / inverse_mass : kInfinity;
+
+  // the nearest points, by MuJoCo's narrowphase with a margin that reaches
+  // them: the centre distance plus both bounding radii
+  const int g0 = pair.geom[0];
+  const int g1 = pair.geom[1];
+  mjtNum centres[3];
+  mju_sub3(centres, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g0);
+  const double reach = mju_norm3(centres) + m->geom_rbound[g0] + m->geom_rbound[g1] + 1.0;
+  std::vector<mjContact> found(mjMAXCONPAIR);
+  mjfCollision collide = mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]];
+  const int count = collide(m, d, found.data(), g0, g1, reach);
+  const mjContact* nearest = nullptr;
+  for (int i = 0; i < count; ++i) {
+    if (!nearest || found[i].dist < nearest->dist) nearest = &found[i];
+  }
+
+  double speed = 0;
+  if (nearest) {
+    e.gap = nearest->dist;
+    const mjtNum* normal = nearest->frame;  // from geom[0] towards geom[1]
+    mjtNum v0[3], v1[3], relative[3];
+    contacts.PointVelocity(pair.body[0], nearest->pos, v0);
+    contacts.PointVelocity(pair.body[1], nearest->pos, v1);
+    mju_sub3(relative, v0, v1);
+    const double closing = mju_dot3(relative, normal);
+    // gravity closes the gap at the difference of the two bodies' accelerations
+    double accel = 0;
+    if (!Immovable(cm, pair.body[0])) accel += mju_dot3(m->opt.gravity, normal);
+    if (!Immovable(cm, pair.body[1])) accel -= mju_dot3(m->opt.gravity, normal);
+    const double gap = std::max(0.0, *e.gap);
+    double squared = 0;
+    if (closing > 0 || accel > 0) squared = closing * closing + 2 * accel * gap;
+    speed = squared > 0 ? std::sqrt(squared) : 0.0;
+  }
+  for (int body : pair.body) {
+    if (const Drive* drive = cm.FindDrive(body)) {
+      speed += std::abs(drive->amplitude * drive->omega);
+    }
+  }
+  e.impact_velocity = impact_velocity ? *impact_velocity : speed;
+
+  const LawParams& law = pair.params;
+  const double v = e.impact_velocity;
+  if (std::isinf(e.effective_mass) || !(v > 0 || law.kind == LawKind::kKelvinVoigt)) {
+    e.max_depth = e.contact_duration = kInfinity;
+  } else if (law.kind == LawKind::kKelvinVoigt) {
+    const double omega = std::sqrt(law.linear_stiffness / e.effective_mass);
+    e.max_depth = v / omega;
+    e.contact_duration = M_PI / omega;
+  } else {
+    e.max_depth = HertzMaxDepth(law.stiffness, law.exponent, e.effective_mass, v);
+    e.contact_duration = HertzContactDuration(law.stiffness, law.exponent, e.effective_mass, v);
+  }
+  return e;
+}
+
+}  // namespace contactlaws

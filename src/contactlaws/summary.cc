@@ -1,0 +1,49 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/summary.h"
+
+#include <algorithm>
+#include <map>
+
+namespace contactlaws {
+
+RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
+  RunSummary s;
+  s.impacts = static_cast<int>(impacts.size());
+  if (impacts.empty()) return s;
+
+  const Impact& first = impacts.front();
+  s.impact_velocity = first.impact_velocity;
+  if (!first.open) {
+    s.restitution_post = first.restitution_post();
+    s.contact_duration = first.time_separation - first.time_contact;
+  }
+
+  struct PairRest {
+    double longest_closed = 0;
+    const Impact* last = nullptr;
+  };
+  std::map<int, PairRest> pairs;
+  for (const Impact& impact : impacts) {
+    s.max_depth = std::max(s.max_depth, impact.max_depth);
+    s.max_force = std::max(s.max_force, impact.max_force);
+    PairRest& pair = pairs[impact.pair];
+    if (!impact.open) {
+      pair.longest_closed =
+          std::max(pair.longest_closed, impact.time_separation - impact.time_contact);
+    }
+    if (!pair.last || impact.time_contact >= pair.last->time_contact) pair.last = &impact;
+  }
+
+  double rest = 0;
+  for (const auto& [index, pair] : pairs) {
+    const Impact& last = *pair.last;
+    if (!last.open) return s;
+    if (!(end_time - last.time_contact > pair.longest_closed)) return s;
+    rest = std::max(rest, last.time_contact);
+  }
+  s.time_to_rest = rest;
+  return s;
+}
+
+}  // namespace contactlaws
