@@ -1,25 +1,51 @@
 #!/usr/bin/env bash
-# The main job: builds contactlaws, then simulates the bouncing ball of
-# mjcf/bouncing_ball.xml with each of the five laws (restitution 0.8, 2 s),
-# writing results/ball_<law>.csv (trajectory) and results/impacts_<law>.csv
-# (impact log), and printing each run's summary table.
-# Issue 3 replaces this loop with `contactlaws compare` and the figures.
+# The main job: installs what is missing, builds contactlaws, then regenerates
+# the paper's comparison under results/ (git-ignored):
+#   results/fig5/      bouncing ball, Flores, e = 0.9, 10 s          (Figs. 5 and 11)
+#   results/fig6/      first contact, Flores, e = 1.0 ... 0.2        (Fig. 6)
+#   results/fig7.csv   first-impact e_post, five laws, e = 0.05 ... 1 (Fig. 7)
+#   results/fig8/      ball on the driven table, Hertz               (Fig. 8)
+#   results/fig9/      table, HC, LN, Flores at e = 0.9, 0.6, 0.3     (Fig. 9)
+#   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10)
+#   results/*.png      the figures (scripts/figures.py)
+# Each directory holds trajectories.csv, impacts.csv and summary.csv.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
 
+bash scripts/install-deps.sh
 bash scripts/build.sh
 
-laws=(hertz kelvin-voigt hunt-crossley lankarani-nikravesh flores)
+cl=build/contactlaws
+ball=mjcf/bouncing_ball.xml
+table=mjcf/ball_table.xml
+out=results
+mkdir -p "$out"
 
-mkdir -p results
-for law in "${laws[@]}"; do
-  echo
-  echo "== ${law} =="
-  build/contactlaws run mjcf/bouncing_ball.xml --law "$law" --restitution 0.8 \
-    --duration 2 --output "results/ball_${law}.csv" \
-    --impacts "results/impacts_${law}.csv"
-done
+echo "== Fig. 5: the bouncing ball, Flores, e = 0.9 =="
+"$cl" compare "$ball" --laws flores --restitution 0.9 --duration 10 --sample-rate 1000 \
+  --output-dir "$out/fig5"
 echo
-echo "Results in ${repo}/results/"
+echo "== Fig. 6: the first contact, Flores, e = 1.0, 0.8, 0.6, 0.4, 0.2 (every step) =="
+"$cl" compare "$ball" --laws flores --restitution 1.0,0.8,0.6,0.4,0.2 --duration 0.44 \
+  --sample-rate 100000 --output-dir "$out/fig6"
+echo
+echo "== Fig. 7: post- against pre-impact restitution, the five laws =="
+"$cl" restitution "$ball" --laws all --restitution 0.05:1.0:0.05 --output "$out/fig7.csv"
+echo
+echo "== Fig. 8: the ball on the driven table, Hertz =="
+"$cl" compare "$table" --laws hertz --duration 10 --output-dir "$out/fig8"
+echo
+echo "== Fig. 9: the table, Hunt-Crossley, Lankarani-Nikravesh, Flores, e = 0.9, 0.6, 0.3 =="
+"$cl" compare "$table" --laws hunt-crossley,lankarani-nikravesh,flores \
+  --restitution 0.9,0.6,0.3 --duration 10 --output-dir "$out/fig9"
+echo
+echo "== Fig. 10: the table, the five laws, e = 0.6 =="
+"$cl" compare "$table" --laws all --restitution 0.6 --duration 10 --output-dir "$out/table-e0.6"
+echo
+echo "== Figures =="
+# Debian's python3 has python3-matplotlib; a python3 earlier on PATH may not
+/usr/bin/python3 scripts/figures.py "$out"
+echo
+echo "Results in ${repo}/${out}/"

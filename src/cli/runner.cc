@@ -8,6 +8,9 @@ namespace contactlaws::cli {
 
 Scene::Scene(std::string path) : path_(std::move(path)), model_(LoadModelFile(path_)) {}
 
+Scene::Scene(std::string name, UniqueModel model)
+    : path_(std::move(name)), model_(std::move(model)) {}
+
 std::unique_ptr<Simulation> Scene::Make(const SimulationOptions& options) const {
   UniqueModel copy(mj_copyModel(nullptr, model_.get()));
   if (!copy) throw Error(fmt::format("{}: MuJoCo could not copy the model", path_));

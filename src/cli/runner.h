@@ -20,6 +20,8 @@ namespace contactlaws::cli {
 class Scene {
  public:
   explicit Scene(std::string path);  // throws Error "PATH: ..."
+  // A model already loaded; name stands for its file in messages.
+  Scene(std::string name, UniqueModel model);
 
   const std::string& path() const { return path_; }
   const mjModel* model() const { return model_.get(); }

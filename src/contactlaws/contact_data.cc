@@ -140,6 +140,8 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
   captured_.reserve(points);
   slot_impact_.assign(model.slot_count(), -1);
   tag_count_.assign(model.tags().size(), 0);
+  previous_qvel_.assign(m_->nv, 0.0);
+  current_qvel_.assign(m_->nv, 0.0);
   Register(d, this);
 }
 
@@ -155,6 +157,14 @@ void ContactData::BeforeStep() {
   for (const Drive& drive : model_.drives()) {
     drive.Position(d_->time, d_->mocap_pos + 3 * drive.mocap);
   }
+  // the velocities at this step's start and the one before (no allocation:
+  // the buffers have nv entries from the constructor on)
+  std::swap(previous_qvel_, current_qvel_);
+  previous_time_ = current_time_;
+  has_previous_ = has_current_;
+  std::copy(d_->qvel, d_->qvel + m_->nv, current_qvel_.begin());
+  current_time_ = d_->time;
+  has_current_ = true;
   capture_armed_ = true;
   has_capture_ = false;
 }
@@ -169,6 +179,7 @@ void ContactData::Reset() {
   impacts_.clear();
   tracks_.clear();
   commits_ = 0;
+  has_previous_ = has_current_ = false;
   has_committed_ = false;
   committed_time_ = committed_power_ = dissipated_ = 0;
 }
@@ -208,6 +219,33 @@ double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
   const double inverse_mass = jn.dot(x);
   d_->pstack = mark;
   return inverse_mass > 0 ? 1.0 / inverse_mass : std::numeric_limits<double>::infinity();
+}
+
+double ContactData::ApproachRate(const GeomPair& pair, const mjtNum point[3],
+                                 const mjtNum normal[3], const mjtNum* qvel, double time) {
+  // (v0 - v1) . n at point: the dofs through (J0 - J1)^T n at the current
+  // configuration, driven bodies through their prescribed velocity at time
+  const int nv = m_->nv;
+  const int mark = d_->pstack;
+  mjtNum* jac0 = mj_stackAlloc(d_, 3 * nv);
+  mjtNum* jac1 = mj_stackAlloc(d_, 3 * nv);
+  mj_jac(m_, d_, jac0, nullptr, point, pair.body[0]);
+  mj_jac(m_, d_, jac1, nullptr, point, pair.body[1]);
+  mjtNum v[3] = {0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < nv; ++i) v[k] += (jac0[k * nv + i] - jac1[k * nv + i]) * qvel[i];
+  }
+  d_->pstack = mark;
+  mjtNum drive_velocity[3];
+  if (const Drive* drive = model_.FindDrive(pair.body[0])) {
+    drive->Velocity(time, drive_velocity);
+    mju_addTo3(v, drive_velocity);
+  }
+  if (const Drive* drive = model_.FindDrive(pair.body[1])) {
+    drive->Velocity(time, drive_velocity);
+    mju_subFrom3(v, drive_velocity);
+  }
+  return mju_dot3(v, normal);
 }
 
 void ContactData::ApplyDrives() {
@@ -261,13 +299,22 @@ void ContactData::ApplyForces() {
       e.depth = depth;
       e.depth_rate = mju_dot3(relative, normal);
       const int open = slot_impact_[e.slot];
-      e.impact_velocity = std::max(open >= 0 ? impacts_[open].impact_velocity : e.depth_rate,
-                                   pair.params.min_impact_velocity);
-
-      ContactState state{e.depth, e.depth_rate, e.impact_velocity, 0.0};
+      ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
+      const bool new_point = open < 0;
       if (pair.params.kind == LawKind::kKelvinVoigt && !pair.params.damping) {
         state.effective_mass = EffectiveMass(pair, con.pos, normal);
       }
+      if (new_point) {
+        e.touch_velocity = has_previous_
+                               ? ApproachRate(pair, con.pos, normal, previous_qvel_.data(),
+                                              previous_time_)
+                               : e.depth_rate;
+        state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);
+      } else {
+        state.impact_velocity =
+            std::max(impacts_[open].impact_velocity, pair.params.min_impact_velocity);
+      }
+      e.impact_velocity = state.impact_velocity;
       const ContactForce f = EvaluateLaw(pair.params, state);
       e.force = f.total;
       e.elastic_energy = contactlaws::ElasticEnergy(pair.params, depth);
@@ -280,6 +327,8 @@ void ContactData::ApplyForces() {
         mju_scl3(push, normal, b == 1 ? f.total : -f.total);
         mj_applyFT(m_, d_, push, zero, con.pos, pair.body[b], d_->qfrc_passive);
       }
+      mju_copy3(e.pos, con.pos);
+      mju_copy3(e.normal, normal);
       latest_.push_back(e);
     }
   }
@@ -320,8 +369,10 @@ void ContactData::AfterStep() {
       impact.pair = e.pair;
       impact.tag = model_.pairs()[e.pair].tag;
       impact.index = ++tag_count_[impact.tag];
-      impact.impact_velocity = e.depth_rate;
-      impact.time_contact = e.depth_rate > 0 ? t - e.depth / e.depth_rate : t;
+      impact.impact_velocity = e.touch_velocity;
+      // the depth was reached at the mean of the touch and current rates
+      const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
+      impact.time_contact = mean_rate > 0 ? t - e.depth / mean_rate : t;
       index = static_cast<int>(impacts_.size());
       impacts_.push_back(impact);
       tracks_.push_back(Track{e.slot});
@@ -335,6 +386,8 @@ void ContactData::AfterStep() {
     track.last_time = t;
     track.last_depth = e.depth;
     track.last_rate = e.depth_rate;
+    mju_copy3(track.last_pos, e.pos);
+    mju_copy3(track.last_normal, e.normal);
   }
 
   // close the episodes whose point is out of contact
@@ -347,10 +400,16 @@ void ContactData::AfterStep() {
     }
     Impact& impact = impacts_[index];
     impact.open = false;
-    impact.separation_velocity = -track.last_rate;
-    impact.time_separation = track.last_rate < 0
-                                 ? track.last_time + track.last_depth / -track.last_rate
-                                 : track.last_time;
+    // the separation speed is the one the bodies leave with: their rate at
+    // this first state out of contact (the step's start), at the point and
+    // normal last in contact
+    impact.separation_velocity =
+        has_current_ ? -ApproachRate(model_.pairs()[impact.pair], track.last_pos,
+                                     track.last_normal, current_qvel_.data(), current_time_)
+                     : -track.last_rate;
+    const double mean_speed = 0.5 * (-track.last_rate + impact.separation_velocity);
+    impact.time_separation =
+        mean_speed > 0 ? track.last_time + track.last_depth / mean_speed : track.last_time;
     slot_impact_[track.slot] = -1;
     open_[k] = open_.back();
     open_.pop_back();

@@ -42,10 +42,13 @@ struct Impact {
   int pair = -1;            // ContactModel::pairs() index
   int index = 0;            // 1 for the tag's first episode, 2 for its second ...
   double time_contact = 0;  // s, extrapolated to d = 0
-  double impact_velocity = 0;     // d' at first touch, m/s (> 0)
+  // d' of the last state before first touch, m/s (> 0): the approach no
+  // contact force has slowed yet (a fixed step finds a contact a fraction of
+  // a step late, when a force that jumps at d = 0+ has acted for part of it)
+  double impact_velocity = 0;
   bool open = true;               // still in contact
   double time_separation = 0;     // s, extrapolated to d = 0 (closed only)
-  double separation_velocity = 0; // -d' at the last state in contact, m/s
+  double separation_velocity = 0; // -d' of the first state after it, m/s (closed only)
   double max_depth = 0;           // m
   double max_force = 0;           // N
   // separation / impact depth rate (closed only)
@@ -109,15 +112,22 @@ class ContactData {
     int slot = -1;     // absolute slot index (pair.first_slot + point)
     double depth = 0;
     double depth_rate = 0;
-    double impact_velocity = 0;
+    double impact_velocity = 0;  // the law's v0 (floored)
+    double touch_velocity = 0;   // new points: d' at the step before first touch
     double force = 0;
     double elastic_energy = 0;
     double dissipated_power = 0;
+    mjtNum pos[3] = {0, 0, 0};     // contact point, world frame
+    mjtNum normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
   };
 
   // 1 / (n^T J M^-1 J^T n) at a point, for the two bodies of pair.
   double EffectiveMass(const GeomPair& pair, const mjtNum point[3],
                        const mjtNum normal[3]);
+  // d' at point along normal for the velocities qvel (at time, for driven
+  // bodies), with the current configuration's Jacobians.
+  double ApproachRate(const GeomPair& pair, const mjtNum point[3], const mjtNum normal[3],
+                      const mjtNum* qvel, double time);
   void ApplyDrives();
   double Power(const std::vector<Evaluation>& evaluations) const;
 
@@ -132,6 +142,8 @@ class ContactData {
     double last_time = 0;
     double last_depth = 0;
     double last_rate = 0;
+    mjtNum last_pos[3] = {0, 0, 0};
+    mjtNum last_normal[3] = {0, 0, 0};
   };
 
   std::vector<mjContact> contacts_;   // narrowphase output, mjMAXCONPAIR
@@ -148,6 +160,16 @@ class ContactData {
   std::vector<Impact> impacts_;
   std::vector<Track> tracks_;     // parallel to impacts_
   int64_t commits_ = 0;
+
+  // qvel at the start of this step and of the one before (BeforeStep): the
+  // rates just before a contact begins and just after it ends, which no
+  // contact force has touched
+  std::vector<mjtNum> current_qvel_;
+  std::vector<mjtNum> previous_qvel_;
+  double current_time_ = 0;
+  double previous_time_ = 0;
+  bool has_current_ = false;
+  bool has_previous_ = false;
 
   // energy ledger
   bool has_committed_ = false;

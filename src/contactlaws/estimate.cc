@@ -53,10 +53,16 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   if (nearest) {
     e.gap = nearest->dist;
     const mjtNum* normal = nearest->frame;  // from geom[0] towards geom[1]
-    mjtNum v0[3], v1[3], relative[3];
-    contacts.PointVelocity(pair.body[0], nearest->pos, v0);
-    contacts.PointVelocity(pair.body[1], nearest->pos, v1);
-    mju_sub3(relative, v0, v1);
+    // driven bodies count with their top speed below, not their current one
+    mjtNum v[2][3], relative[3];
+    for (int b = 0; b < 2; ++b) {
+      if (cm.FindDrive(pair.body[b])) {
+        mju_zero3(v[b]);
+      } else {
+        contacts.PointVelocity(pair.body[b], nearest->pos, v[b]);
+      }
+    }
+    mju_sub3(relative, v[0], v[1]);
     const double closing = mju_dot3(relative, normal);
     // gravity closes the gap at the difference of the two bodies' accelerations
     double accel = 0;
