@@ -340,7 +340,7 @@ def fig7_restitution(results):
     key_handles = [
         Line2D([], [], color="0.3", marker="o", mfc="none", ls="none",
                label="markers: simulated\n"
-                     "(MuJoCo, gravity on, dt = 1e-5 s)"),
+                     "(MuJoCo RK4, gravity on, dt = 1e-5 s)"),
         Line2D([], [], color="0.3", lw=1,
                label="lines: closed form\n(gravity neglected)"),
         Line2D([], [], color="k", ls="--", lw=1, label="$e_{post} = e$"),

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -60,6 +61,24 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
       {"run /nonexistent.xml", "contactlaws: /nonexistent.xml: "},
       {"run " + kBall + " --duration 0.01 --output /nonexistent/dir/out.csv",
        "contactlaws: /nonexistent/dir/out.csv: cannot write"},
+      {"compare " + kBall + " --laws flores,hooke",
+       "contactlaws: --laws=flores,hooke has 'hooke', which is not a law"},
+      {"compare " + kBall + " --laws flores --restitution 0,0.5",
+       "contactlaws: " + kBall +
+           ": contactlaw:ball-floor: restitution=0 must be in (0, 1] for flores"},
+      {"compare " + kBall + " --duration 0.01 --output-dir /etc/passwd/out",
+       "contactlaws: /etc/passwd/out: cannot create the output directory"},
+      {"compare " + kBall + " --sample-rate 0", "contactlaws: --sample-rate=0 must be a number > 0"},
+      {"restitution " + kBall + " --restitution 0:1:0",
+       "contactlaws: --restitution=0:1:0 must have a step > 0 (start:stop:step)"},
+      {"restitution " + kBall + " --restitution 0.5,1.5",
+       "contactlaws: --restitution=0.5,1.5 has 1.5, outside [0, 1]"},
+      {"restitution " + kBall + " --output /nonexistent/dir/e.csv",
+       "contactlaws: /nonexistent/dir/e.csv: cannot write"},
+      {"check " + kBall + " --impact-velocity -1",
+       "contactlaws: --impact-velocity=-1 must be a number > 0 (m/s)"},
+      {"check " + kBall + " --law hooke", "contactlaws: --law=hooke is not a law"},
+      {"check /nonexistent.xml", "contactlaws: /nonexistent.xml: "},
   };
   for (const auto& c : cases) {
     const Result r = RunCli(c.arguments);
@@ -106,6 +125,119 @@ TEST(CliTest, LawsListsEveryLaw) {
         "restitution e in (0, 1]", "default 0.001 m/s"}) {
     EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
   }
+}
+
+// A ball 1 cm above a floor, falling under gravity: first touch at 0.045 s,
+// 0.44 m/s; written to the test's temporary directory.
+std::string TinyScene() {
+  const std::string path = ::testing::TempDir() + "/cli_tiny.xml";
+  std::ofstream(path) << R"(<mujoco>
+  <option timestep="1e-5" gravity="0 0 -9.81" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="ball" pos="0 0 0.11">
+      <freejoint/>
+      <inertial pos="0 0 0" mass="1" diaginertia="0.004 0.004 0.004"/>
+      <geom name="ball" type="sphere" size="0.1"/>
+    </body>
+  </worldbody>
+  <custom><text name="contactlaw:ball-floor"
+    data="geom1=ball geom2=floor law=flores restitution=0.9 stiffness=1.4e8 linear_stiffness=5e6"/>
+  </custom>
+</mujoco>)";
+  return path;
+}
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
+  const std::string dir = ::testing::TempDir() + "/cli_compare";
+  const Result r = RunCli("compare " + TinyScene() +
+                          " --laws hertz,flores --restitution 0.5,0.9 --duration 0.1 "
+                          "--sample-rate 100 --quiet --output-dir " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+
+  // Hertz once (restitution 1), Flores at each e: 3 runs of 11 rows (0 to 0.1 s)
+  const std::vector<std::string> trajectories = Lines(ReadFile(dir + "/trajectories.csv"));
+  ASSERT_EQ(trajectories.size(), 1u + 3 * 11);
+  EXPECT_EQ(trajectories[0],
+            "law,restitution,time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,"
+            "ball-floor.depth,ball-floor.depth_rate,ball-floor.force,energy.kinetic,"
+            "energy.potential,energy.elastic,energy.dissipated,energy.total");
+  EXPECT_EQ(trajectories[1].rfind("hertz,1,0,", 0), 0u) << trajectories[1];
+  EXPECT_EQ(trajectories[12].rfind("flores,0.5,0,", 0), 0u) << trajectories[12];
+  EXPECT_EQ(trajectories[33].rfind("flores,0.9,0.1,", 0), 0u) << trajectories[33];
+
+  const std::vector<std::string> impacts = Lines(ReadFile(dir + "/impacts.csv"));
+  ASSERT_GE(impacts.size(), 4u);
+  EXPECT_EQ(impacts[0],
+            "law,restitution,pair,geom1,geom2,index,time_contact,time_separation,"
+            "impact_velocity,separation_velocity,restitution_post,max_depth,max_force");
+  EXPECT_EQ(impacts[1].rfind("hertz,1,ball-floor,ball,floor,1,0.04", 0), 0u) << impacts[1];
+
+  const std::vector<std::string> summary = Lines(ReadFile(dir + "/summary.csv"));
+  ASSERT_EQ(summary.size(), 4u);
+  EXPECT_EQ(summary[0],
+            "law,restitution,impacts,restitution_post,max_depth,max_force,contact_duration,"
+            "time_to_rest,dissipated_energy");
+  EXPECT_EQ(summary[1].rfind("hertz,1,", 0), 0u);
+  EXPECT_EQ(summary[2].rfind("flores,0.5,", 0), 0u);
+  EXPECT_EQ(summary[3].rfind("flores,0.9,", 0), 0u);
+  // the aligned table on stdout, and no progress when stderr is not a terminal
+  EXPECT_NE(r.output.find("first e_post"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("[1/3]"), std::string::npos) << r.output;
+}
+
+TEST(CliTest, RestitutionSweepIsFiftyRows) {
+  const std::string out = ::testing::TempDir() + "/cli_sweep.csv";
+  const Result r = RunCli("restitution " + TinyScene() +
+                          " --laws all --restitution 0.1:1.0:0.1 --output " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> rows = Lines(ReadFile(out));
+  ASSERT_EQ(rows.size(), 51u);
+  EXPECT_EQ(rows[0], "law,restitution,restitution_post,impact_velocity,max_depth,max_force,"
+                     "contact_duration");
+  EXPECT_EQ(rows[1].rfind("hertz,0.1,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[50].rfind("flores,1,", 0), 0u) << rows[50];
+  for (const std::string& row : rows) {
+    EXPECT_EQ(row.find(",,"), std::string::npos) << "every first contact ended: " << row;
+  }
+}
+
+TEST(CliTest, RestitutionSaysWhenTheFirstContactDoesNotEnd) {
+  const Result r = RunCli("restitution " + TinyScene() +
+                          " --laws flores --restitution 0.5 --duration 0.01 --output -");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("contactlaws: warning: flores e=0.5: no contact within "
+                          "--duration=0.01 s"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("\nflores,0.5,,,,,\n"), std::string::npos) << r.output;
+}
+
+TEST(CliTest, CheckPrintsTheEstimateAndTheTimestepItNeeds) {
+  Result r = RunCli("check " + TinyScene());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* expected :
+       {"contactlaw:ball-floor: ball - floor, 1 geom pair(s), law flores",
+        "stiffness K 1.4e+08 N/m^1.5", "effective mass 1 kg, gap 0.01 m",
+        "impact velocity 0.442945 m/s", "steps per contact at 1e-05 s: ok",
+        "rule: a contact is resolved by >= 20 steps"}) {
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  }
+  r = RunCli("check " + TinyScene() + " --timestep 1e-3 --impact-velocity 4.2");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("impact velocity 4.2 m/s (--impact-velocity)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("TOO COARSE (needs timestep <= 6.66e-05 s)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("warning: 1 tag(s) need a smaller timestep"), std::string::npos)
+      << r.output;
 }
 
 TEST(CliTest, TrajectoryToStandardOutput) {
