@@ -8,6 +8,7 @@
 #   results/fig9/      table, HC, LN, Flores at e = 0.9, 0.6, 0.3     (Fig. 9)
 #   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10)
 #   results/*.png      the figures (scripts/figures.py)
+#   results/reproduction.txt  the numbers docs/paper-reproduction.md quotes
 # Each directory holds trajectories.csv, impacts.csv and summary.csv.
 set -euo pipefail
 
@@ -47,5 +48,8 @@ echo
 echo "== Figures =="
 # Debian's python3 has python3-matplotlib; a python3 earlier on PATH may not
 /usr/bin/python3 scripts/figures.py "$out"
+echo
+echo "== The numbers of docs/paper-reproduction.md =="
+/usr/bin/python3 scripts/reproduction.py "$out" | tee "$out/reproduction.txt"
 echo
 echo "Results in ${repo}/${out}/"
