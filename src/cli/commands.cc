@@ -47,8 +47,11 @@ SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
 class Progress {
  public:
   Progress(int total, bool quiet) : total_(total), enabled_(!quiet && isatty(STDERR_FILENO)) {}
-  ~Progress() {
+  ~Progress() { Done(); }
+  // Ends the progress line, before anything else is printed.
+  void Done() {
     if (enabled_ && started_) fmt::print(stderr, "\n");
+    started_ = false;
   }
   void Start(int k, const std::string& what) {
     if (!enabled_) return;
@@ -193,6 +196,7 @@ int CompareCommand(const SweepArgs& args) {
                     Field(s.contact_duration), Field(s.time_to_rest), Field(dissipated)});
     rows.push_back({spec, e, s, dissipated});
   }
+  progress.Done();
   trajectories.Commit();
   impacts.Commit();
   summary.Commit();
@@ -260,6 +264,7 @@ int RestitutionCommand(const SweepArgs& args) {
                 first ? if_closed(first->time_separation - first->time_contact) : ""});
     rows.push_back({spec, first});
   }
+  progress.Done();
   out.Commit();
 
   if (args.output != "-") {
