@@ -72,31 +72,28 @@ void ValidateAll(const Scene& scene, const SimulationOptions& options,
   for (const RunSpec& spec : specs) scene.Make(OptionsFor(options, spec));
 }
 
+// A table cell: "-" for a value that does not exist.
+std::string Cell(const std::optional<double>& value, const char* format) {
+  return value ? fmt::format(fmt::runtime(format), *value) : "-";
+}
+
 void PrintRunSummary(const Simulation& sim, std::FILE* out) {
   const ContactModel& cm = sim.contact_model();
   fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14}\n", "pair", "law", "restitution",
              "impacts", "first e_post", "max force (N)");
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
     const PairTag& tag = cm.tags()[t];
-    int count = 0;
-    std::optional<double> first_post;
-    double max_force = 0;
+    std::vector<Impact> impacts;
     for (const Impact& impact : sim.contacts().impacts()) {
-      if (impact.tag != t) continue;
-      ++count;
-      if (count == 1 && !impact.open) first_post = impact.restitution_post();
-      max_force = std::max(max_force, impact.max_force);
+      if (impact.tag == t) impacts.push_back(impact);
     }
+    const RunSummary s = Summarize(impacts, sim.time());
     fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14.6g}\n", tag.label,
                LawName(tag.law), tag.law == LawKind::kHertz ? "-" : Field(tag.restitution),
-               count, first_post ? fmt::format("{:.6f}", *first_post) : "-", max_force);
+               s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);
   }
 }
 
-// A table cell: "-" for a value that does not exist.
-std::string Cell(const std::optional<double>& value, const char* format) {
-  return value ? fmt::format(fmt::runtime(format), *value) : "-";
-}
 
 }  // namespace
 

@@ -201,20 +201,28 @@ void ContactData::PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) 
   mju_add3(vel, cvel + 3, turn);
 }
 
-double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
-                                  const mjtNum normal[3]) {
+void ContactData::NormalJacobian(const GeomPair& pair, const mjtNum point[3],
+                                 const mjtNum normal[3], mjtNum* jn) {
   using RowJacobian = Eigen::Matrix<mjtNum, 3, Eigen::Dynamic, Eigen::RowMajor>;
   const int nv = m_->nv;
   const int mark = d_->pstack;
   Eigen::Map<RowJacobian> jac0(mj_stackAlloc(d_, 3 * nv), 3, nv);
   Eigen::Map<RowJacobian> jac1(mj_stackAlloc(d_, 3 * nv), 3, nv);
-  Eigen::Map<Eigen::VectorX<mjtNum>> jn(mj_stackAlloc(d_, nv), nv);
-  Eigen::Map<Eigen::VectorX<mjtNum>> x(mj_stackAlloc(d_, nv), nv);
-
-  // n^T (J1 - J0): the normal relative velocity per dof; then n^T J M^-1 J^T n
   mj_jac(m_, d_, jac0.data(), nullptr, point, pair.body[0]);
   mj_jac(m_, d_, jac1.data(), nullptr, point, pair.body[1]);
-  jn.noalias() = (jac1 - jac0).transpose() * Eigen::Map<const Eigen::Vector3<mjtNum>>(normal);
+  Eigen::Map<Eigen::VectorX<mjtNum>>(jn, nv).noalias() =
+      (jac1 - jac0).transpose() * Eigen::Map<const Eigen::Vector3<mjtNum>>(normal);
+  d_->pstack = mark;
+}
+
+double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
+                                  const mjtNum normal[3]) {
+  // 1 / (n^T J M^-1 J^T n), J the relative Jacobian at point
+  const int nv = m_->nv;
+  const int mark = d_->pstack;
+  Eigen::Map<Eigen::VectorX<mjtNum>> jn(mj_stackAlloc(d_, nv), nv);
+  Eigen::Map<Eigen::VectorX<mjtNum>> x(mj_stackAlloc(d_, nv), nv);
+  NormalJacobian(pair, point, normal, jn.data());
   mj_solveM(m_, d_, x.data(), jn.data(), 1);
   const double inverse_mass = jn.dot(x);
   d_->pstack = mark;
@@ -223,29 +231,24 @@ double ContactData::EffectiveMass(const GeomPair& pair, const mjtNum point[3],
 
 double ContactData::ApproachRate(const GeomPair& pair, const mjtNum point[3],
                                  const mjtNum normal[3], const mjtNum* qvel, double time) {
-  // (v0 - v1) . n at point: the dofs through (J0 - J1)^T n at the current
-  // configuration, driven bodies through their prescribed velocity at time
+  // (v0 - v1) . n = -(n^T (J1 - J0)) qvel for the dofs; driven bodies through
+  // their prescribed velocity at time
   const int nv = m_->nv;
   const int mark = d_->pstack;
-  mjtNum* jac0 = mj_stackAlloc(d_, 3 * nv);
-  mjtNum* jac1 = mj_stackAlloc(d_, 3 * nv);
-  mj_jac(m_, d_, jac0, nullptr, point, pair.body[0]);
-  mj_jac(m_, d_, jac1, nullptr, point, pair.body[1]);
-  mjtNum v[3] = {0, 0, 0};
-  for (int k = 0; k < 3; ++k) {
-    for (int i = 0; i < nv; ++i) v[k] += (jac0[k * nv + i] - jac1[k * nv + i]) * qvel[i];
-  }
+  mjtNum* jn = mj_stackAlloc(d_, nv);
+  NormalJacobian(pair, point, normal, jn);
+  double rate = -mju_dot(jn, qvel, nv);
   d_->pstack = mark;
   mjtNum drive_velocity[3];
   if (const Drive* drive = model_.FindDrive(pair.body[0])) {
     drive->Velocity(time, drive_velocity);
-    mju_addTo3(v, drive_velocity);
+    rate += mju_dot3(drive_velocity, normal);
   }
   if (const Drive* drive = model_.FindDrive(pair.body[1])) {
     drive->Velocity(time, drive_velocity);
-    mju_subFrom3(v, drive_velocity);
+    rate -= mju_dot3(drive_velocity, normal);
   }
-  return mju_dot3(v, normal);
+  return rate;
 }
 
 void ContactData::ApplyDrives() {

@@ -121,6 +121,10 @@ class ContactData {
     mjtNum normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
   };
 
+  // jn = (J1 - J0)^T n at point (nv entries): the normal relative velocity
+  // of pair's bodies per dof.
+  void NormalJacobian(const GeomPair& pair, const mjtNum point[3], const mjtNum normal[3],
+                      mjtNum* jn);
   // 1 / (n^T J M^-1 J^T n) at a point, for the two bodies of pair.
   double EffectiveMass(const GeomPair& pair, const mjtNum point[3],
                        const mjtNum normal[3]);
