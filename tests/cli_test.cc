@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "mujoco_test_util.h"
+
 namespace {
 
 struct Result {
@@ -127,24 +129,13 @@ TEST(CliTest, LawsListsEveryLaw) {
   }
 }
 
-// A ball 1 cm above a floor, falling under gravity: first touch at 0.045 s,
-// 0.44 m/s; written to the test's temporary directory.
+// A ball 1 cm above a floor, falling from rest under gravity (RK4, 1e-5 s):
+// first touch at 0.045 s, 0.44 m/s; written to the test's temporary directory.
 std::string TinyScene() {
   const std::string path = ::testing::TempDir() + "/cli_tiny.xml";
-  std::ofstream(path) << R"(<mujoco>
-  <option timestep="1e-5" gravity="0 0 -9.81" integrator="RK4"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="1 1 0.1"/>
-    <body name="ball" pos="0 0 0.11">
-      <freejoint/>
-      <inertial pos="0 0 0" mass="1" diaginertia="0.004 0.004 0.004"/>
-      <geom name="ball" type="sphere" size="0.1"/>
-    </body>
-  </worldbody>
-  <custom><text name="contactlaw:ball-floor"
-    data="geom1=ball geom2=floor law=flores restitution=0.9 stiffness=1.4e8 linear_stiffness=5e6"/>
-  </custom>
-</mujoco>)";
+  std::ofstream(path) << contactlaws::testing::DropXml(
+      "law=flores restitution=0.9 stiffness=1.4e8 linear_stiffness=5e6", 0.0, "RK4", 1e-5,
+      /*gravity=*/true, /*mass=*/1.0, /*height=*/0.11);
   return path;
 }
 

@@ -82,17 +82,18 @@ class MujocoTest : public ::testing::Test {
   std::vector<std::unique_ptr<Simulation>> simulations_;
 };
 
-// A ball (radius 0.1 m, mass `mass` kg) just above a floor plane, moving down
-// at `speed` m/s, gravity off unless asked: the 1-D impact of the closed forms.
+// A ball (radius 0.1 m, mass `mass` kg) with its centre at `height` m above a
+// floor plane (default: 0.1 mm from touching), moving down at `speed` m/s,
+// gravity off unless asked: the 1-D impact of the closed forms.
 inline std::string DropXml(std::string_view tag_data, double speed,
                            std::string_view integrator = "Euler", double timestep = 1e-5,
-                           bool gravity = false, double mass = 1.0) {
+                           bool gravity = false, double mass = 1.0, double height = 0.1001) {
   return fmt::format(R"(
 <mujoco>
   <option timestep="{timestep}" integrator="{integrator}" gravity="0 0 {g}"/>
   <worldbody>
     <geom name="floor" type="plane" size="1 1 0.1"/>
-    <body name="ball" pos="0 0 0.1001">
+    <body name="ball" pos="0 0 {height}">
       <freejoint/>
       <inertial pos="0 0 0" mass="{mass}" diaginertia="0.004 0.004 0.004"/>
       <geom name="ball" type="sphere" size="0.1"/>
@@ -103,7 +104,8 @@ inline std::string DropXml(std::string_view tag_data, double speed,
 </mujoco>)",
                      fmt::arg("timestep", timestep), fmt::arg("integrator", integrator),
                      fmt::arg("g", gravity ? -9.81 : 0.0), fmt::arg("mass", mass),
-                     fmt::arg("speed", speed), fmt::arg("tag", tag_data));
+                     fmt::arg("speed", speed), fmt::arg("tag", tag_data),
+                     fmt::arg("height", height));
 }
 
 // Steps sim until its first contact episode closes (or max_time): the episode.
