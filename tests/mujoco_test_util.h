@@ -6,6 +6,7 @@
 #ifndef CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
 #define CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -40,6 +41,16 @@ class MujocoTest : public ::testing::Test {
     for (int i = 0; i < mjNWARNING; ++i) {
       EXPECT_EQ(d->warning[i].number, 0) << "MuJoCo warning " << i << " raised";
     }
+  }
+
+  // Takes back the MuJoCo warnings containing text, which the test caused on
+  // purpose; fails when there is none.
+  void ExpectMujocoWarning(std::string_view text) {
+    std::vector<std::string>& w = Warnings();
+    const auto matches = [&](const std::string& m) { return m.find(text) != std::string::npos; };
+    const size_t before = w.size();
+    w.erase(std::remove_if(w.begin(), w.end(), matches), w.end());
+    EXPECT_LT(w.size(), before) << "no MuJoCo warning with: " << text;
   }
 
   // A model from inline XML, named after the test in messages.

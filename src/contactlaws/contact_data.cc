@@ -153,7 +153,25 @@ void ContactData::Step() {
   AfterStep();
 }
 
+namespace {
+
+// The warnings of mj_checkPos, mj_checkVel and mj_checkAcc, each of which
+// resets the data when it fires.
+constexpr int kBadStateWarnings[3] = {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC};
+
+bool AllFinite(const mjtNum* x, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(x[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 void ContactData::BeforeStep() {
+  // the time went back: mj_resetData (or a keyframe) since the last step
+  if (has_current_ && d_->time < current_time_) Reset();
+  for (int i = 0; i < 3; ++i) bad_state_warnings_[i] = d_->warning[kBadStateWarnings[i]].number;
   for (const Drive& drive : model_.drives()) {
     drive.Position(d_->time, d_->mocap_pos + 3 * drive.mocap);
   }
@@ -182,6 +200,7 @@ void ContactData::Reset() {
   has_previous_ = has_current_ = false;
   has_committed_ = false;
   committed_time_ = committed_power_ = dissipated_ = 0;
+  divergence_.reset();
 }
 
 void ContactData::PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const {
@@ -350,9 +369,65 @@ double ContactData::Power(const std::vector<Evaluation>& evaluations) const {
   return power;
 }
 
+void ContactData::CheckDivergence() {
+  if (divergence_) return;
+  // the deepest contact of the step's start state, relative to its limit
+  const Evaluation* deepest = nullptr;
+  bool finite_forces = true;
+  for (const Evaluation& e : captured_) {
+    finite_forces = finite_forces && std::isfinite(e.force);
+    const double limit = model_.pairs()[e.pair].depth_limit;
+    if (!deepest || e.depth / limit > deepest->depth / model_.pairs()[deepest->pair].depth_limit) {
+      deepest = &e;
+    }
+  }
+  std::optional<Divergence::Kind> kind;
+  std::string what;
+  for (int i = 0; i < 3 && !kind; ++i) {
+    const mjWarningStat& w = d_->warning[kBadStateWarnings[i]];
+    if (w.number > bad_state_warnings_[i]) {
+      kind = Divergence::Kind::kMujocoReset;
+      what = fmt::format("MuJoCo found NaN, infinity or a value beyond {:g} in {} (dof {}) and "
+                         "reset the state",
+                         mjMAXVAL, i == 0 ? "qpos" : i == 1 ? "qvel" : "qacc", w.lastinfo);
+    }
+  }
+  if (!kind && has_capture_ && d_->time < captured_time_) {
+    kind = Divergence::Kind::kMujocoReset;
+    what = "the time went back during the step (MuJoCo reset the state)";
+  }
+  if (!kind && (!AllFinite(d_->qpos, m_->nq) || !AllFinite(d_->qvel, m_->nv) ||
+                !AllFinite(d_->qacc, m_->nv) || !finite_forces)) {
+    kind = Divergence::Kind::kNonFinite;
+    what = "NaN or infinity in the state or a contact force";
+  }
+  if (!kind && deepest) {
+    const GeomPair& pair = model_.pairs()[deepest->pair];
+    if (deepest->depth > pair.depth_limit) {
+      kind = Divergence::Kind::kTooDeep;
+      what = fmt::format("depth {:.4g} m beyond {:.4g} m ({} of the smaller geom's size)",
+                         deepest->depth, pair.depth_limit, kDivergenceDepthFraction);
+    }
+  }
+  if (!kind) return;
+  Divergence& divergence = divergence_.emplace();
+  divergence.kind = *kind;
+  divergence.time = has_capture_ ? captured_time_ : current_time_;
+  divergence.what = std::move(what);
+  if (deepest) {
+    divergence.pair = deepest->pair;
+    divergence.depth = deepest->depth;
+    divergence.depth_rate = deepest->depth_rate;
+  }
+}
+
 void ContactData::AfterStep() {
   capture_armed_ = false;
-  if (!has_capture_) return;
+  CheckDivergence();
+  if (!has_capture_ || divergence_) {
+    has_capture_ = false;
+    return;
+  }
   has_capture_ = false;
   const double t = captured_time_;
   ++commits_;

@@ -22,12 +22,17 @@
 //   contactlaws::ContactData contacts(contact_model, d);
 //   while (...) contacts.Step();      // BeforeStep(); mj_step(m, d); AfterStep();
 //
-// and after mj_resetData (or any jump of the state), call Reset().
+// mj_resetData (the time going back) is noticed by the next BeforeStep, which
+// then forgets the per-contact memory; after any other jump of the state, call
+// Reset(). After each step, divergence() says whether the run can go on.
 
 #ifndef CONTACTLAWS_CONTACT_DATA_H_
 #define CONTACTLAWS_CONTACT_DATA_H_
 
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <mujoco/mujoco.h>
@@ -53,6 +58,23 @@ struct Impact {
   double max_force = 0;           // N
   // separation / impact depth rate (closed only)
   double restitution_post() const { return separation_velocity / impact_velocity; }
+};
+
+// Why a run cannot go on: found by AfterStep, kept until Reset().
+struct Divergence {
+  enum class Kind {
+    kNonFinite,     // NaN or infinity in qpos, qvel, qacc or a contact force
+    kMujocoReset,   // MuJoCo found a bad qpos/qvel/qacc and reset the data
+    kTooDeep,       // a contact deeper than its pair's depth_limit
+  };
+  Kind kind = Kind::kNonFinite;
+  double time = 0;       // s: the start of the step that diverged
+  // The deepest tagged contact at that state, relative to its limit (-1: none
+  // in contact), its depth and depth rate.
+  int pair = -1;
+  double depth = 0;        // m
+  double depth_rate = 0;   // m/s
+  std::string what;        // one phrase: "depth 0.06 m beyond 0.05 m (half ...)"
 };
 
 // The latest evaluation of one tag: its deepest contact point, and the sum of
@@ -83,8 +105,13 @@ class ContactData {
   // start state.
   void AfterStep();
 
-  // Forgets every episode and the energy ledger; call after mj_resetData.
+  // Forgets every episode, the energy ledger and any divergence. BeforeStep
+  // calls it when the time has gone back (mj_resetData).
   void Reset();
+
+  // Set by the AfterStep that found the state diverged; the state is then
+  // not to be trusted (MuJoCo may even have reset it).
+  const std::optional<Divergence>& divergence() const { return divergence_; }
 
   const ContactModel& model() const { return model_; }
   mjData* data() const { return d_; }
@@ -134,6 +161,8 @@ class ContactData {
                       const mjtNum* qvel, double time);
   void ApplyDrives();
   double Power(const std::vector<Evaluation>& evaluations) const;
+  // AfterStep's checks: sets divergence_ when the step diverged.
+  void CheckDivergence();
 
   const ContactModel& model_;
   const mjModel* m_;
@@ -174,6 +203,11 @@ class ContactData {
   double previous_time_ = 0;
   bool has_current_ = false;
   bool has_previous_ = false;
+
+  // MuJoCo's bad-state warning counts at BeforeStep: a rise means mj_step
+  // found NaN/huge values and reset the data
+  std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
+  std::optional<Divergence> divergence_;
 
   // energy ledger
   bool has_committed_ = false;

@@ -283,6 +283,8 @@ void ContactModel::ReadTags(const Overrides& overrides) {
         pair.params = base;
         pair.first_slot = slot_count_;
         pair.slots = MaxContacts(m->geom_type[g1], m->geom_type[g2]);
+        pair.depth_limit =
+            kDivergenceDepthFraction * std::min(GeomSize(m, g1), GeomSize(m, g2));
 
         // stiffness from materials (paper eqs. 2-3), per pair: radii differ
         if (materials && base.kind != LawKind::kKelvinVoigt) {
@@ -335,6 +337,20 @@ int ContactModel::FindPair(int g1, int g2) const {
 const Drive* ContactModel::FindDrive(int body) const {
   const int i = body_drive_[body];
   return i < 0 ? nullptr : &drives_[i];
+}
+
+double GeomSize(const mjModel* m, int g) {
+  const mjtNum* size = m->geom_size + 3 * g;
+  switch (m->geom_type[g]) {
+    case mjGEOM_PLANE:
+    case mjGEOM_HFIELD: return kInfinity;
+    case mjGEOM_SPHERE:
+    case mjGEOM_CAPSULE: return size[0];
+    case mjGEOM_CYLINDER: return std::min(size[0], size[1]);
+    case mjGEOM_ELLIPSOID:
+    case mjGEOM_BOX: return std::min({size[0], size[1], size[2]});
+    default: return m->geom_rbound[g];
+  }
 }
 
 int DefaultContactFilter(const mjModel* m, int g1, int g2) {

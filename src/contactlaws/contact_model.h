@@ -47,7 +47,23 @@ struct GeomPair {
   int first_slot = 0;    // this pair's contact points: slots [first_slot, first_slot + slots)
   int slots = 1;         // most contact points the narrowphase returns for it
   LawParams params;      // resolved (stiffness from materials included)
+  // A depth beyond this is divergence, not contact: kDivergenceDepthFraction
+  // of the smaller geom's size (GeomSize), m; infinite for two planes.
+  double depth_limit = 0;
 };
+
+// The depth at which a run is stopped as diverged, as a fraction of the
+// smaller geom's size. The laws come from Hertz's small-deformation theory
+// (d much smaller than the radii): at half the radius the model no longer
+// describes anything, and a stiff contact that gets there has been stepped
+// over, not resolved.
+inline constexpr double kDivergenceDepthFraction = 0.5;
+
+// A geom's smallest characteristic size, m: the radius of a sphere, capsule
+// or cylinder (or the cylinder's half length when smaller), the smallest
+// semi-axis of an ellipsoid or half-size of a box, the bounding radius of a
+// mesh; infinite for planes and height fields.
+double GeomSize(const mjModel* m, int g);
 
 // A body whose position is prescribed by a contactdrive tag:
 //   p(t) = ref + axis * amplitude * sin(omega t + phase).

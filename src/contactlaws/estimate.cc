@@ -95,4 +95,17 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   return e;
 }
 
+TagEstimate EstimateTag(const ContactData& contacts, int tag,
+                        std::optional<double> impact_velocity) {
+  TagEstimate shortest;
+  for (int p : contacts.model().tags()[tag].pairs) {
+    const ContactEstimate e = EstimateContact(contacts, p, impact_velocity);
+    if (shortest.pair < 0 || e.contact_duration < shortest.estimate.contact_duration) {
+      shortest.pair = p;
+      shortest.estimate = e;
+    }
+  }
+  return shortest;
+}
+
 }  // namespace contactlaws

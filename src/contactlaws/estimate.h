@@ -46,6 +46,17 @@ struct ContactEstimate {
 ContactEstimate EstimateContact(const ContactData& contacts, int pair,
                                 std::optional<double> impact_velocity = std::nullopt);
 
+// The pair of a tag whose estimated contact is shortest (it decides the
+// timestep), and its estimate.
+struct TagEstimate {
+  int pair = -1;  // ContactModel::pairs() index
+  ContactEstimate estimate;
+  // Steps of timestep in the estimated contact (infinite when not estimated).
+  double StepsPerContact(double timestep) const { return estimate.contact_duration / timestep; }
+};
+TagEstimate EstimateTag(const ContactData& contacts, int tag,
+                        std::optional<double> impact_velocity = std::nullopt);
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_ESTIMATE_H_

@@ -118,4 +118,17 @@ void Simulation::Sample(std::vector<double>* row) {
   }
 }
 
+bool Simulation::Undriven() const {
+  return contact_model_->drives().empty() && model_->nu == 0;
+}
+
+std::vector<MujocoWarning> Simulation::Warnings() const {
+  std::vector<MujocoWarning> warnings;
+  for (int i = 0; i < mjNWARNING; ++i) {
+    const mjWarningStat& w = data_->warning[i];
+    if (w.number > 0) warnings.push_back({mju_warningText(i, w.lastinfo), w.number});
+  }
+  return warnings;
+}
+
 }  // namespace contactlaws

@@ -29,6 +29,19 @@ struct EnergyLedger {
   double total() const { return kinetic + potential + elastic + dissipated; }
 };
 
+// One kind of MuJoCo warning raised on a run's data (d->warning), once, with
+// the number of times it was raised.
+struct MujocoWarning {
+  std::string text;  // mju_warningText of its last occurrence
+  int count = 0;
+};
+
+// A run whose total energy grows by more than this fraction of its energy
+// scale (the largest of |total| at the start and the kinetic energy seen) is
+// suspect when nothing drives it: the laws only dissipate, so the growth is
+// the integrator's. RK4 at 1e-5 s keeps the paper's drop within 1e-5 of it.
+inline constexpr double kEnergyGrowthTolerance = 1e-2;
+
 struct SimulationOptions {
   Overrides overrides;
   std::optional<double> timestep;   // s, > 0; default: the scene's
@@ -66,6 +79,13 @@ class Simulation {
 
   // The ledger at the current state (after mj_forward).
   EnergyLedger Energy() const;
+
+  // True when nothing feeds energy in: no contactdrive and no actuator. Only
+  // then must the ledger's total not grow.
+  bool Undriven() const;
+
+  // MuJoCo's warnings on this data since the last reset, one per kind.
+  std::vector<MujocoWarning> Warnings() const;
 
  private:
   UniqueModel model_;

@@ -100,6 +100,10 @@ class TagContext {
 
 std::string_view Label(const TagContext& ctx, std::string_view name,
                        std::string_view prefix) {
+  // (a name shorter than the prefix made substr throw std::out_of_range)
+  if (name.substr(0, prefix.size()) != prefix) {
+    ctx.Fail(fmt::format("the tag name must start with '{}'", prefix));
+  }
   std::string_view label = name.substr(prefix.size());
   if (label.empty()) ctx.Fail("the tag has an empty label");
   return label;
