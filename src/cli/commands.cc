@@ -5,17 +5,18 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/csv_file.h"
+#include "cli/parallel.h"
 #include "cli/runner.h"
 #include "contactlaws/estimate.h"
 #include "contactlaws/summary.h"
@@ -43,6 +44,12 @@ SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
   return options;
 }
 
+int Jobs(const std::optional<int>& jobs) {
+  if (!jobs) return DefaultJobs();
+  if (*jobs < 1) Refuse("--jobs", fmt::format("{}", *jobs), "must be a whole number >= 1");
+  return *jobs;
+}
+
 // Progress lines on stderr, only when it is a terminal.
 class Progress {
  public:
@@ -50,10 +57,10 @@ class Progress {
   ~Progress() { Done(); }
   // Ends the progress line, before anything else is printed.
   void Done() {
-    if (enabled_ && started_) fmt::print(stderr, "\n");
+    if (enabled_ && started_) fmt::print(stderr, "\r\033[K");
     started_ = false;
   }
-  void Start(int k, const std::string& what) {
+  void Finished(int k, const std::string& what) {
     if (!enabled_) return;
     started_ = true;
     fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, total_, what);
@@ -66,10 +73,37 @@ class Progress {
   bool started_ = false;
 };
 
-// Validates every run's tags before any is simulated: bad input costs nothing.
-void ValidateAll(const Scene& scene, const SimulationOptions& options,
-                 const std::vector<RunSpec>& specs) {
-  for (const RunSpec& spec : specs) scene.Make(OptionsFor(options, spec));
+void Warn(const std::string& scene, const std::string& what) {
+  fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
+}
+
+// Before any run: every run's tags are validated (bad input costs nothing),
+// and a timestep too coarse for a tag's estimated contact is named once.
+void Prepare(const Scene& scene, const SimulationOptions& options,
+             const std::vector<RunSpec>& specs) {
+  std::set<std::string> warned;
+  for (const RunSpec& spec : specs) {
+    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    for (const TimestepAdvice& advice : AdviseTimestep(sim.get())) {
+      if (!advice.coarse) continue;
+      const std::string text = CoarseTimestepWarning(*sim, advice);
+      if (warned.insert(text).second) {
+        Warn(scene.path(), specs.size() > 1 ? Describe(spec) + ": " + text : text);
+      }
+    }
+  }
+}
+
+// The warnings a finished run leaves: energy growth, MuJoCo's own.
+std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result) {
+  std::vector<std::string> warnings;
+  if (result.energy_growth) warnings.push_back(*result.energy_growth);
+  for (const MujocoWarning& w : sim.Warnings()) {
+    warnings.push_back(fmt::format("MuJoCo: {} ({} time{})", w.text, w.count,
+                                   w.count == 1 ? "" : "s"));
+    NoteReportedMujocoWarning(w.text);
+  }
+  return warnings;
 }
 
 // A table cell: "-" for a value that does not exist.
@@ -77,7 +111,7 @@ std::string Cell(const std::optional<double>& value, const char* format) {
   return value ? fmt::format(fmt::runtime(format), *value) : "-";
 }
 
-void PrintRunSummary(const Simulation& sim, std::FILE* out) {
+void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
   const ContactModel& cm = sim.contact_model();
   fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14}\n", "pair", "law", "restitution",
              "impacts", "first e_post", "max force (N)");
@@ -87,13 +121,144 @@ void PrintRunSummary(const Simulation& sim, std::FILE* out) {
     for (const Impact& impact : sim.contacts().impacts()) {
       if (impact.tag == t) impacts.push_back(impact);
     }
-    const RunSummary s = Summarize(impacts, sim.time());
+    const RunSummary s = Summarize(impacts, end_time);
     fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14.6g}\n", tag.label,
                LawName(tag.law), tag.law == LawKind::kHertz ? "-" : Field(tag.restitution),
                s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);
   }
 }
 
+// What one run of a sweep leaves for the thread that writes, in order.
+struct RunOutput {
+  enum class Status { kOk, kFailed, kInterrupted, kNotRun };
+  Status status = Status::kOk;
+  std::string reason;                 // failed, interrupted
+  std::vector<std::string> warnings;  // for stderr
+  double restitution = 0;             // as reported (1 for Hertz)
+  std::string trajectory;             // CSV lines (compare)
+  std::string impacts;                // CSV lines (compare)
+  RunSummary summary;
+  double dissipated = 0;
+  std::optional<Impact> first;        // the first episode of the first tag
+};
+
+const char* StatusName(RunOutput::Status status) {
+  switch (status) {
+    case RunOutput::Status::kOk: return "ok";
+    case RunOutput::Status::kFailed: return "failed";
+    case RunOutput::Status::kInterrupted: return "interrupted";
+    case RunOutput::Status::kNotRun: return "not run";
+  }
+  return "?";
+}
+
+RunOutput NotRun(const RunSpec& spec) {
+  RunOutput out;
+  out.status = RunOutput::Status::kNotRun;
+  out.reason = "interrupted before it started";
+  out.restitution = spec.restitution.value_or(0.0);
+  return out;
+}
+
+// One run of a sweep, on any thread. Refused input and divergence make a
+// failed run, not an exception: the sweep goes on.
+RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
+                  const AdvanceOptions& advance, bool record) {
+  RunOutput out;
+  out.restitution = spec.restitution.value_or(0.0);
+  try {
+    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
+    const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+    const std::vector<std::string> prefix = {std::string(LawName(spec.law)),
+                                             Field(out.restitution)};
+    std::function<void(const std::vector<double>&)> on_row;
+    if (record) {
+      on_row = [&](const std::vector<double>& row) {
+        if (!AppendRow(&out.trajectory, prefix, row)) {
+          throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
+                                  sim->time()));
+        }
+      };
+    }
+    const AdvanceResult result = Advance(sim.get(), advance, on_row);
+    double end_time = sim->time();
+    if (result.status == AdvanceResult::Status::kDiverged) {
+      out.status = RunOutput::Status::kFailed;
+      out.reason = "diverged at " + DivergenceMessage(*sim, *result.divergence, advice);
+      end_time = result.divergence->time;
+    } else if (result.status == AdvanceResult::Status::kInterrupted) {
+      out.status = RunOutput::Status::kInterrupted;
+      out.reason = fmt::format("interrupted at t = {:.6g} s", end_time);
+      return out;
+    }
+    out.warnings = RunWarnings(*sim, result);
+    if (record) {
+      for (const Impact& impact : sim->contacts().impacts()) {
+        AppendFields(&out.impacts, ImpactFields(*sim, impact));
+      }
+    }
+    for (const Impact& impact : sim->contacts().impacts()) {
+      if (impact.tag == 0) {
+        out.first = impact;
+        break;
+      }
+    }
+    out.summary = Summarize(sim->contacts().impacts(), end_time);
+    out.dissipated = sim->contacts().DissipatedEnergy();
+  } catch (const Error& e) {
+    out.status = RunOutput::Status::kFailed;
+    out.reason = e.what();
+  }
+  return out;
+}
+
+// Runs every spec (jobs at a time) and hands each output to deliver, in
+// order. Returns the exit status: 0, kExitIncomplete when a run failed,
+// kExitInterrupted after a stop request.
+int Sweep(const Scene& scene, const SimulationOptions& options,
+          const std::vector<RunSpec>& specs, const AdvanceOptions& advance, bool record,
+          int jobs, bool quiet, const std::function<void(int, RunOutput&)>& deliver) {
+  Progress progress(static_cast<int>(specs.size()), quiet);
+  int failed = 0;
+  bool interrupted = false;
+  RunInOrder<RunOutput>(
+      static_cast<int>(specs.size()), jobs,
+      [&](int k) { return Execute(scene, options, specs[k], advance, record); },
+      [&](int k, RunOutput& out) {
+        progress.Finished(k, Describe(specs[k]));
+        if (out.status == RunOutput::Status::kOk && out.warnings.empty()) {
+          deliver(k, out);
+          return;
+        }
+        progress.Done();
+        for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
+        if (out.status == RunOutput::Status::kFailed) {
+          ++failed;
+          fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene.path(),
+                     Describe(specs[k]), out.reason);
+        }
+        interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
+                      out.status == RunOutput::Status::kNotRun;
+        deliver(k, out);
+      },
+      StopRequested, [&](int k) { return NotRun(specs[k]); });
+  progress.Done();
+  if (interrupted) {
+    fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
+    return kExitInterrupted;
+  }
+  return failed ? kExitIncomplete : 0;
+}
+
+std::string CreateDirectory(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) {
+    throw Error(fmt::format("{}: cannot create the output directory ({})", dir, error.message()));
+  }
+  return dir;
+}
 
 }  // namespace
 
@@ -112,10 +277,24 @@ int RunCommand(const RunArgs& args) {
   if (args.output) trajectory.emplace(*args.output);
   if (args.impacts) impacts.emplace(*args.impacts);
 
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  for (const TimestepAdvice& a : advice) {
+    if (a.coarse) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+  }
   if (trajectory) trajectory->Header(sim->Columns());
-  AdvanceOptions advance{args.duration, trajectory ? args.sample_rate : 0.0, false};
-  Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
+  const AdvanceOptions advance{args.duration, trajectory ? args.sample_rate : 0.0, false};
+  const AdvanceResult result =
+      Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
+  if (result.status == AdvanceResult::Status::kInterrupted) {
+    fmt::print(stderr, "contactlaws: interrupted at t = {:.6g} s: no file written\n",
+               sim->time());
+    return kExitInterrupted;
+  }
+  for (const std::string& w : RunWarnings(*sim, result)) Warn(scene.path(), w);
 
+  // what was computed up to a divergence is valid, and written
+  const double end_time =
+      result.divergence ? result.divergence->time : sim->time();
   if (trajectory) trajectory->Commit();
   if (impacts) {
     impacts->Header(ImpactColumns());
@@ -124,13 +303,19 @@ int RunCommand(const RunArgs& args) {
     }
     impacts->Commit();
   }
-  PrintRunSummary(*sim, args.output && *args.output == "-" ? stderr : stdout);
+  PrintRunSummary(*sim, end_time, args.output && *args.output == "-" ? stderr : stdout);
+  if (result.divergence) {
+    fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
+               DivergenceMessage(*sim, *result.divergence, advice));
+    return kExitIncomplete;
+  }
   return 0;
 }
 
 int CompareCommand(const SweepArgs& args) {
   const SimulationOptions options = ParseCommon(args);
   const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
+  const int jobs = Jobs(args.jobs);
   std::vector<double> restitutions;
   if (args.restitution) restitutions = ParseRestitutionList("--restitution", *args.restitution);
 
@@ -146,54 +331,58 @@ int CompareCommand(const SweepArgs& args) {
     }
   }
   const Scene scene(args.scene);
-  ValidateAll(scene, options, specs);
+  Prepare(scene, options, specs);
 
-  std::error_code error;
-  std::filesystem::create_directories(args.output_dir, error);
-  if (error) {
-    throw Error(fmt::format("{}: cannot create the output directory ({})", args.output_dir,
-                            error.message()));
-  }
+  CreateDirectory(args.output_dir);
   CsvFile trajectories(args.output_dir + "/trajectories.csv");
   CsvFile impacts(args.output_dir + "/impacts.csv");
   CsvFile summary(args.output_dir + "/summary.csv");
+  {
+    std::vector<std::string> columns = {"law", "restitution"};
+    for (std::string& c : scene.Make(OptionsFor(options, specs.front()))->Columns()) {
+      columns.push_back(std::move(c));
+    }
+    trajectories.Header(columns);
+  }
   impacts.Header(ImpactColumns());
-  summary.Header({"law", "restitution", "impacts", "restitution_post", "max_depth",
-                  "max_force", "contact_duration", "time_to_rest", "dissipated_energy"});
+  summary.Header({"law", "restitution", "impacts", "restitution_post", "max_depth", "max_force",
+                  "contact_duration", "time_to_rest", "dissipated_energy", "status", "reason"});
 
   struct Row {
     RunSpec spec;
+    RunOutput::Status status;
     double restitution;
     RunSummary s;
     double dissipated;
   };
   std::vector<Row> rows;
-  Progress progress(static_cast<int>(specs.size()), args.quiet);
-  for (size_t k = 0; k < specs.size(); ++k) {
-    const RunSpec& spec = specs[k];
-    progress.Start(static_cast<int>(k), Describe(spec));
-    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
-    const PairTag& first_tag = sim->contact_model().tags().front();
-    const double e = ReportedRestitution(spec.law, first_tag.restitution);
-    if (k == 0) {
-      std::vector<std::string> columns = {"law", "restitution"};
-      for (std::string& c : sim->Columns()) columns.push_back(std::move(c));
-      trajectories.Header(columns);
-    }
-    const std::vector<std::string> prefix = {std::string(LawName(spec.law)), Field(e)};
-    Advance(sim.get(), {args.duration, args.sample_rate, false},
-            [&](const std::vector<double>& row) { trajectories.Row(prefix, row); });
-    for (const Impact& impact : sim->contacts().impacts()) {
-      impacts.Fields(ImpactFields(*sim, impact));
-    }
-    const RunSummary s = Summarize(sim->contacts().impacts(), sim->time());
-    const double dissipated = sim->contacts().DissipatedEnergy();
-    summary.Fields({std::string(LawName(spec.law)), Field(e), Field(s.impacts),
-                    Field(s.restitution_post), Field(s.max_depth), Field(s.max_force),
-                    Field(s.contact_duration), Field(s.time_to_rest), Field(dissipated)});
-    rows.push_back({spec, e, s, dissipated});
-  }
-  progress.Done();
+  const int status = Sweep(
+      scene, options, specs, {args.duration, args.sample_rate, false}, true, jobs, args.quiet,
+      [&](int k, RunOutput& out) {
+        const RunSpec& spec = specs[k];
+        const std::string law(LawName(spec.law));
+        if (out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed) {
+          // a failed run's rows up to its divergence are valid; an
+          // interrupted run's are not written at all
+          trajectories.Write(out.trajectory);
+          impacts.Write(out.impacts);
+        }
+        const RunSummary& s = out.summary;
+        if (out.status == RunOutput::Status::kOk) {
+          summary.Fields({law, Field(out.restitution), Field(s.impacts),
+                          Field(s.restitution_post), Field(s.max_depth), Field(s.max_force),
+                          Field(s.contact_duration), Field(s.time_to_rest),
+                          Field(out.dissipated), "ok", ""});
+        } else {
+          // a failed run's numbers are not to be trusted: only its status
+          summary.Fields({law, Field(out.restitution), "", "", "", "", "", "", "",
+                          StatusName(out.status), out.reason});
+        }
+        rows.push_back({spec, out.status, out.restitution, s, out.dissipated});
+        trajectories.Flush();
+        impacts.Flush();
+        summary.Flush();
+      });
   trajectories.Commit();
   impacts.Commit();
   summary.Commit();
@@ -202,6 +391,11 @@ int CompareCommand(const SweepArgs& args) {
              "restitution", "impacts", "first e_post", "max depth (m)", "max force (N)",
              "duration (s)", "at rest (s)", "dissipated (J)");
   for (const Row& r : rows) {
+    if (r.status != RunOutput::Status::kOk) {
+      fmt::print("{:<20} {:>11} {}\n", LawName(r.spec.law), Field(r.restitution),
+                 StatusName(r.status));
+      continue;
+    }
     fmt::print("{:<20} {:>11} {:>8} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n",
                LawName(r.spec.law), Field(r.restitution), r.s.impacts,
                Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
@@ -209,12 +403,13 @@ int CompareCommand(const SweepArgs& args) {
                r.dissipated);
   }
   fmt::print("wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n", args.output_dir);
-  return 0;
+  return status;
 }
 
 int RestitutionCommand(const SweepArgs& args) {
   const SimulationOptions options = ParseCommon(args);
   const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
+  const int jobs = Jobs(args.jobs);
   const std::vector<double> restitutions =
       ParseRestitutionList("--restitution", args.restitution.value_or(kDefaultSweep));
   std::vector<RunSpec> specs;
@@ -222,7 +417,7 @@ int RestitutionCommand(const SweepArgs& args) {
     for (double e : restitutions) specs.push_back({law, e});
   }
   const Scene scene(args.scene);
-  ValidateAll(scene, options, specs);
+  Prepare(scene, options, specs);
 
   CsvFile out(args.output);
   out.Header({"law", "restitution", "restitution_post", "impact_velocity", "max_depth",
@@ -233,36 +428,34 @@ int RestitutionCommand(const SweepArgs& args) {
   };
   std::vector<Row> rows;
   int incomplete = 0;
-  Progress progress(static_cast<int>(specs.size()), args.quiet);
-  for (size_t k = 0; k < specs.size(); ++k) {
-    const RunSpec& spec = specs[k];
-    progress.Start(static_cast<int>(k), Describe(spec));
-    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
-    Advance(sim.get(), {args.duration, 0.0, true}, nullptr);
-    std::optional<Impact> first;
-    for (const Impact& impact : sim->contacts().impacts()) {
-      if (impact.tag == 0) {
-        first = impact;
-        break;
-      }
-    }
-    const bool closed = first && !first->open;
-    if (!closed) {
-      ++incomplete;
-      fmt::print(stderr, "contactlaws: warning: {}: {} within --duration={} s\n",
-                 Describe(spec),
-                 first ? "the first contact did not end" : "no contact", args.duration);
-    }
-    auto if_closed = [&](double v) { return closed ? Field(v) : std::string(); };
-    out.Fields({std::string(LawName(spec.law)), Field(*spec.restitution),
-                first ? if_closed(first->restitution_post()) : "",
-                first ? Field(first->impact_velocity) : "",
-                first ? Field(first->max_depth) : "", first ? Field(first->max_force) : "",
-                first ? if_closed(first->time_separation - first->time_contact) : ""});
-    rows.push_back({spec, first});
-  }
-  progress.Done();
+  int status = Sweep(
+      scene, options, specs, {args.duration, 0.0, true}, false, jobs, args.quiet,
+      [&](int k, RunOutput& run) {
+        const RunSpec& spec = specs[k];
+        const std::optional<Impact>& first = run.first;
+        const bool closed = run.status == RunOutput::Status::kOk && first && !first->open;
+        if (run.status == RunOutput::Status::kOk && !closed) {
+          ++incomplete;
+          Warn(scene.path(), fmt::format("{}: {} within --duration={} s", Describe(spec),
+                                         first ? "the first contact did not end" : "no contact",
+                                         args.duration));
+        }
+        if (run.status != RunOutput::Status::kOk && run.status != RunOutput::Status::kFailed) {
+          return;  // interrupted: no row
+        }
+        const bool known = run.status == RunOutput::Status::kOk && first;
+        auto if_known = [&](double v) { return known ? Field(v) : std::string(); };
+        auto if_closed = [&](double v) { return closed ? Field(v) : std::string(); };
+        out.Fields({std::string(LawName(spec.law)), Field(*spec.restitution),
+                    first ? if_closed(first->restitution_post()) : "",
+                    first ? if_known(first->impact_velocity) : "",
+                    first ? if_known(first->max_depth) : "",
+                    first ? if_known(first->max_force) : "",
+                    first ? if_closed(first->time_separation - first->time_contact) : ""});
+        rows.push_back({spec, known ? first : std::nullopt});
+      });
   out.Commit();
+  if (status == 0 && incomplete) status = kExitIncomplete;
 
   if (args.output != "-") {
     fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", "law", "restitution",
@@ -285,7 +478,7 @@ int RestitutionCommand(const SweepArgs& args) {
     fmt::print("exact e_post: the closed form a (1 + e) = ln((1 + a) / (1 - a e)), "
                "gravity neglected\nwrote {}\n", args.output);
   }
-  return incomplete ? kExitIncomplete : 0;
+  return status;
 }
 
 int CheckCommand(const CheckArgs& args) {
@@ -320,7 +513,8 @@ int CheckCommand(const CheckArgs& args) {
 
   int coarse = 0;
   fmt::print("\n{} contactlaw tag(s)\n", cm.tags().size());
-  for (const PairTag& tag : cm.tags()) {
+  for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
+    const PairTag& tag = cm.tags()[t];
     const LawParams& law = cm.pairs()[tag.pairs.front()].params;
     fmt::print("\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
                tag.geom2, tag.pairs.size(), LawName(law.kind));
@@ -339,15 +533,9 @@ int CheckCommand(const CheckArgs& args) {
                law.allow_tension ? ", allow_tension" : "");
 
     // the pair of this tag whose contact is shortest decides the timestep
-    int worst = -1;
-    ContactEstimate estimate;
-    for (int p : tag.pairs) {
-      const ContactEstimate e = EstimateContact(sim->contacts(), p, args.impact_velocity);
-      if (worst < 0 || e.contact_duration < estimate.contact_duration) {
-        worst = p;
-        estimate = e;
-      }
-    }
+    const TagEstimate shortest = EstimateTag(sim->contacts(), t, args.impact_velocity);
+    const int worst = shortest.pair;
+    const ContactEstimate& estimate = shortest.estimate;
     const GeomPair& pair = cm.pairs()[worst];
     fmt::print("  {}geoms {} - {}: effective mass {} kg, gap {}\n",
                tag.pairs.size() > 1 ? "shortest contact: " : "",

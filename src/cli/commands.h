@@ -15,6 +15,7 @@ namespace contactlaws::cli {
 
 inline constexpr int kExitRefused = 2;     // bad input: nothing was run
 inline constexpr int kExitIncomplete = 3;  // a run did not give what was asked
+inline constexpr int kExitInterrupted = 130;  // Ctrl-C (128 + SIGINT), as shells do
 
 struct RunArgs : CommonArgs {
   std::optional<std::string> law;
@@ -29,6 +30,7 @@ struct SweepArgs : CommonArgs {
   std::string output_dir = "results";      // compare
   std::string output = "-";                // restitution
   bool quiet = false;
+  std::optional<int> jobs;                 // default: the number of cores
 };
 
 struct CheckArgs {

@@ -12,6 +12,41 @@
 
 namespace contactlaws::cli {
 
+void AppendFields(std::string* out, const std::vector<std::string>& fields) {
+  for (size_t i = 0; i < fields.size(); ++i) {
+    if (i) *out += ',';
+    const std::string& f = fields[i];
+    if (f.find_first_of(",\"\r\n") == std::string::npos) {
+      *out += f;
+      continue;
+    }
+    *out += '"';
+    for (char c : f) {
+      if (c == '"') *out += '"';
+      *out += c;
+    }
+    *out += '"';
+  }
+  *out += '\n';
+}
+
+bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
+               const std::vector<double>& values) {
+  for (double v : values) {
+    if (!std::isfinite(v)) return false;
+  }
+  for (const std::string& field : prefix) {
+    *out += field;
+    *out += ',';
+  }
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (i) *out += ',';
+    fmt::format_to(std::back_inserter(*out), "{}", values[i]);
+  }
+  *out += '\n';
+  return true;
+}
+
 CsvFile::CsvFile(std::string path) : path_(std::move(path)) {
   if (path_ == "-") {
     file_ = stdout;
@@ -32,36 +67,25 @@ CsvFile::~CsvFile() {
   }
 }
 
-void CsvFile::Header(const std::vector<std::string>& columns) { Fields(columns); }
-
 void CsvFile::Fields(const std::vector<std::string>& fields) {
   line_.clear();
-  for (size_t i = 0; i < fields.size(); ++i) {
-    if (i) line_ += ',';
-    line_ += fields[i];
-  }
-  line_ += '\n';
-  std::fwrite(line_.data(), 1, line_.size(), file_);
+  AppendFields(&line_, fields);
+  Write(line_);
 }
-
-void CsvFile::Row(const std::vector<double>& values) { Row({}, values); }
 
 void CsvFile::Row(const std::vector<std::string>& prefix, const std::vector<double>& values) {
   line_.clear();
-  for (const std::string& field : prefix) {
-    line_ += field;
-    line_ += ',';
+  if (!AppendRow(&line_, prefix, values)) {
+    throw Error(fmt::format("{}: refusing to write a non-finite value", path_));
   }
-  for (size_t i = 0; i < values.size(); ++i) {
-    if (!std::isfinite(values[i])) {
-      throw Error(fmt::format("{}: refusing to write a non-finite value", path_));
-    }
-    if (i) line_ += ',';
-    fmt::format_to(std::back_inserter(line_), "{}", values[i]);
-  }
-  line_ += '\n';
-  std::fwrite(line_.data(), 1, line_.size(), file_);
+  Write(line_);
 }
+
+void CsvFile::Write(std::string_view lines) {
+  std::fwrite(lines.data(), 1, lines.size(), file_);
+}
+
+void CsvFile::Flush() { std::fflush(file_); }
 
 void CsvFile::Commit() {
   if (is_stdout_) {

@@ -1,16 +1,29 @@
 // Copyright contactlaws authors.
 //
-// A CSV output that appears complete or not at all: rows go to PATH.tmp, and
-// Commit() renames it to PATH. "-" writes to standard output.
+// CSV output that appears complete or not at all: rows go to PATH.tmp, and
+// Commit() renames it to PATH. "-" writes to standard output. Rows can also be
+// formatted into a string first (AppendRow, AppendFields), so that runs on
+// other threads prepare theirs and one thread writes them in order.
 
 #ifndef CONTACTLAWS_CLI_CSV_FILE_H_
 #define CONTACTLAWS_CLI_CSV_FILE_H_
 
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace contactlaws::cli {
+
+// Appends one CSV line of preformatted fields to out; a field holding a comma,
+// a double quote or a line break is quoted (RFC 4180).
+void AppendFields(std::string* out, const std::vector<std::string>& fields);
+
+// Appends one CSV line: the preformatted prefix fields, then numbers in their
+// shortest exact form. Returns false, appending nothing, when a number is NaN
+// or infinite (no such value is ever written).
+bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
+               const std::vector<double>& values);
 
 class CsvFile {
  public:
@@ -21,13 +34,20 @@ class CsvFile {
   CsvFile(const CsvFile&) = delete;
   CsvFile& operator=(const CsvFile&) = delete;
 
-  void Header(const std::vector<std::string>& columns);
+  const std::string& path() const { return path_; }
+
+  void Header(const std::vector<std::string>& columns) { Fields(columns); }
   // Numbers in their shortest exact form; NaN/inf are refused (Error).
-  void Row(const std::vector<double>& values);
+  void Row(const std::vector<double>& values) { Row({}, values); }
   // Preformatted leading fields, then numbers as Row.
   void Row(const std::vector<std::string>& prefix, const std::vector<double>& values);
   // A row of preformatted fields.
   void Fields(const std::vector<std::string>& fields);
+  // Lines formatted by AppendRow / AppendFields.
+  void Write(std::string_view lines);
+  // Hands what is written so far to the system (a finished run's rows).
+  void Flush();
+  // Renames PATH.tmp to PATH (flushes stdout); throws Error when it cannot.
   void Commit();
 
  private:

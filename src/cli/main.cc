@@ -9,12 +9,15 @@
 // Exit status: 0 done; 2 refused input (one line on stderr naming the file,
 // tag, key and value); 3 a run did not give what was asked; 1 anything else.
 
+#include <signal.h>
+
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/runner.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -41,6 +44,31 @@ void AddSweep(CLI::App* cmd, SweepArgs* args, const char* restitution_help) {
       ->capture_default_str();
   cmd->add_option("--restitution", args->restitution, restitution_help);
   cmd->add_flag("--quiet", args->quiet, "no progress on stderr");
+  cmd->add_option("--jobs", args->jobs,
+                  "runs at a time, >= 1 (default: the number of cores); the output does not "
+                  "depend on it");
+}
+
+// Ctrl-C (or SIGTERM): the runs stop after their current step and the
+// finished ones are written. The handler resets itself, so a second Ctrl-C
+// ends the program at once.
+extern "C" void OnStopSignal(int) { RequestStop(); }
+
+void InstallStopHandler() {
+  struct sigaction action = {};
+  action.sa_handler = OnStopSignal;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// MuJoCo's warnings not reported with a run's, once each.
+void ReportOtherMujocoWarnings() {
+  for (const MujocoWarning& w : UnreportedMujocoWarnings()) {
+    fmt::print(stderr, "contactlaws: warning: MuJoCo: {} ({} time{})\n", w.text, w.count,
+               w.count == 1 ? "" : "s");
+  }
 }
 
 int Main(int argc, char** argv) {
@@ -101,20 +129,25 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
+  // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
+  mju_user_warning = RecordMujocoWarning;
+  InstallStopHandler();
+  int status = 1;
   try {
-    if (run_cmd->parsed()) return RunCommand(run);
-    if (compare_cmd->parsed()) return CompareCommand(compare);
-    if (restitution_cmd->parsed()) return RestitutionCommand(restitution);
-    if (check_cmd->parsed()) return CheckCommand(check);
-    if (laws_cmd->parsed()) return LawsCommand();
+    if (run_cmd->parsed()) status = RunCommand(run);
+    if (compare_cmd->parsed()) status = CompareCommand(compare);
+    if (restitution_cmd->parsed()) status = RestitutionCommand(restitution);
+    if (check_cmd->parsed()) status = CheckCommand(check);
+    if (laws_cmd->parsed()) status = LawsCommand();
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
-    return kExitRefused;
+    status = kExitRefused;
   } catch (const std::exception& e) {
     fmt::print(stderr, "contactlaws: internal error: {}\n", e.what());
-    return 1;
+    status = 1;
   }
-  return 1;
+  ReportOtherMujocoWarnings();
+  return status;
 }
 
 }  // namespace

@@ -2,9 +2,114 @@
 
 #include "cli/runner.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <set>
+
 #include <fmt/format.h>
 
+#include "contactlaws/tags.h"
+
 namespace contactlaws::cli {
+namespace {
+
+// Set by RequestStop (a signal handler among others): lock-free, so
+// async-signal-safe, and read once per step by every running Advance.
+std::atomic<bool> stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+std::string PairName(const Simulation& sim, int pair_index) {
+  const ContactModel& cm = sim.contact_model();
+  const GeomPair& pair = cm.pairs()[pair_index];
+  return fmt::format("{}{} ({}, {})", kPairTagPrefix, cm.tags()[pair.tag].label,
+                     ObjectName(sim.model(), mjOBJ_GEOM, pair.named[0]),
+                     ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]));
+}
+
+// Watches the ledger's total of an undriven scene.
+class EnergyWatch {
+ public:
+  explicit EnergyWatch(const Simulation& sim) : enabled_(sim.Undriven()) {}
+  // At a state after mj_forward.
+  void Observe(const Simulation& sim) {
+    if (!enabled_) return;
+    const EnergyLedger e = sim.Energy();
+    const double total = e.total();
+    if (!started_) {
+      started_ = true;
+      initial_ = total;
+      scale_ = std::abs(total);
+    }
+    scale_ = std::max(scale_, e.kinetic);
+    const double growth = total - initial_;
+    if (growth > worst_growth_) {
+      worst_growth_ = growth;
+      worst_time_ = sim.time();
+    }
+  }
+  std::optional<std::string> Report() const {
+    if (!enabled_ || !(worst_growth_ > kEnergyGrowthTolerance * scale_)) return std::nullopt;
+    return fmt::format(
+        "the total energy of this undriven scene grew by {:.4g} J ({:.3g}% of {:.4g} J, "
+        "tolerance {}%) by t = {:.6g} s: the integration adds energy, likely a timestep too "
+        "coarse for the contact",
+        worst_growth_, 100 * worst_growth_ / scale_, scale_, 100 * kEnergyGrowthTolerance,
+        worst_time_);
+  }
+
+ private:
+  bool enabled_;
+  bool started_ = false;
+  double initial_ = 0;
+  double scale_ = 0;
+  double worst_growth_ = 0;
+  double worst_time_ = 0;
+};
+
+struct MujocoMessages {
+  std::mutex mutex;
+  std::map<std::string, int> received;  // text -> times
+  std::set<std::string> reported;
+};
+
+MujocoMessages& Messages() {
+  static MujocoMessages* messages = new MujocoMessages;  // used until exit
+  return *messages;
+}
+
+}  // namespace
+
+void RecordMujocoWarning(const char* text) {
+  MujocoMessages& m = Messages();
+  std::lock_guard lock(m.mutex);
+  ++m.received[text ? text : ""];
+}
+
+void NoteReportedMujocoWarning(const std::string& text) {
+  MujocoMessages& m = Messages();
+  std::lock_guard lock(m.mutex);
+  m.reported.insert(text);
+}
+
+std::vector<MujocoWarning> UnreportedMujocoWarnings() {
+  MujocoMessages& m = Messages();
+  std::lock_guard lock(m.mutex);
+  std::vector<MujocoWarning> unreported;
+  for (const auto& [text, count] : m.received) {
+    // MuJoCo sends a run's warning text with " Time = ..." appended
+    const bool reported = std::any_of(m.reported.begin(), m.reported.end(),
+                                      [&](const std::string& r) { return text.rfind(r, 0) == 0; });
+    if (!reported) unreported.push_back({text, count});
+  }
+  return unreported;
+}
+
+void RequestStop() { stop_requested.store(true, std::memory_order_relaxed); }
+
+bool StopRequested() { return stop_requested.load(std::memory_order_relaxed); }
 
 Scene::Scene(std::string path) : path_(std::move(path)), model_(LoadModelFile(path_)) {}
 
@@ -21,12 +126,14 @@ double ReportedRestitution(LawKind law, double restitution) {
   return law == LawKind::kHertz ? 1.0 : restitution;
 }
 
-void Advance(Simulation* sim, const AdvanceOptions& options,
-             const std::function<void(const std::vector<double>&)>& on_row) {
+AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
+                      const std::function<void(const std::vector<double>&)>& on_row) {
   const double dt = sim->model()->opt.timestep;
   const bool sampling = options.sample_rate > 0 && on_row;
   const double period = sampling ? 1.0 / options.sample_rate : 0.0;
   std::vector<double> row;
+  EnergyWatch energy(*sim);
+  AdvanceResult result;
 
   // sample at the first step that reaches each grid time k * period (within
   // half a step, so that rounding of the time does not skip or repeat a row)
@@ -34,6 +141,7 @@ void Advance(Simulation* sim, const AdvanceOptions& options,
   auto sample_if_due = [&] {
     if (!sampling || sim->time() < next * period - 0.5 * dt) return;
     sim->Sample(&row);
+    energy.Observe(*sim);
     on_row(row);
     while (next * period - 0.5 * dt <= sim->time()) ++next;
   };
@@ -44,12 +152,96 @@ void Advance(Simulation* sim, const AdvanceOptions& options,
     return false;
   };
 
+  if (!sampling) {
+    mj_forward(sim->model(), sim->data());
+    energy.Observe(*sim);
+  }
   sample_if_due();
   while (sim->time() < options.duration - 0.5 * dt) {
+    if (StopRequested()) {
+      result.status = AdvanceResult::Status::kInterrupted;
+      break;
+    }
     sim->Step();
+    if (const std::optional<Divergence>& divergence = sim->contacts().divergence()) {
+      result.status = AdvanceResult::Status::kDiverged;
+      result.divergence = divergence;
+      return result;  // the state is not to be sampled
+    }
     sample_if_due();
     if (options.until_first_episode && first_episode_over()) break;
   }
+  mj_forward(sim->model(), sim->data());
+  energy.Observe(*sim);
+  result.energy_growth = energy.Report();
+  return result;
+}
+
+std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
+  mj_forward(sim->model(), sim->data());
+  const double dt = sim->model()->opt.timestep;
+  std::vector<TimestepAdvice> advice;
+  for (int t = 0; t < static_cast<int>(sim->contact_model().tags().size()); ++t) {
+    TimestepAdvice a;
+    a.tag = t;
+    a.shortest = EstimateTag(sim->contacts(), t);
+    a.steps = a.shortest.StepsPerContact(dt);
+    a.coarse = a.steps < kStepsPerContact;
+    advice.push_back(a);
+  }
+  return advice;
+}
+
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+  return fmt::format(
+      "{}: timestep {} s puts {:.3g} steps in the estimated contact duration {:.4g} s "
+      "(>= {} needed): use --timestep {:.3g} or smaller (see contactlaws check)",
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.steps,
+      advice.shortest.estimate.contact_duration, kStepsPerContact,
+      advice.shortest.estimate.timestep());
+}
+
+std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
+                              const std::vector<TimestepAdvice>& advice) {
+  std::string where = divergence.pair >= 0
+                          ? fmt::format("{}: depth {:.4g} m, depth rate {:.4g} m/s",
+                                        PairName(sim, divergence.pair), divergence.depth,
+                                        divergence.depth_rate)
+                          : std::string("no tagged pair in contact");
+  // the likely cause: the coarsest-resolved tag, or the one that diverged
+  const TimestepAdvice* cause = nullptr;
+  for (const TimestepAdvice& a : advice) {
+    const bool same_tag =
+        divergence.pair >= 0 && sim.contact_model().pairs()[divergence.pair].tag == a.tag;
+    if (same_tag || (!cause && a.coarse) || (cause && !cause->coarse && a.coarse)) cause = &a;
+    if (same_tag) break;
+  }
+  std::string likely;
+  if (cause && std::isfinite(cause->steps)) {
+    const ContactEstimate& e = cause->shortest.estimate;
+    const double limit = sim.contact_model().pairs()[cause->shortest.pair].depth_limit;
+    if (e.max_depth > limit) {
+      likely = fmt::format(
+          "likely cause: a contact too soft for the impact: the estimated elastic depth of {} "
+          "at {:.4g} m/s is {:.4g} m, beyond {:.4g} m (raise the stiffness)",
+          PairName(sim, cause->shortest.pair), e.impact_velocity, e.max_depth, limit);
+    } else {
+      likely = fmt::format(
+          "likely cause: the timestep {} s puts {:.3g} steps in the estimated contact duration "
+          "{:.4g} s of {}{}",
+          sim.model()->opt.timestep, cause->steps, e.contact_duration,
+          PairName(sim, cause->shortest.pair),
+          cause->coarse ? fmt::format(" (>= {} needed: --timestep {:.3g})", kStepsPerContact,
+                                      e.timestep())
+                        : std::string(" (enough for the estimate: check the stiffness, masses "
+                                      "and speeds against the scene)"));
+    }
+  } else {
+    likely = "likely cause: a timestep too coarse for the contact (the contact duration could "
+             "not be estimated at the start: see contactlaws check --impact-velocity)";
+  }
+  return fmt::format("t = {:.6g} s: {}: {}; {}", divergence.time, where, divergence.what,
+                     likely);
 }
 
 std::vector<std::string> ImpactColumns() {

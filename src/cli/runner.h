@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,11 +47,61 @@ struct AdvanceOptions {
   bool until_first_episode = false;
 };
 
+// How a call of Advance ended.
+struct AdvanceResult {
+  enum class Status {
+    kComplete,     // reached the duration (or the first episode's end)
+    kDiverged,     // stopped at divergence (see divergence)
+    kInterrupted,  // stopped because StopRequested()
+  };
+  Status status = Status::kComplete;
+  std::optional<Divergence> divergence;
+  // Set when the total energy of an undriven scene grew beyond
+  // kEnergyGrowthTolerance: how much, and when it was largest.
+  std::optional<std::string> energy_growth;
+};
+
 // Steps sim from its current time until options.duration (or the first
 // episode's end), calling on_row with Simulation::Sample() at every time
-// k / sample_rate on the way, t = 0 included.
-void Advance(Simulation* sim, const AdvanceOptions& options,
-             const std::function<void(const std::vector<double>&)>& on_row);
+// k / sample_rate on the way, t = 0 included. Stops at divergence (the rows
+// given so far are finite) and when a stop is requested. Checks the energy
+// ledger of undriven scenes at every row and at the end.
+AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
+                      const std::function<void(const std::vector<double>&)>& on_row);
+
+// Asks every Advance in the process to stop after its current step (safe to
+// call from a signal handler), and whether that was asked.
+void RequestStop();
+bool StopRequested();
+
+// MuJoCo's messages to mju_user_warning. The program installs
+// RecordMujocoWarning, which keeps them (thread-safe) instead of letting
+// MuJoCo print to stdout, where CSV may go. Runs report their warnings from
+// d->warning with counts and note them here; UnreportedMujocoWarnings gives
+// the others (a model's, say), each once with the times it came.
+void RecordMujocoWarning(const char* text);
+void NoteReportedMujocoWarning(const std::string& text);
+std::vector<MujocoWarning> UnreportedMujocoWarnings();
+
+// Each tag's estimated contact at the simulation's current state, and how
+// many steps of the scene's timestep resolve it.
+struct TimestepAdvice {
+  int tag = -1;
+  TagEstimate shortest;
+  double steps = 0;     // per estimated contact duration (inf: not estimated)
+  bool coarse = false;  // steps < kStepsPerContact
+};
+std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim);
+
+// "contactlaw:TAG (g1, g2): timestep H s puts S steps in the estimated
+// contact duration T s (>= 20 needed): use --timestep H' or smaller".
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+
+// "t = T s: contactlaw:TAG (g1, g2): depth D m, depth rate R m/s: WHAT;
+// likely cause: ..." for a run stopped at divergence; advice from before the
+// run names the timestep against the estimated contact duration.
+std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
+                              const std::vector<TimestepAdvice>& advice);
 
 // The impact-log CSV: its columns, and the fields of one impact.
 std::vector<std::string> ImpactColumns();

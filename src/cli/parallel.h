@@ -1,0 +1,106 @@
+// Copyright contactlaws authors.
+//
+// Independent runs on several threads, their results delivered in order on
+// the calling thread: what makes `--jobs N` write the same bytes as
+// `--jobs 1`.
+
+#ifndef CONTACTLAWS_CLI_PARALLEL_H_
+#define CONTACTLAWS_CLI_PARALLEL_H_
+
+#include <algorithm>
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace contactlaws::cli {
+
+// The number of jobs when none is asked for: the cores the machine reports.
+inline int DefaultJobs() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores > 0 ? static_cast<int>(cores) : 1;
+}
+
+// Calls work(k) for k = 0 .. count-1 on up to `jobs` threads (jobs <= 1: on
+// this thread, one after the other), and deliver(k, result) on this thread in
+// the order k = 0, 1, ... as soon as result k and every result before it are
+// ready, so that output written by deliver does not depend on jobs. Once
+// should_stop() is true, the works not yet started are skipped: skipped(k)
+// stands for their result. An exception thrown by work(k) is rethrown here
+// when k's turn to be delivered comes, after the running works have finished.
+template <typename Result>
+void RunInOrder(int count, int jobs, const std::function<Result(int)>& work,
+                const std::function<void(int, Result&)>& deliver,
+                const std::function<bool()>& should_stop,
+                const std::function<Result(int)>& skipped) {
+  if (jobs <= 1 || count <= 1) {
+    for (int k = 0; k < count; ++k) {
+      Result r = should_stop() ? skipped(k) : work(k);
+      deliver(k, r);
+    }
+    return;
+  }
+  struct Slot {
+    std::optional<Result> result;
+    std::exception_ptr error;
+    bool done = false;
+  };
+  std::vector<Slot> slots(count);
+  std::mutex mutex;
+  std::condition_variable ready;
+  int next = 0;  // the next work to start, under mutex
+
+  auto worker = [&] {
+    while (true) {
+      int k;
+      {
+        std::lock_guard lock(mutex);
+        if (next >= count) return;
+        k = next++;
+      }
+      std::optional<Result> r;
+      std::exception_ptr error;
+      try {
+        r.emplace(should_stop() ? skipped(k) : work(k));
+      } catch (...) {
+        error = std::current_exception();
+      }
+      {
+        std::lock_guard lock(mutex);
+        slots[k].result = std::move(r);
+        slots[k].error = error;
+        slots[k].done = true;
+      }
+      ready.notify_all();
+    }
+  };
+  std::vector<std::thread> threads;
+  const int n = std::min(jobs, count);
+  for (int i = 0; i < n; ++i) threads.emplace_back(worker);
+
+  std::exception_ptr failure;
+  for (int k = 0; k < count && !failure; ++k) {
+    {
+      std::unique_lock lock(mutex);
+      ready.wait(lock, [&] { return slots[k].done; });
+    }
+    try {
+      if (slots[k].error) std::rethrow_exception(slots[k].error);
+      deliver(k, *slots[k].result);
+      slots[k].result.reset();  // a delivered run's buffers are freed at once
+    } catch (...) {
+      failure = std::current_exception();
+      std::lock_guard lock(mutex);
+      next = count;  // start nothing more
+    }
+  }
+  for (std::thread& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_PARALLEL_H_
