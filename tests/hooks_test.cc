@@ -3,6 +3,10 @@
 // The hooks: untagged pairs exactly as MuJoCo, callbacks restored and
 // chained, no state shared between mjData, drives exact at any time.
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -190,6 +194,35 @@ TEST_F(HooksTest, ResetForgetsTheEpisodes) {
   const Impact again = testing::FirstImpact(sim);
   EXPECT_EQ(again.index, 1);
   EXPECT_EQ(again.restitution_post(), first.restitution_post());
+}
+
+// The unload check: a process that leaks a ContactData and exits must find
+// the callbacks it had before ours once the library's static destructors have
+// run. ELF destructor functions run after them (after every atexit handler).
+bool check_callbacks_at_exit = false;
+void SentinelPassive(const mjModel*, mjData*) {}
+
+__attribute__((destructor)) void CheckCallbacksAtExit() {
+  if (check_callbacks_at_exit) _exit(mjcb_passive == SentinelPassive ? 42 : 43);
+}
+
+TEST_F(HooksTest, CallbacksAreRestoredWhenTheLibraryIsUnloaded) {
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    mjcb_passive = SentinelPassive;
+    UniqueModel m = LoadModelString(testing::DropXml("law=hertz stiffness=1e8", 1.0), "leak.xml");
+    auto* cm = new ContactModel(m.release(), "leak.xml");
+    mjData* d = mj_makeData(cm->model());
+    new ContactData(*cm, d);  // leaked on purpose: never unregistered
+    if (mjcb_passive == SentinelPassive) _exit(44);  // ours must be installed now
+    check_callbacks_at_exit = true;
+    std::exit(0);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 42) << "43: ours still installed at exit; 44: never installed";
 }
 
 TEST_F(HooksTest, MjResetDataAloneClearsThePerContactMemory) {

@@ -90,6 +90,18 @@ void Unregister(mjData* d) {
   registry.generation.fetch_add(1, std::memory_order_acq_rel);
 }
 
+// At exit, or when a shared build of the library is unloaded, the callbacks
+// found before are given back even if ContactData objects were leaked.
+struct RestoreAtUnload {
+  ~RestoreAtUnload() {
+    Registry& registry = GetRegistry();
+    std::unique_lock lock(registry.mutex);
+    if (registry.data.empty()) return;
+    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter;
+    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive;
+  }
+} restore_at_unload;
+
 int FilterHook(const mjModel* m, mjData* d, int g1, int g2) {
   // tagged: no MuJoCo constraint, the passive hook applies the law
   if (ContactData* cd = Lookup(m, d); cd && cd->model().FindPair(g1, g2) >= 0) {
