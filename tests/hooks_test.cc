@@ -8,7 +8,9 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -223,6 +225,46 @@ TEST_F(HooksTest, CallbacksAreRestoredWhenTheLibraryIsUnloaded) {
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 42) << "43: ours still installed at exit; 44: never installed";
+}
+
+TEST_F(HooksTest, ThePassiveHookEvaluatesOnlyThePairsTheBroadphaseProposed) {
+  // six balls under one group tag: 15 ball-ball pairs and 6 ball-floor pairs.
+  // Planes are always proposed by MuJoCo's broadphase; balls only when their
+  // bounding boxes meet
+  std::string bodies;
+  for (int i = 0; i < 6; ++i) {
+    const double x = i < 5 ? i * 1.0 : 0.15;  // the sixth next to the first
+    bodies += fmt::format(R"(<body pos="{} 0 {}"><freejoint/>
+      <geom type="sphere" size="0.1" group="3" mass="1"/></body>)",
+                          x, i < 5 ? 0.5 : 0.7);
+  }
+  UniqueModel m = Load(fmt::format(R"(<mujoco>
+  <option gravity="0 0 0"/>
+  <worldbody><geom name="floor" type="plane" size="5 5 0.1" group="2"/>{}</worldbody>
+  <custom>
+    <text name="contactlaw:balls" data="geom1=group:3 geom2=group:3 law=hertz stiffness=1e7"/>
+    <text name="contactlaw:floor" data="geom1=group:3 geom2=group:2 law=hertz stiffness=1e7"/>
+  </custom>
+</mujoco>)", bodies));
+  ContactModel cm(m.get(), "balls");
+  ASSERT_EQ(cm.pairs().size(), 21u);
+  mjData* d = MakeData(m.get());
+  ContactData contacts(cm, d);
+  mj_forward(m.get(), d);
+  // the 6 floor pairs and the one pair of neighbours
+  std::vector<int> expected;
+  for (int p = 0; p < 21; ++p) {
+    const GeomPair& pair = cm.pairs()[p];
+    const bool floor = m->geom_type[pair.geom[0]] == mjGEOM_PLANE;
+    const bool neighbours = std::set<int>{pair.body[0], pair.body[1]} == std::set<int>{1, 6};
+    if (floor || neighbours) expected.push_back(p);
+  }
+  ASSERT_EQ(expected.size(), 7u);
+  EXPECT_EQ(contacts.proposed_pairs(), expected);
+  // apart, the neighbours are no longer proposed
+  d->qpos[7 * 5 + 0] = 10.0;
+  mj_forward(m.get(), d);
+  EXPECT_EQ(contacts.proposed_pairs().size(), 6u);
 }
 
 TEST_F(HooksTest, MjResetDataAloneClearsThePerContactMemory) {

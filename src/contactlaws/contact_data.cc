@@ -104,9 +104,7 @@ struct RestoreAtUnload {
 
 int FilterHook(const mjModel* m, mjData* d, int g1, int g2) {
   // tagged: no MuJoCo constraint, the passive hook applies the law
-  if (ContactData* cd = Lookup(m, d); cd && cd->model().FindPair(g1, g2) >= 0) {
-    return 1;
-  }
+  if (ContactData* cd = Lookup(m, d); cd && cd->ClaimPair(g1, g2)) return 1;
   mjfConFilt previous = GetRegistry().previous_filter;
   return previous ? previous(m, d, g1, g2) : DefaultContactFilter(m, g1, g2);
 }
@@ -151,6 +149,8 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
   latest_.reserve(points);
   captured_.reserve(points);
   slot_impact_.assign(model.slot_count(), -1);
+  proposed_.reserve(model.pairs().size());
+  is_proposed_.assign(model.pairs().size(), 0);
   tag_count_.assign(model.tags().size(), 0);
   previous_qvel_.assign(m_->nv, 0.0);
   current_qvel_.assign(m_->nv, 0.0);
@@ -298,13 +298,38 @@ void ContactData::ApplyDrives() {
   }
 }
 
+bool ContactData::ClaimPair(int g1, int g2) {
+  // the first filter call after the passive hook used the list starts the
+  // next collision pass's
+  if (proposals_consumed_) {
+    for (const int p : proposed_) is_proposed_[p] = 0;
+    proposed_.clear();
+    proposals_consumed_ = false;
+  }
+  const int p = model_.FindPair(g1, g2);
+  if (p < 0) return false;
+  if (!is_proposed_[p]) {
+    is_proposed_[p] = 1;
+    proposals_sorted_ = proposals_sorted_ && (proposed_.empty() || proposed_.back() < p);
+    proposed_.push_back(p);
+  }
+  return true;
+}
+
 void ContactData::ApplyForces() {
   latest_.clear();
   latest_time_ = d_->time;
   ApplyDrives();
 
+  // the tagged pairs the broadphase proposed, in pair order (so that sums do
+  // not depend on the broadphase's order)
+  if (!proposals_sorted_) {
+    std::sort(proposed_.begin(), proposed_.end());
+    proposals_sorted_ = true;
+  }
+  proposals_consumed_ = true;
   const std::vector<GeomPair>& pairs = model_.pairs();
-  for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
+  for (const int p : proposed_) {
     const GeomPair& pair = pairs[p];
     const int g0 = pair.geom[0];
     const int g1 = pair.geom[1];

@@ -6,10 +6,13 @@
 // first ContactData, the callbacks found before restored when the last one is
 // destroyed):
 //   mjcb_contactfilter  discards the tagged geom pairs of this data's model
-//                       (MuJoCo makes no constraint for them) and applies
-//                       MuJoCo's own rule, or the callback found before, to
-//                       every other pair;
-//   mjcb_passive        runs MuJoCo's narrowphase on each tagged pair, evaluates
+//                       (MuJoCo makes no constraint for them), records them
+//                       as proposed by the broadphase, and applies MuJoCo's
+//                       own rule, or the callback found before, to every
+//                       other pair;
+//   mjcb_passive        runs MuJoCo's narrowphase on each tagged pair the
+//                       broadphase proposed (so the cost grows with the pairs
+//                       near each other, not with all tagged pairs), evaluates
 //                       the pair's law at each contact point and adds the force
 //                       to qfrc_passive (after the callback found before).
 // An mjData with no ContactData is left entirely to MuJoCo.
@@ -119,13 +122,24 @@ class ContactData {
   // Every contact episode so far, in order of first touch.
   const std::vector<Impact>& impacts() const { return impacts_; }
 
+  // The tagged pairs the last collision pass proposed (what ApplyForces
+  // evaluates), in pair order.
+  const std::vector<int>& proposed_pairs() const { return proposed_; }
+
   // The latest hook evaluation (call mj_forward first for the current state).
   TagReading Reading(int tag) const;
   double ElasticEnergy() const;   // J, latest evaluation
   // J, integrated (trapezoid) over committed steps, up to the latest evaluation
   double DissipatedEnergy() const;
 
-  // Called by the passive hook: adds the laws' forces to d->qfrc_passive.
+  // Called by the contact filter hook for each pair the broadphase proposes:
+  // true, and recorded for ApplyForces, when the pair is tagged. O(1); no
+  // allocation.
+  bool ClaimPair(int g1, int g2);
+
+  // Called by the passive hook: adds the laws' forces to d->qfrc_passive for
+  // the tagged pairs the last collision pass proposed (the same pairs again
+  // when the pass was skipped, e.g. mj_forwardSkip past positions).
   void ApplyForces();
 
   // World-frame velocity of a point fixed to body (driven bodies: their
@@ -180,6 +194,11 @@ class ContactData {
   };
 
   std::vector<mjContact> contacts_;   // narrowphase output, mjMAXCONPAIR
+  // tagged pairs proposed by the broadphase (ClaimPair), for ApplyForces
+  std::vector<int> proposed_;
+  std::vector<uint8_t> is_proposed_;  // per pair
+  bool proposals_sorted_ = true;
+  bool proposals_consumed_ = true;  // ApplyForces used the list
   std::vector<Evaluation> latest_;    // the hook's last evaluation
   double latest_time_ = 0;
   std::vector<Evaluation> captured_;  // the evaluation at the step's start

@@ -319,6 +319,21 @@ void ContactModel::ReadTags(const Overrides& overrides) {
     tags_.push_back(std::move(tag));
   }
 
+  // the filter hook, through which the broadphase's proposals come, is never
+  // called without collision detection or for dynamic pairs
+  if (!tags_.empty() && (m->opt.disableflags & mjDSBL_CONTACT)) {
+    throw Error(fmt::format(
+        "{}: <flag contact=\"disable\"/> turns off collision detection, so the contact "
+        "laws of {} tag(s) would never act: remove the flag",
+        source_, tags_.size()));
+  }
+  if (!tags_.empty() && m->opt.collision == mjCOL_PAIR) {
+    throw Error(fmt::format(
+        "{}: <option collision=\"predefined\"/> checks only <contact><pair>, which the "
+        "tags cannot use, so the contact laws of {} tag(s) would never act: use "
+        "collision=\"all\" or \"dynamic\"",
+        source_, tags_.size()));
+  }
   // MuJoCo would return from mj_passive before calling our hook
   if (!tags_.empty() && (m->opt.disableflags & mjDSBL_PASSIVE)) {
     throw Error(fmt::format(
