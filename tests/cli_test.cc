@@ -63,6 +63,12 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
       {"run " + kBall + " --duration 0", "contactlaws: --duration=0 must be a number > 0 (s)"},
       {"run " + kBall + " --timestep -1e-5", "contactlaws: --timestep=-1e-05 must be a number > 0"},
       {"run " + kBall + " --duration abc", "contactlaws: "},
+      {"run " + kBall + " --timestep fast", "contactlaws: --timestep=fast must be a number > 0 (s) or auto"},
+      {"run " + kBall + " --max-timestep 1e-3",
+       "contactlaws: --max-timestep=0.001 goes with --timestep auto"},
+      {"compare " + kBall + " --timestep auto --max-timestep 0",
+       "contactlaws: --max-timestep=0 must be a number > 0 (s)"},
+      {"compare " + kBall + " --jobs 0", "contactlaws: --jobs=0 must be a whole number >= 1"},
       {"run " + kBall + " --integrator rk5", "contactlaws: --integrator=rk5 must be euler, rk4 or implicit"},
       {"run " + kBall + " --frobnicate", "contactlaws: "},
       {"run /nonexistent.xml", "contactlaws: /nonexistent.xml: "},
@@ -237,6 +243,20 @@ TEST(CliTest, CheckPrintsTheEstimateAndTheTimestepItNeeds) {
       << r.output;
   EXPECT_NE(r.output.find("warning: 1 tag(s) need a smaller timestep"), std::string::npos)
       << r.output;
+}
+
+TEST(CliTest, AutoTimestepKeepsTheSampleGrid) {
+  const std::string csv = ::testing::TempDir() + "/auto.csv";
+  const Result r = RunCli("run " + kBall + " --timestep auto --duration 0.6 --sample-rate 250 " +
+                          "--output " + csv);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("ball-floor"), std::string::npos) << r.output;
+  const std::vector<std::string> rows = Lines(ReadFile(csv));
+  ASSERT_EQ(rows.size(), 1u + 151u);  // 0 to 0.6 s at 250 rows/s
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const double t = std::stod(rows[i].substr(0, rows[i].find(',')));
+    EXPECT_DOUBLE_EQ(t, (i - 1) / 250.0) << rows[i];
+  }
 }
 
 TEST(CliTest, TrajectoryToStandardOutput) {

@@ -80,10 +80,11 @@ void Warn(const std::string& scene, const std::string& what) {
 // Before any run: every run's tags are validated (bad input costs nothing),
 // and a timestep too coarse for a tag's estimated contact is named once.
 void Prepare(const Scene& scene, const SimulationOptions& options,
-             const std::vector<RunSpec>& specs) {
+             const std::vector<RunSpec>& specs, bool auto_timestep) {
   std::set<std::string> warned;
   for (const RunSpec& spec : specs) {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    if (auto_timestep) continue;  // the steps will resolve the contacts
     for (const TimestepAdvice& advice : AdviseTimestep(sim.get())) {
       if (!advice.coarse) continue;
       const std::string text = CoarseTimestepWarning(*sim, advice);
@@ -264,6 +265,7 @@ std::string CreateDirectory(const std::string& dir) {
 
 int RunCommand(const RunArgs& args) {
   SimulationOptions options = ParseCommon(args);
+  const std::optional<AutoTimestepOptions> auto_timestep = ParseAutoTimestep(args);
   if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
   if (args.restitution) {
     options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
@@ -279,10 +281,11 @@ int RunCommand(const RunArgs& args) {
 
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
   for (const TimestepAdvice& a : advice) {
-    if (a.coarse) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+    if (a.coarse && !auto_timestep) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
   }
   if (trajectory) trajectory->Header(sim->Columns());
-  const AdvanceOptions advance{args.duration, trajectory ? args.sample_rate : 0.0, false};
+  const AdvanceOptions advance{args.duration, trajectory ? args.sample_rate : 0.0, false,
+                               auto_timestep};
   const AdvanceResult result =
       Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
   if (result.status == AdvanceResult::Status::kInterrupted) {
@@ -314,6 +317,7 @@ int RunCommand(const RunArgs& args) {
 
 int CompareCommand(const SweepArgs& args) {
   const SimulationOptions options = ParseCommon(args);
+  const std::optional<AutoTimestepOptions> auto_timestep = ParseAutoTimestep(args);
   const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
   const int jobs = Jobs(args.jobs);
   std::vector<double> restitutions;
@@ -331,7 +335,7 @@ int CompareCommand(const SweepArgs& args) {
     }
   }
   const Scene scene(args.scene);
-  Prepare(scene, options, specs);
+  Prepare(scene, options, specs, auto_timestep.has_value());
 
   CreateDirectory(args.output_dir);
   CsvFile trajectories(args.output_dir + "/trajectories.csv");
@@ -357,7 +361,8 @@ int CompareCommand(const SweepArgs& args) {
   };
   std::vector<Row> rows;
   const int status = Sweep(
-      scene, options, specs, {args.duration, args.sample_rate, false}, true, jobs, args.quiet,
+      scene, options, specs, {args.duration, args.sample_rate, false, auto_timestep}, true, jobs,
+      args.quiet,
       [&](int k, RunOutput& out) {
         const RunSpec& spec = specs[k];
         const std::string law(LawName(spec.law));
@@ -408,6 +413,7 @@ int CompareCommand(const SweepArgs& args) {
 
 int RestitutionCommand(const SweepArgs& args) {
   const SimulationOptions options = ParseCommon(args);
+  const std::optional<AutoTimestepOptions> auto_timestep = ParseAutoTimestep(args);
   const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
   const int jobs = Jobs(args.jobs);
   const std::vector<double> restitutions =
@@ -417,7 +423,7 @@ int RestitutionCommand(const SweepArgs& args) {
     for (double e : restitutions) specs.push_back({law, e});
   }
   const Scene scene(args.scene);
-  Prepare(scene, options, specs);
+  Prepare(scene, options, specs, auto_timestep.has_value());
 
   CsvFile out(args.output);
   out.Header({"law", "restitution", "restitution_post", "impact_velocity", "max_depth",
@@ -429,7 +435,7 @@ int RestitutionCommand(const SweepArgs& args) {
   std::vector<Row> rows;
   int incomplete = 0;
   int status = Sweep(
-      scene, options, specs, {args.duration, 0.0, true}, false, jobs, args.quiet,
+      scene, options, specs, {args.duration, 0.0, true, auto_timestep}, false, jobs, args.quiet,
       [&](int k, RunOutput& run) {
         const RunSpec& spec = specs[k];
         const std::optional<Impact>& first = run.first;

@@ -28,7 +28,12 @@ constexpr char kLawHelp[] =
 void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
   cmd->add_option("--duration", args->duration, "simulated time, s")->capture_default_str();
-  cmd->add_option("--timestep", args->timestep, "s (default: the scene's)");
+  cmd->add_option("--timestep", args->timestep,
+                  "s (default: the scene's), or auto: long steps while the tagged pairs are "
+                  "apart, steps that resolve the contact near and in it (README)");
+  cmd->add_option("--max-timestep", args->max_timestep,
+                  "s, with --timestep auto: the step while every tagged pair is far apart "
+                  "(default 0.001)");
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
   if (sampling) {

@@ -64,11 +64,31 @@ SimulationOptions ParseCommon(const CommonArgs& args) {
   RequirePositive("--duration", args.duration, "s");
   RequirePositive("--sample-rate", args.sample_rate, "rows per simulated second");
   SimulationOptions options;
-  if (args.timestep) {
-    RequirePositive("--timestep", *args.timestep, "s");
-    options.timestep = args.timestep;
+  if (args.timestep && *args.timestep != "auto") {
+    const std::string& text = *args.timestep;
+    char* end = nullptr;
+    const double value = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size()) {
+      Refuse("--timestep", text, "must be a number > 0 (s) or auto");
+    }
+    RequirePositive("--timestep", value, "s");
+    options.timestep = value;
+  }
+  if (args.max_timestep) {
+    if (!args.timestep || *args.timestep != "auto") {
+      Refuse("--max-timestep", fmt::format("{}", *args.max_timestep),
+             "goes with --timestep auto");
+    }
+    RequirePositive("--max-timestep", *args.max_timestep, "s");
   }
   if (args.integrator) options.integrator = ParseIntegrator(*args.integrator);
+  return options;
+}
+
+std::optional<AutoTimestepOptions> ParseAutoTimestep(const CommonArgs& args) {
+  if (!args.timestep || *args.timestep != "auto") return std::nullopt;
+  AutoTimestepOptions options;
+  if (args.max_timestep) options.max_step = *args.max_timestep;
   return options;
 }
 

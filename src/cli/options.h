@@ -19,7 +19,8 @@ namespace contactlaws::cli {
 struct CommonArgs {
   std::string scene;
   double duration = 2.0;
-  std::optional<double> timestep;
+  std::optional<std::string> timestep;  // a number, or "auto"
+  std::optional<double> max_timestep;   // with auto
   std::optional<std::string> integrator;
   double sample_rate = 1000.0;
 };
@@ -32,8 +33,12 @@ struct CommonArgs {
 void RequirePositive(std::string_view option, double value, std::string_view unit);
 
 // Validates duration and sample rate; returns timestep and integrator as
-// SimulationOptions (overrides left empty).
+// SimulationOptions (overrides left empty; no timestep for auto).
 SimulationOptions ParseCommon(const CommonArgs& args);
+
+// The auto timestep's options for --timestep auto (and --max-timestep);
+// nullopt for a fixed timestep.
+std::optional<AutoTimestepOptions> ParseAutoTimestep(const CommonArgs& args);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
 int ParseIntegrator(std::string_view name);

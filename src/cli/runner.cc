@@ -128,7 +128,11 @@ double ReportedRestitution(LawKind law, double restitution) {
 
 AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
                       const std::function<void(const std::vector<double>&)>& on_row) {
-  const double dt = sim->model()->opt.timestep;
+  std::optional<AutoTimestep> stepper;
+  if (options.auto_timestep) stepper.emplace(sim->contacts(), *options.auto_timestep);
+  // times closer than this are the same grid time: half a fixed step, or a
+  // nanosecond with auto steps (which land on the grid)
+  const double tolerance = stepper ? 1e-9 : 0.5 * sim->model()->opt.timestep;
   const bool sampling = options.sample_rate > 0 && on_row;
   const double period = sampling ? 1.0 / options.sample_rate : 0.0;
   std::vector<double> row;
@@ -136,14 +140,14 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   AdvanceResult result;
 
   // sample at the first step that reaches each grid time k * period (within
-  // half a step, so that rounding of the time does not skip or repeat a row)
+  // the tolerance, so that rounding of the time does not skip or repeat a row)
   long next = 0;
   auto sample_if_due = [&] {
-    if (!sampling || sim->time() < next * period - 0.5 * dt) return;
+    if (!sampling || sim->time() < next * period - tolerance) return;
     sim->Sample(&row);
     energy.Observe(*sim);
     on_row(row);
-    while (next * period - 0.5 * dt <= sim->time()) ++next;
+    while (next * period - tolerance <= sim->time()) ++next;
   };
   auto first_episode_over = [&] {
     for (const Impact& impact : sim->contacts().impacts()) {
@@ -157,12 +161,18 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     energy.Observe(*sim);
   }
   sample_if_due();
-  while (sim->time() < options.duration - 0.5 * dt) {
+  while (sim->time() < options.duration - tolerance) {
     if (StopRequested()) {
       result.status = AdvanceResult::Status::kInterrupted;
       break;
     }
-    sim->Step();
+    if (stepper) {
+      double until = options.duration - sim->time();
+      if (sampling) until = std::min(until, next * period - sim->time());
+      sim->Step(stepper->Next(until));
+    } else {
+      sim->Step();
+    }
     if (const std::optional<Divergence>& divergence = sim->contacts().divergence()) {
       result.status = AdvanceResult::Status::kDiverged;
       result.divergence = divergence;
@@ -170,6 +180,10 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     }
     sample_if_due();
     if (options.until_first_episode && first_episode_over()) break;
+  }
+  if (stepper) {
+    result.steps = stepper->steps();
+    result.fine_steps = stepper->fine_steps();
   }
   mj_forward(sim->model(), sim->data());
   energy.Observe(*sim);

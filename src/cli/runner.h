@@ -45,6 +45,9 @@ struct AdvanceOptions {
   double sample_rate = 0.0;  // rows per simulated second; 0: no rows
   // Stop as soon as the first contact episode of the scene's first tag ends.
   bool until_first_episode = false;
+  // Step with AutoTimestep instead of the model's fixed timestep; rows stay
+  // on the sample grid (steps are cut at sample times).
+  std::optional<AutoTimestepOptions> auto_timestep;
 };
 
 // How a call of Advance ended.
@@ -59,6 +62,9 @@ struct AdvanceResult {
   // Set when the total energy of an undriven scene grew beyond
   // kEnergyGrowthTolerance: how much, and when it was largest.
   std::optional<std::string> energy_growth;
+  // With the auto timestep: the steps taken, and those at a contact's fine step.
+  long steps = 0;
+  long fine_steps = 0;
 };
 
 // Steps sim from its current time until options.duration (or the first

@@ -369,6 +369,10 @@ void ContactData::ApplyForces() {
                                               previous_time_)
                                : e.depth_rate;
         state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);
+        // the law at the touch itself (d = 0+, d' = v0)
+        const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity,
+                                 state.impact_velocity, state.effective_mass};
+        e.touch_power = EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
       } else {
         state.impact_velocity =
             std::max(impacts_[open].impact_velocity, pair.params.min_impact_velocity);
@@ -471,10 +475,8 @@ void ContactData::AfterStep() {
 
   // energy dissipated since the last commit (trapezoid)
   const double power = Power(captured_);
-  if (has_committed_) dissipated_ += 0.5 * (power + committed_power_) * (t - committed_time_);
-  has_committed_ = true;
-  committed_time_ = t;
-  committed_power_ = power;
+  const double previous_time = committed_time_;
+  if (has_committed_) dissipated_ += 0.5 * (power + committed_power_) * (t - previous_time);
 
   // open new episodes, advance the open ones
   for (const Evaluation& e : captured_) {
@@ -488,6 +490,15 @@ void ContactData::AfterStep() {
       // the depth was reached at the mean of the touch and current rates
       const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
       impact.time_contact = mean_rate > 0 ? t - e.depth / mean_rate : t;
+      // a new point's power acted from its touch, where a law whose force
+      // jumps at d = 0+ (Kelvin-Voigt) already dissipates: its trapezoid
+      // spans [touch, t] with the touch's power, not [previous commit, t]
+      // from zero
+      if (has_committed_) {
+        const double touch = std::clamp(impact.time_contact, previous_time, t);
+        dissipated_ += 0.5 * (e.touch_power + e.dissipated_power) * (t - touch) -
+                       0.5 * e.dissipated_power * (t - previous_time);
+      }
       index = static_cast<int>(impacts_.size());
       impacts_.push_back(impact);
       tracks_.push_back(Track{e.slot});
@@ -504,6 +515,10 @@ void ContactData::AfterStep() {
     mju_copy3(track.last_pos, e.pos);
     mju_copy3(track.last_normal, e.normal);
   }
+
+  has_committed_ = true;
+  committed_time_ = t;
+  committed_power_ = power;
 
   // close the episodes whose point is out of contact
   for (size_t k = 0; k < open_.size();) {

@@ -122,6 +122,25 @@ class ContactData {
   // Every contact episode so far, in order of first touch.
   const std::vector<Impact>& impacts() const { return impacts_; }
 
+  // One contact point as the hook last saw it.
+  struct Evaluation {
+    int pair = -1;
+    int slot = -1;     // absolute slot index (pair.first_slot + point)
+    double depth = 0;
+    double depth_rate = 0;
+    double impact_velocity = 0;  // the law's v0 (floored)
+    double touch_velocity = 0;   // new points: d' at the step before first touch
+    double touch_power = 0;      // new points: the law's dissipated power at touch, W
+    double force = 0;
+    double elastic_energy = 0;
+    double dissipated_power = 0;
+    mjtNum pos[3] = {0, 0, 0};     // contact point, world frame
+    mjtNum normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
+  };
+
+  // The contact points of the latest hook evaluation (depth > 0).
+  const std::vector<Evaluation>& latest() const { return latest_; }
+
   // The tagged pairs the last collision pass proposed (what ApplyForces
   // evaluates), in pair order.
   const std::vector<int>& proposed_pairs() const { return proposed_; }
@@ -147,20 +166,6 @@ class ContactData {
   void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const;
 
  private:
-  // One contact point as the hook saw it.
-  struct Evaluation {
-    int pair = -1;
-    int slot = -1;     // absolute slot index (pair.first_slot + point)
-    double depth = 0;
-    double depth_rate = 0;
-    double impact_velocity = 0;  // the law's v0 (floored)
-    double touch_velocity = 0;   // new points: d' at the step before first touch
-    double force = 0;
-    double elastic_energy = 0;
-    double dissipated_power = 0;
-    mjtNum pos[3] = {0, 0, 0};     // contact point, world frame
-    mjtNum normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
-  };
 
   // jn = (J1 - J0)^T n at point (nv entries): the normal relative velocity
   // of pair's bodies per dof.

@@ -5,6 +5,7 @@
 #ifndef CONTACTLAWS_CONTACTLAWS_H_
 #define CONTACTLAWS_CONTACTLAWS_H_
 
+#include "contactlaws/auto_timestep.h"
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/error.h"

@@ -28,11 +28,7 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   const GeomPair& pair = cm.pairs()[pair_index];
   ContactEstimate e;
 
-  double inverse_mass = 0;
-  for (int body : pair.body) {
-    if (!Immovable(cm, body)) inverse_mass += 1.0 / m->body_subtreemass[m->body_rootid[body]];
-  }
-  e.effective_mass = inverse_mass > 0 ? 1.0 / inverse_mass : kInfinity;
+  e.effective_mass = PairEffectiveMass(cm, pair_index);
 
   // the nearest points, by MuJoCo's narrowphase with a margin that reaches
   // them: the centre distance plus both bounding radii
@@ -85,14 +81,28 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   if (std::isinf(e.effective_mass) || !(v > 0 || law.kind == LawKind::kKelvinVoigt)) {
     e.max_depth = e.contact_duration = kInfinity;
   } else if (law.kind == LawKind::kKelvinVoigt) {
-    const double omega = std::sqrt(law.linear_stiffness / e.effective_mass);
-    e.max_depth = v / omega;
-    e.contact_duration = M_PI / omega;
+    e.max_depth = v * std::sqrt(e.effective_mass / law.linear_stiffness);
+    e.contact_duration = ElasticContactDuration(law, e.effective_mass, v);
   } else {
     e.max_depth = HertzMaxDepth(law.stiffness, law.exponent, e.effective_mass, v);
-    e.contact_duration = HertzContactDuration(law.stiffness, law.exponent, e.effective_mass, v);
+    e.contact_duration = ElasticContactDuration(law, e.effective_mass, v);
   }
   return e;
+}
+
+double PairEffectiveMass(const ContactModel& cm, int pair_index) {
+  const mjModel* m = cm.model();
+  double inverse_mass = 0;
+  for (int body : cm.pairs()[pair_index].body) {
+    if (!Immovable(cm, body)) inverse_mass += 1.0 / m->body_subtreemass[m->body_rootid[body]];
+  }
+  return inverse_mass > 0 ? 1.0 / inverse_mass : kInfinity;
+}
+
+double ElasticContactDuration(const LawParams& law, double mass, double speed) {
+  if (std::isinf(mass)) return kInfinity;
+  if (law.kind == LawKind::kKelvinVoigt) return M_PI * std::sqrt(mass / law.linear_stiffness);
+  return HertzContactDuration(law.stiffness, law.exponent, mass, speed);
 }
 
 TagEstimate EstimateTag(const ContactData& contacts, int tag,

@@ -56,6 +56,11 @@ class Simulation {
 
   // One step with the laws active.
   void Step() { contacts_->Step(); }
+  // One step of the given length, s (> 0): it becomes the model's timestep.
+  void Step(double timestep) {
+    model_->opt.timestep = timestep;
+    contacts_->Step();
+  }
 
   // Back to the initial state (keyframe 0 or the model's qpos0).
   void Reset();

@@ -1,0 +1,167 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/auto_timestep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "contactlaws/estimate.h"
+
+namespace contactlaws {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The time in which a gap g (m, > 0) closes at speed v and acceleration a
+// (both closing when > 0); infinite when it never does.
+double TimeToClose(double g, double v, double a) {
+  if (a > 0) return (-v + std::sqrt(v * v + 2 * a * g)) / a;
+  if (v > 0) return g / v;
+  return kInfinity;
+}
+
+bool Immovable(const ContactModel& cm, int body) {
+  return cm.model()->body_weldid[body] == 0 || cm.FindDrive(body) != nullptr;
+}
+
+}  // namespace
+
+AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
+    : contacts_(contacts), options_(options) {
+  if (!(options.max_step > 0) || !(options.steps_per_contact > 0) ||
+      !(options.kelvin_voigt_steps_per_contact > 0) || !(options.gap_fraction > 0) ||
+      !(options.gap_fraction < 1) || !(options.growth >= 1)) {
+    throw Error(fmt::format(
+        "AutoTimestepOptions: max_step {} and steps_per_contact {} must be > 0, gap_fraction {} "
+        "in (0, 1), growth {} >= 1",
+        options.max_step, options.steps_per_contact, options.gap_fraction, options.growth));
+  }
+  const ContactModel& cm = contacts.model();
+  for (int p = 0; p < static_cast<int>(cm.pairs().size()); ++p) {
+    const GeomPair& pair = cm.pairs()[p];
+    const double mass = PairEffectiveMass(cm, p);
+    effective_mass_.push_back(mass);
+    // t_c is proportional to v^((1 - n) / (1 + n)) (Hertz family; KV: v^0)
+    const double n = pair.params.kind == LawKind::kKelvinVoigt ? 1.0 : pair.params.exponent;
+    duration_at_unit_speed_.push_back(ElasticContactDuration(pair.params, mass, 1.0));
+    duration_speed_exponent_.push_back((1 - n) / (1 + n));
+    double accel = 0;
+    for (int body : pair.body) {
+      if (const Drive* drive = cm.FindDrive(body)) {
+        accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
+      }
+    }
+    top_acceleration_.push_back(accel);
+  }
+}
+
+double AutoTimestep::FineStep(int pair, double v) const {
+  const LawParams& law = contacts_.model().pairs()[pair].params;
+  const double speed = std::max(v, law.min_impact_velocity);
+  const double duration =
+      duration_at_unit_speed_[pair] * std::pow(speed, duration_speed_exponent_[pair]);
+  const double steps = law.kind == LawKind::kKelvinVoigt
+                           ? options_.kelvin_voigt_steps_per_contact
+                           : options_.steps_per_contact;
+  return duration / steps;
+}
+
+double AutoTimestep::Next(double until) {
+  const ContactModel& cm = contacts_.model();
+  const mjModel* m = cm.model();
+  mjData* d = contacts_.data();
+  const int npair = static_cast<int>(cm.pairs().size());
+  double step = options_.max_step;
+  bool fine = false;
+
+  // pairs in contact at the last evaluation: their fine step
+  int in_contact = 0;
+  for (const ContactData::Evaluation& e : contacts_.latest()) {
+    step = std::min(step, FineStep(e.pair, e.impact_velocity));
+    fine = true;
+    ++in_contact;
+  }
+
+  // pairs apart (all of them, unless the contacts cover every pair): the
+  // time to close a fraction of their gap, from the current state
+  if (in_contact < npair) {
+    mj_kinematics(m, d);
+    mj_comPos(m, d);
+    mj_comVel(m, d);
+    for (int p = 0; p < npair; ++p) {
+      const GeomPair& pair = cm.pairs()[p];
+      const int g[2] = {pair.geom[0], pair.geom[1]};
+      const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
+      mjtNum normal[3];  // from geom[0] towards geom[1]
+      double gap;
+      double spin = 0;  // what rotation adds to the closing speed
+      if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
+        const mjtNum* mat = d->geom_xmat + 9 * g[0];
+        normal[0] = mat[2];
+        normal[1] = mat[5];
+        normal[2] = mat[8];
+        mjtNum offset[3];
+        mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
+        gap = mju_dot3(offset, normal) - rb[1];
+        spin = mju_norm3(d->cvel + 6 * pair.body[1]) * rb[1];
+      } else if (rb[0] > 0 && rb[1] > 0) {
+        mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
+        const double distance = mju_normalize3(normal);
+        gap = distance - rb[0] - rb[1];
+        for (int b = 0; b < 2; ++b) {
+          if (!cm.FindDrive(pair.body[b])) spin += mju_norm3(d->cvel + 6 * pair.body[b]) * rb[b];
+        }
+      } else {
+        // no bounding sphere (planes, height fields): always near
+        step = std::min(step, FineStep(p, 0.0));
+        fine = true;
+        continue;
+      }
+      mjtNum v[2][3], relative[3];
+      for (int b = 0; b < 2; ++b) contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
+      mju_sub3(relative, v[0], v[1]);
+      const double closing = mju_dot3(relative, normal) + spin;
+      double accel = top_acceleration_[p];
+      const bool movable[2] = {!Immovable(cm, pair.body[0]), !Immovable(cm, pair.body[1])};
+      if (movable[0] != movable[1]) {
+        accel += (movable[0] ? 1 : -1) * mju_dot3(m->opt.gravity, normal);
+      }
+      const double impact_speed =
+          std::sqrt(std::max(closing, 0.0) * std::max(closing, 0.0) +
+                    2 * std::max(accel, 0.0) * std::max(gap, 0.0));
+      const double pair_fine = FineStep(p, impact_speed);
+      const double allowed =
+          gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
+      if (allowed > pair_fine) {
+        step = std::min(step, allowed);
+        continue;
+      }
+      // near: fine steps, and the one that reaches the touch ends there, so
+      // that a force that jumps at d = 0+ acts from the start of a step
+      // (a touch within a step would act for a fraction of it: an error of
+      // the first order in the step). A touch within a hundredth of a fine
+      // step is left to that step: it would not advance the time.
+      fine = true;
+      const double touch = gap > 0 ? TimeToClose(gap, closing, accel) : 0.0;
+      step = std::min(step, touch > 0.01 * pair_fine && touch < pair_fine ? touch : pair_fine);
+    }
+  }
+
+  if (previous_ > 0) step = std::min(step, options_.growth * previous_);
+  previous_ = step;  // a cut at `until` does not slow the growth after it
+  step = std::min(step, until);
+  ++steps_;
+  fine_steps_ += fine;
+  return step;
+}
+
+void AutoTimestep::Step(mjModel* m, ContactData* contacts, double until) {
+  m->opt.timestep = Next(until);
+  contacts->Step();
+}
+
+}  // namespace contactlaws
