@@ -215,7 +215,10 @@ void BM_SweepFixed(benchmark::State& state, const Stretches& s) {
         options.overrides.law = law;
         options.overrides.restitution = e;
         std::unique_ptr<Simulation> sim = scene.Make(options);
-        cli::Advance(sim.get(), {2.0, 0.0, true}, nullptr);
+        cli::AdvanceOptions advance;
+        advance.duration = 2.0;  // s: the first contact ends at ~0.45 s
+        advance.until_first_episode = true;
+        cli::Advance(sim.get(), advance, nullptr);
         const std::vector<Impact>& impacts = sim->contacts().impacts();
         if (impacts.empty() || impacts[0].open) {
           state.SkipWithError("a first contact did not end within 2 s");
