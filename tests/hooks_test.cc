@@ -267,6 +267,20 @@ TEST_F(HooksTest, ThePassiveHookEvaluatesOnlyThePairsTheBroadphaseProposed) {
   EXPECT_EQ(contacts.proposed_pairs().size(), 6u);
 }
 
+TEST_F(HooksTest, PlainMjStepIsWarnedAboutOnce) {
+  UniqueModel m = Load(testing::DropXml("law=hertz stiffness=1e8", 1.0, "RK4"));
+  ContactModel cm(m.get(), "drop");
+  mjData* d = MakeData(m.get());
+  ContactData contacts(cm, d);
+  // the library's own loop, and mj_forward at one time, are not warned about
+  for (int i = 0; i < 100; ++i) contacts.Step();
+  for (int i = 0; i < 100; ++i) mj_forward(m.get(), d);
+  EXPECT_EQ(CountMujocoWarnings(""), 0u);
+  // plain mj_step is, once
+  for (int i = 0; i < 100; ++i) mj_step(m.get(), d);
+  EXPECT_EQ(ExpectMujocoWarning("stepped without ContactData::BeforeStep/AfterStep"), 1u);
+}
+
 TEST_F(HooksTest, MjResetDataAloneClearsThePerContactMemory) {
   // a user's loop that resets with MuJoCo's own call and never calls Reset()
   UniqueModel m = Load(testing::DropXml("law=flores restitution=0.5 stiffness=1.4e8", 3.0));

@@ -44,13 +44,20 @@ class MujocoTest : public ::testing::Test {
   }
 
   // Takes back the MuJoCo warnings containing text, which the test caused on
-  // purpose; fails when there is none.
-  void ExpectMujocoWarning(std::string_view text) {
+  // purpose; fails when there is none. Returns how many there were.
+  size_t ExpectMujocoWarning(std::string_view text) {
     std::vector<std::string>& w = Warnings();
     const auto matches = [&](const std::string& m) { return m.find(text) != std::string::npos; };
     const size_t before = w.size();
     w.erase(std::remove_if(w.begin(), w.end(), matches), w.end());
     EXPECT_LT(w.size(), before) << "no MuJoCo warning with: " << text;
+    return before - w.size();
+  }
+
+  // The MuJoCo warnings so far that contain text.
+  size_t CountMujocoWarnings(std::string_view text) {
+    return std::count_if(Warnings().begin(), Warnings().end(),
+                         [&](const std::string& m) { return m.find(text) != std::string::npos; });
   }
 
   // A model from inline XML, named after the test in messages.

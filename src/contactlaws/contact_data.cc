@@ -196,6 +196,7 @@ void ContactData::BeforeStep() {
   current_time_ = d_->time;
   has_current_ = true;
   capture_armed_ = true;
+  advances_unarmed_ = 0;
   has_capture_ = false;
 }
 
@@ -317,6 +318,17 @@ bool ContactData::ClaimPair(int g1, int g2) {
 }
 
 void ContactData::ApplyForces() {
+  // stepped without BeforeStep: the time moves on from one evaluation to the
+  // next with no step armed (RK4 moves it 3 times a step, mj_forward never)
+  if (!capture_armed_ && d_->time > latest_time_ && !unmanaged_) {
+    if (++advances_unarmed_ > kUnarmedAdvancesBeforeWarning) {
+      unmanaged_ = true;
+      mju_warning(
+          "contactlaws: this mjData is stepped without ContactData::BeforeStep/AfterStep "
+          "(plain mj_step): the laws act, but keep no memory of each contact's impact "
+          "velocity; step with ContactData::Step()");
+    }
+  }
   latest_.clear();
   latest_time_ = d_->time;
   ApplyDrives();

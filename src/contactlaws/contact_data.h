@@ -97,7 +97,9 @@ class ContactData {
   ContactData(const ContactData&) = delete;
   ContactData& operator=(const ContactData&) = delete;
 
-  // One accepted step: BeforeStep(); mj_step(m, d); AfterStep().
+  // One accepted step: BeforeStep(); mj_step(m, d); AfterStep(). An mjData
+  // stepped with plain mj_step gets one MuJoCo warning (mju_warning) after a
+  // few steps: its contacts then have no memory.
   void Step();
 
   // Moves driven (mocap) bodies to their prescribed pose at d->time and arms
@@ -210,6 +212,10 @@ class ContactData {
   double captured_time_ = 0;
   bool capture_armed_ = false;
   bool has_capture_ = false;
+  // plain mj_step detection: evaluations at a later time with no step armed
+  static constexpr int kUnarmedAdvancesBeforeWarning = 8;
+  int advances_unarmed_ = 0;
+  bool unmanaged_ = false;
 
   std::vector<int> slot_impact_;  // slot -> index of its open impact, or -1
   std::vector<int> open_;         // indices of open impacts
