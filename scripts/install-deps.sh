@@ -14,6 +14,8 @@ packages=(
   libgtest-dev
   libcli11-dev
   libbenchmark-dev
+  clang               # the sanitizer builds and the fuzzer of scripts/test.sh
+  libclang-rt-14-dev  # clang's sanitizer and libFuzzer runtimes
   python3-matplotlib
   python3-numpy
 )

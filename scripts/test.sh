@@ -1,30 +1,142 @@
 #!/usr/bin/env bash
 # The test command of the README, and what CI runs (.ci/run execs this script).
 #
-# Stages, one function each, run in order by main():
+# Stages, one function each, run in order by main() (each prints its wall
+# time; the first that fails stops the script with a non-zero status):
 #   build     scripts/build.sh: missing Debian packages, Release configure+build
 #   run_ctest ctest on build/: every test of tests/, among them
 #             consumer_find_package (installs the library into a temporary
-#             prefix and builds a find_package consumer against it)
-# The script exits with ctest's status: 0 only when every test passed.
-# To add a stage (e.g. a sanitizer build in its own build directory), write a
-# function and call it from main().
+#             prefix and builds a find_package consumer against it) and
+#             tag_fuzzer_replay (the fuzz corpus and regressions, no libFuzzer)
+#   asan      build-asan/: the whole suite again under AddressSanitizer +
+#             UndefinedBehaviorSanitizer
+#   tsan      build-tsan/: thread_test under ThreadSanitizer
+#   fuzz      build-fuzz/: the libFuzzer target tag_fuzzer for about 60 s on a
+#             scratch copy of its corpus (only where clang and libFuzzer are)
+# libmujoco itself is not instrumented: the sanitizers see this project's code
+# (and malloc/free everywhere), not MuJoCo's own memory accesses.
+#
+#   scripts/test.sh                 every stage
+#   scripts/test.sh asan tsan       only these (after a build, for instance)
+#   FUZZ_SECONDS=300 scripts/test.sh fuzz
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
+
+jobs=2  # the machine's cores; ctest -j and the builds
+fuzz_seconds="${FUZZ_SECONDS:-60}"
+stage_times=()
+
+# The compiler of the sanitizer builds: clang when installed (its libFuzzer
+# and sanitizer runtimes come with libclang-rt-14-dev), else g++.
+sanitizer_cxx() {
+  if command -v clang++ >/dev/null 2>&1; then echo clang++; else echo g++; fi
+}
+
+# Configures build dir $1 with compiler $2 and sanitizer flags $3 (compile)
+# and $4 (link); further arguments go to cmake.
+configure_sanitized() {
+  local dir="$1" cxx="$2" cflags="$3" lflags="$4"
+  shift 4
+  cmake -S "$repo" -B "$repo/$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_COMPILER="$cxx" \
+    -DCMAKE_CXX_FLAGS="$cflags" \
+    -DCMAKE_EXE_LINKER_FLAGS="$lflags" \
+    -DCMAKE_SHARED_LINKER_FLAGS="$lflags" "$@" >/dev/null
+}
 
 build() {
   bash scripts/build.sh
 }
 
 run_ctest() {
-  ctest --test-dir build --output-on-failure -j2
+  ctest --test-dir build --output-on-failure -j"$jobs"
+}
+
+asan() {
+  local flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  configure_sanitized build-asan "$(sanitizer_cxx)" "$flags" "$flags"
+  cmake --build build-asan -j"$jobs"
+  # Left out: consumer_find_package (it builds a consumer without the
+  # sanitizer flags against the instrumented static library, which cannot
+  # link, and it checks packaging, not memory) and the benchmark smoke run
+  # (label benchmark: timings mean nothing here, and it is the slowest).
+  ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+      -E '^consumer_find_package$' -LE benchmark
+}
+
+tsan() {
+  local flags="-fsanitize=thread -fno-omit-frame-pointer"
+  configure_sanitized build-tsan "$(sanitizer_cxx)" "$flags" "$flags"
+  cmake --build build-tsan -j"$jobs" --target thread_test
+  # a report makes the test exit non-zero (exitcode=66), whatever gtest says
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:exitcode=66 \
+    build-tsan/tests/thread_test
+}
+
+fuzz() {
+  if ! command -v clang++ >/dev/null 2>&1; then
+    echo "fuzz: clang++ not installed: skipped (scripts/install-deps.sh installs it)"
+    return 0
+  fi
+  # the library is built with coverage (fuzzer-no-link) and the sanitizers;
+  # the target links libFuzzer (CMakeLists of tests/fuzz)
+  configure_sanitized build-fuzz clang++ \
+    "-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+    "-fsanitize=address,undefined" -DCONTACTLAWS_BUILD_FUZZER=ON
+  cmake --build build-fuzz -j"$jobs" --target tag_fuzzer
+  # a scratch copy of the seeds and the regressions: the fuzzer adds to its
+  # corpus directory, and the repository must not change
+  local scratch
+  scratch="$(mktemp -d)"
+  mkdir "$scratch/corpus" "$scratch/artifacts"
+  cp tests/fuzz/corpus/* tests/fuzz/regressions/* "$scratch/corpus/"
+  local status=0
+  build-fuzz/tests/fuzz/tag_fuzzer -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+    -dict=tests/fuzz/tag_fuzzer.dict -artifact_prefix="$scratch/artifacts/" \
+    "$scratch/corpus" 2>"$scratch/fuzz.log" || status=$?
+  grep -E '^(Done|stat::(number_of_executed_units|average_exec_per_sec|new_units_added))' \
+    "$scratch/fuzz.log" || true
+  if [ "$status" -ne 0 ] || [ -n "$(ls -A "$scratch/artifacts")" ]; then
+    tail -n 60 "$scratch/fuzz.log"
+    echo "fuzz: FAILED (status $status). The input that failed, to add under tests/fuzz/regressions/:"
+    local artifact
+    for artifact in "$scratch"/artifacts/*; do
+      [ -e "$artifact" ] || continue
+      echo "  $artifact (base64: $(base64 -w0 "$artifact"))"
+    done
+    return 1
+  fi
+  rm -rf "$scratch"
+}
+
+# Runs stage $1 and records its wall time.
+stage() {
+  local name="$1" start end
+  start=$(date +%s)
+  echo "== test.sh: stage $name"
+  "$name"
+  end=$(date +%s)
+  stage_times+=("$name $((end - start)) s")
+  echo "== test.sh: stage $name done in $((end - start)) s"
 }
 
 main() {
-  build
-  run_ctest
+  local stages=("$@")
+  if [ "${#stages[@]}" -eq 0 ]; then
+    stages=(build run_ctest asan tsan fuzz)
+  fi
+  for name in "${stages[@]}"; do
+    case "$name" in
+      build|run_ctest|asan|tsan|fuzz) stage "$name" ;;
+      *) echo "test.sh: unknown stage '$name' (build run_ctest asan tsan fuzz)" >&2; exit 2 ;;
+    esac
+  done
+  local IFS=','
+  echo "== test.sh: every stage passed (${stage_times[*]})"
 }
 
 main "$@"
