@@ -168,7 +168,7 @@ def tables(entries):
     rows = [["fixed 1e-5 s", fmt_time(fixed),
              f"{fixed_entry['steps'] / runs:.0f}" if runs else "-", "1"]]
     if auto is None:
-        rows.append(["auto", "not measured (no auto timestep yet)", "-", "-"])
+        rows.append(["auto", "not measured (no Sweep/auto benchmark)", "-", "-"])
     else:
         auto_entry = entries["Sweep/auto"]
         rows.append(["auto", fmt_time(auto), f"{auto_entry['steps'] / auto_entry['runs']:.0f}",

@@ -45,7 +45,7 @@ namespace {
 // Simulated stretches per iteration (s); --smoke divides them.
 struct Stretches {
   double bouncing_ball = 3.0;  // the goal: 3 s at 1e-5 s
-  double ball_box = 0.01;      // from the launch: its collisions begin at ~1.2 ms
+  double ball_box = 0.01;      // from the launch: its collisions begin at 1-2 ms
   std::vector<int> ball_counts = {8, 64, 512};
   // the sweep's subset: every law at one e, until the first episode ends
   std::vector<LawKind> sweep_laws = {std::begin(kAllLaws), std::end(kAllLaws)};
