@@ -13,6 +13,9 @@
 #           number of balls, the sweep), as text; with --markdown as the
 #           tables of docs/performance.md; with --update-doc written into
 #           docs/performance.md (between its bench:begin/end markers)
+#   jobs    scripts/bench_jobs.py: --jobs 2 against --jobs 1 of the
+#           restitution and compare commands, wall time as a ratio, and their
+#           outputs compared byte for byte (skipped with --markdown/--update-doc)
 # Arguments after -- go to contactlaws_bench, e.g. -- --benchmark_repetitions=3
 # (the report then uses the medians) or -- --benchmark_filter=BallBox.
 # The benchmarks take about a minute on 2 cores, the build aside.
@@ -65,10 +68,15 @@ report() {
     "${report_args[@]}"
 }
 
+jobs() {
+  python3 scripts/bench_jobs.py "$build_dir/contactlaws"
+}
+
 main() {
   build
   run
   report
+  if [[ ${#report_args[@]} -eq 0 ]]; then jobs; fi
 }
 
 main

@@ -12,7 +12,7 @@
 //     free_flight_mujoco           1 m/s from 1 m: it never touches the floor
 //   BallBox/<hooks|mujoco>/<n>     the many-ball scene (ball_box.h) of n = 8, 64, 512
 //                                  balls, from its launch, a fixed stretch
-//   Sweep/fixed                    the `restitution` command's runs (drop until the
+//   Sweep/fixed, Sweep/auto        the `restitution` command's runs (drop until the
 //                                  first contact episode ends) for a subset of
 //                                  (law, e), at the scene's fixed 1e-5 s
 //
@@ -204,7 +204,8 @@ void BM_BallBox(benchmark::State& state, Contact contact, int balls, double dura
 // The restitution sweep: what `contactlaws restitution` runs for each
 // (law, e), through the same cli::Scene and cli::Advance.
 
-void BM_SweepFixed(benchmark::State& state, const Stretches& s) {
+// The sweep with the scene's fixed 1e-5 s step, or with --timestep auto.
+void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
   const cli::Scene scene(ScenePath("bouncing_ball.xml"));
   long steps = 0;
   for (auto _ : state) {
@@ -218,13 +219,15 @@ void BM_SweepFixed(benchmark::State& state, const Stretches& s) {
         cli::AdvanceOptions advance;
         advance.duration = 2.0;  // s: the first contact ends at ~0.45 s
         advance.until_first_episode = true;
-        cli::Advance(sim.get(), advance, nullptr);
+        if (automatic) advance.auto_timestep = AutoTimestepOptions{};
+        const cli::AdvanceResult result = cli::Advance(sim.get(), advance, nullptr);
         const std::vector<Impact>& impacts = sim->contacts().impacts();
         if (impacts.empty() || impacts[0].open) {
           state.SkipWithError("a first contact did not end within 2 s");
           return;
         }
-        steps += std::lround(sim->time() / sim->model()->opt.timestep);
+        steps += automatic ? result.steps
+                           : std::lround(sim->time() / sim->model()->opt.timestep);
       }
     }
   }
@@ -235,13 +238,6 @@ void BM_SweepFixed(benchmark::State& state, const Stretches& s) {
                                    benchmark::Counter::kInvert);
   AddStepCounters(state, steps);
 }
-
-// ---------------------------------------------------------------------------
-// AUTO TIMESTEP (issue 5, item 1) goes here: register "Sweep/auto", the same
-// runs as BM_SweepFixed with the contact-aware timestep, once the library has
-// it. scripts/bench.sh already prints Sweep/auto / Sweep/fixed when both are
-// in the JSON. Nothing is registered until then: there is nothing to measure.
-// ---------------------------------------------------------------------------
 
 void RegisterAll(const Stretches& s) {
   for (LawKind kind : kAllLaws) {
@@ -269,7 +265,8 @@ void RegisterAll(const Stretches& s) {
     }
   }
 
-  benchmark::RegisterBenchmark("Sweep/fixed", BM_SweepFixed, s)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("Sweep/fixed", BM_Sweep, s, false)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("Sweep/auto", BM_Sweep, s, true)->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
