@@ -11,8 +11,11 @@
 //      in the <custom> of a fixed scene (plane, spheres, a box, a capsule, geom
 //      groups, a mocap body, an explicit <pair>, an <exclude>), XML-escaped;
 //      the header's second character picks the integrator (e Euler, r RK4,
-//      i implicit); the scene is loaded, its tags resolved, and when they are
-//      valid it is stepped a few times with its laws
+//      i implicit), its third the command line's --law override (1 to 5:
+//      kAllLaws[n - 1]; anything else none) and its fourth the --restitution
+//      override (0 to 9: n / 9; anything else none); the scene is loaded, its
+//      tags resolved, and when they are valid it is stepped a few times with
+//      its laws
 //   R  the same, but NAME and DATA go in raw: malformed XML, injected elements
 //      (but no <size nstack>: see FuzzScene)
 // Any other first character picks a mode by its value, so every input means
@@ -189,7 +192,15 @@ std::string Replace(std::string text, std::string_view field, const std::string&
 }
 
 // (b) scene validation, and a few steps of a valid scene.
-void FuzzScene(bool raw, char integrator, std::string_view body) {
+void FuzzScene(bool raw, std::string_view header, std::string_view body) {
+  const char integrator = header.size() > 1 ? header[1] : 'e';
+  contactlaws::Overrides overrides;
+  if (header.size() > 2 && header[2] >= '1' && header[2] <= '5') {
+    overrides.law = contactlaws::kAllLaws[header[2] - '1'];
+  }
+  if (header.size() > 3 && header[3] >= '0' && header[3] <= '9') {
+    overrides.restitution = (header[3] - '0') / 9.0;
+  }
   // Raw input can inject any MJCF. A small <size nstack> makes MuJoCo's own
   // mj_step run out of stack (mju_error, then exit) with or without our
   // hooks: MuJoCo's business, not a finding, so such input is skipped.
@@ -236,7 +247,7 @@ void FuzzScene(bool raw, char integrator, std::string_view body) {
 
   std::unique_ptr<contactlaws::ContactModel> laws;
   try {
-    laws = std::make_unique<contactlaws::ContactModel>(m.get(), kSceneName);
+    laws = std::make_unique<contactlaws::ContactModel>(m.get(), kSceneName, overrides);
   } catch (const contactlaws::Error& e) {
     // raw mode can put a newline in a name (&#10;): only escaped input must
     // give one line
@@ -303,13 +314,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* bytes, size_t size) {
   if (mode != 'P' && mode != 'D' && mode != 'S' && mode != 'R') {
     mode = "PDSR"[static_cast<unsigned char>(mode) % 4];
   }
-  const char integrator = header.size() > 1 ? header[1] : 'e';
   try {
     switch (mode) {
       case 'P': FuzzParser(false, body); break;
       case 'D': FuzzParser(true, body); break;
-      case 'S': FuzzScene(false, integrator, body); break;
-      case 'R': FuzzScene(true, integrator, body); break;
+      case 'S': FuzzScene(false, header, body); break;
+      case 'R': FuzzScene(true, header, body); break;
     }
   } catch (const contactlaws::Error& e) {
     Finding(std::string("an Error escaped where none was expected: ") + e.what());
