@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <set>
@@ -279,6 +281,45 @@ TEST_F(HooksTest, PlainMjStepIsWarnedAboutOnce) {
   // plain mj_step is, once
   for (int i = 0; i < 100; ++i) mj_step(m.get(), d);
   EXPECT_EQ(ExpectMujocoWarning("stepped without ContactData::BeforeStep/AfterStep"), 1u);
+}
+
+TEST_F(HooksTest, AddPointForceIsMujocosApplyFTAlongTheChain) {
+  // a tree: free base, hinge and slide children, a ball joint, a welded
+  // child (no dofs of its own) and a static body
+  UniqueModel m = Load(R"(<mujoco>
+  <worldbody>
+    <body name="static" pos="0 0 -1"><geom type="box" size="0.1 0.1 0.1"/></body>
+    <body name="base" pos="0 0 1"><freejoint/><geom type="box" size="0.2 0.1 0.1" mass="2"/>
+      <body name="arm" pos="0.3 0 0"><joint type="hinge" axis="0 1 0"/>
+        <geom type="capsule" size="0.05 0.2" mass="1"/>
+        <body name="slider" pos="0 0 0.3"><joint type="slide" axis="1 0 0"/>
+          <geom type="sphere" size="0.05" mass="0.5"/>
+          <body name="welded" pos="0.1 0 0"><geom type="sphere" size="0.03" mass="0.2"/></body>
+        </body>
+      </body>
+      <body name="wrist" pos="-0.3 0 0"><joint type="ball"/>
+        <geom type="sphere" size="0.05" mass="0.3"/></body>
+    </body>
+  </worldbody>
+</mujoco>)");
+  mjData* d = MakeData(m.get());
+  for (int i = 0; i < m->nq; ++i) d->qpos[i] += 0.1 * std::sin(3.0 * i + 1);
+  mj_normalizeQuat(m.get(), d->qpos);
+  mj_forward(m.get(), d);
+  std::vector<mjtNum> ours(m->nv), theirs(m->nv);
+  const mjtNum force[3] = {1.5, -2.0, 0.7};
+  const mjtNum zero[3] = {0, 0, 0};
+  for (int b = 0; b < m->nbody; ++b) {
+    const mjtNum point[3] = {0.2 * b, -0.1, 0.3};
+    std::fill(ours.begin(), ours.end(), 0.5);
+    std::fill(theirs.begin(), theirs.end(), 0.5);
+    AddPointForce(m.get(), d, b, point, force, ours.data());
+    mj_applyFT(m.get(), d, force, zero, point, b, theirs.data());
+    for (int j = 0; j < m->nv; ++j) {
+      // the same sums in another order: rounding only
+      EXPECT_NEAR(ours[j], theirs[j], 1e-12) << "body " << b << " dof " << j;
+    }
+  }
 }
 
 TEST_F(HooksTest, MjResetDataAloneClearsThePerContactMemory) {

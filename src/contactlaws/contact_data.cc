@@ -140,6 +140,23 @@ bool FarApart(const mjModel* m, const mjData* d, int g1, int g2) {
 
 }  // namespace
 
+void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                   const mjtNum force[3], mjtNum* qfrc) {
+  // the body's nearest ancestor (itself included) with dofs: its last dof
+  int b = body;
+  while (b > 0 && m->body_dofnum[b] == 0) b = m->body_parentid[b];
+  if (b <= 0) return;  // welded to the world (mocap bodies too): no dofs
+  // qfrc_j += f . (lin_j + ang_j x r) = f . lin_j + ang_j . (r x f), with
+  // cdof_j = (ang_j, lin_j) at the subtree com of the body's root
+  mjtNum r[3], moment[3];
+  mju_sub3(r, point, d->subtree_com + 3 * m->body_rootid[body]);
+  mju_cross(moment, r, force);
+  for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
+    const mjtNum* cdof = d->cdof + 6 * j;
+    qfrc[j] += mju_dot3(cdof, moment) + mju_dot3(cdof + 3, force);
+  }
+}
+
 // ---------------------------------------------------------------------------
 
 ContactData::ContactData(const ContactModel& model, mjData* d)
@@ -396,11 +413,10 @@ void ContactData::ApplyForces() {
       e.dissipated_power = f.dissipated_power(e.depth_rate);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
-      mjtNum push[3], zero[3] = {0, 0, 0};
+      mjtNum push[3];
       for (int b = 0; b < 2; ++b) {
-        if (m_->body_weldid[pair.body[b]] == 0) continue;  // world, mocap: no dofs
         mju_scl3(push, normal, b == 1 ? f.total : -f.total);
-        mj_applyFT(m_, d_, push, zero, con.pos, pair.body[b], d_->qfrc_passive);
+        AddPointForce(m_, d_, pair.body[b], con.pos, push, d_->qfrc_passive);
       }
       mju_copy3(e.pos, con.pos);
       mju_copy3(e.normal, normal);

@@ -63,6 +63,13 @@ struct Impact {
   double restitution_post() const { return separation_velocity / impact_velocity; }
 };
 
+// qfrc += J^T force for a world-frame force at a world point fixed to body:
+// what mj_applyFT(m, d, force, 0, point, body, qfrc) adds, walking only the
+// dofs of the body's chain (O(depth of the tree), not O(nv)). Needs cdof and
+// subtree_com (mj_comPos; current inside the hooks).
+void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                   const mjtNum force[3], mjtNum* qfrc);
+
 // Why a run cannot go on: found by AfterStep, kept until Reset().
 struct Divergence {
   enum class Kind {
