@@ -29,8 +29,11 @@ struct Registry {
   std::shared_mutex mutex;
   std::unordered_map<const mjData*, ContactData*> data;
   std::atomic<uint64_t> generation{1};  // bumped by every (un)registration
-  mjfConFilt previous_filter = nullptr;
-  mjfGeneric previous_passive = nullptr;
+  // the callbacks found when the first ContactData came: written under the
+  // mutex, read by the hooks without it (a thread stepping an mjData of its
+  // own may be inside a hook while another registers)
+  std::atomic<mjfConFilt> previous_filter{nullptr};
+  std::atomic<mjfGeneric> previous_passive{nullptr};
 };
 
 Registry& GetRegistry() {
@@ -68,8 +71,8 @@ void Register(mjData* d, ContactData* cd) {
     throw Error("this mjData already has a ContactData");
   }
   if (registry.data.size() == 1) {
-    registry.previous_filter = mjcb_contactfilter;
-    registry.previous_passive = mjcb_passive;
+    registry.previous_filter.store(mjcb_contactfilter, std::memory_order_release);
+    registry.previous_passive.store(mjcb_passive, std::memory_order_release);
     mjcb_contactfilter = FilterHook;
     mjcb_passive = PassiveHook;
   }
@@ -82,10 +85,10 @@ void Unregister(mjData* d) {
   registry.data.erase(d);
   if (registry.data.empty()) {
     // give back what we found, unless somebody replaced us since
-    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter;
-    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive;
-    registry.previous_filter = nullptr;
-    registry.previous_passive = nullptr;
+    // previous_* stay: a hook MuJoCo entered just before this still chains
+    // to them
+    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter.load();
+    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive.load();
   }
   registry.generation.fetch_add(1, std::memory_order_acq_rel);
 }
@@ -97,20 +100,22 @@ struct RestoreAtUnload {
     Registry& registry = GetRegistry();
     std::unique_lock lock(registry.mutex);
     if (registry.data.empty()) return;
-    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter;
-    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive;
+    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter.load();
+    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive.load();
   }
 } restore_at_unload;
 
 int FilterHook(const mjModel* m, mjData* d, int g1, int g2) {
   // tagged: no MuJoCo constraint, the passive hook applies the law
   if (ContactData* cd = Lookup(m, d); cd && cd->ClaimPair(g1, g2)) return 1;
-  mjfConFilt previous = GetRegistry().previous_filter;
+  mjfConFilt previous = GetRegistry().previous_filter.load(std::memory_order_acquire);
   return previous ? previous(m, d, g1, g2) : DefaultContactFilter(m, g1, g2);
 }
 
 void PassiveHook(const mjModel* m, mjData* d) {
-  if (mjfGeneric previous = GetRegistry().previous_passive) previous(m, d);
+  if (mjfGeneric previous = GetRegistry().previous_passive.load(std::memory_order_acquire)) {
+    previous(m, d);
+  }
   if (ContactData* cd = Lookup(m, d)) cd->ApplyForces();
 }
 
