@@ -93,7 +93,8 @@ fuzz() {
   local scratch
   scratch="$(mktemp -d)"
   mkdir "$scratch/corpus" "$scratch/artifacts"
-  cp tests/fuzz/corpus/* tests/fuzz/regressions/* "$scratch/corpus/"
+  find tests/fuzz/corpus tests/fuzz/regressions -type f ! -name '.*' \
+    -exec cp -t "$scratch/corpus/" {} +
   local status=0
   build-fuzz/tests/fuzz/tag_fuzzer -max_total_time="$fuzz_seconds" -print_final_stats=1 \
     -dict=tests/fuzz/tag_fuzzer.dict -artifact_prefix="$scratch/artifacts/" \
