@@ -98,11 +98,12 @@ std::vector<MujocoWarning> UnreportedMujocoWarnings() {
   MujocoMessages& m = Messages();
   std::lock_guard lock(m.mutex);
   std::vector<MujocoWarning> unreported;
-  for (const auto& [text, count] : m.received) {
+  for (const auto& entry : m.received) {
+    const std::string& text = entry.first;
     // MuJoCo sends a run's warning text with " Time = ..." appended
     const bool reported = std::any_of(m.reported.begin(), m.reported.end(),
                                       [&](const std::string& r) { return text.rfind(r, 0) == 0; });
-    if (!reported) unreported.push_back({text, count});
+    if (!reported) unreported.push_back({text, entry.second});
   }
   return unreported;
 }
