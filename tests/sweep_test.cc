@@ -446,5 +446,38 @@ TEST(AutoTimestepTest, TheStepShrinksOnApproachAndIsFineInContact) {
   EXPECT_LT(stepper.steps(), 430 + 60);
 }
 
+TEST(AutoTimestepTest, APairInContactWithManyPointsDoesNotHideAnApproachingPair) {
+  // a box resting on the floor under a soft Kelvin-Voigt tag (4 contact
+  // points, a long contact: fine step ~5e-4 s) and a ball falling at 5 m/s
+  // under a stiff Hertz tag (fine step ~6e-5 s): the ball's approach must
+  // still end on its touch, not a soft fine step (2.5 mm) into the floor
+  const std::string xml = R"(<mujoco>
+  <option integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body pos="0 0 0.0902"><freejoint/><geom name="box" type="box" size="0.1 0.1 0.1" mass="1"/></body>
+    <body pos="2 0 0.2"><freejoint/><geom name="ball" type="sphere" size="0.1" mass="1"/></body>
+  </worldbody>
+  <keyframe><key qvel="0 0 0 0 0 0 0 0 -5 0 0 0"/></keyframe>
+  <custom>
+    <text name="contactlaw:box" data="geom1=box geom2=floor law=kelvin-voigt restitution=0.5
+      linear_stiffness=1e3"/>
+    <text name="contactlaw:ball" data="geom1=ball geom2=floor law=hertz stiffness=1.4e8"/>
+  </custom>
+</mujoco>)";
+  Simulation sim(LoadModelString(xml, "box_ball.xml"), "box_ball.xml");
+  AutoTimestep stepper(sim.contacts());
+  double first_ball_depth = 0;
+  while (sim.time() < 0.1 && first_ball_depth == 0) {
+    sim.Step(stepper.Next(1.0));
+    first_ball_depth = sim.contacts().Reading(1).depth;
+  }
+  ASSERT_GT(sim.contacts().Reading(0).depth, 0) << "the box rests in contact";
+  ASSERT_GT(first_ball_depth, 0) << "the ball reached the floor";
+  // the first state in contact is at most one Hertz fine step past the touch
+  const double fine = HertzContactDuration(1.4e8, 1.5, 1.0, 5.0) / 20;
+  EXPECT_LT(first_ball_depth, 5.0 * fine);
+}
+
 }  // namespace
 }  // namespace contactlaws

@@ -227,12 +227,7 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
       static_cast<int>(specs.size()), jobs,
       [&](int k) { return Execute(scene, options, specs[k], advance, record); },
       [&](int k, RunOutput& out) {
-        progress.Finished(k, Describe(specs[k]));
-        if (out.status == RunOutput::Status::kOk && out.warnings.empty()) {
-          deliver(k, out);
-          return;
-        }
-        progress.Done();
+        progress.Done();  // what deliver or the warnings print starts a line
         for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
         if (out.status == RunOutput::Status::kFailed) {
           ++failed;
@@ -242,6 +237,7 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
         interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
                       out.status == RunOutput::Status::kNotRun;
         deliver(k, out);
+        progress.Finished(k, Describe(specs[k]));
       },
       StopRequested, [&](int k) { return NotRun(specs[k]); });
   progress.Done();

@@ -57,6 +57,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     }
     top_acceleration_.push_back(accel);
   }
+  in_contact_.assign(cm.pairs().size(), 0);
 }
 
 double AutoTimestep::FineStep(int pair, double v) const {
@@ -78,21 +79,26 @@ double AutoTimestep::Next(double until) {
   double step = options_.max_step;
   bool fine = false;
 
-  // pairs in contact at the last evaluation: their fine step
+  // pairs in contact at the last evaluation (a pair may have several
+  // points): their fine step
   int in_contact = 0;
   for (const ContactData::Evaluation& e : contacts_.latest()) {
     step = std::min(step, FineStep(e.pair, e.impact_velocity));
     fine = true;
-    ++in_contact;
+    if (!in_contact_[e.pair]) {
+      in_contact_[e.pair] = 1;
+      ++in_contact;
+    }
   }
 
-  // pairs apart (all of them, unless the contacts cover every pair): the
-  // time to close a fraction of their gap, from the current state
+  // the other pairs: the time to close a fraction of their gap, from the
+  // current state
   if (in_contact < npair) {
     mj_kinematics(m, d);
     mj_comPos(m, d);
     mj_comVel(m, d);
     for (int p = 0; p < npair; ++p) {
+      if (in_contact_[p]) continue;
       const GeomPair& pair = cm.pairs()[p];
       const int g[2] = {pair.geom[0], pair.geom[1]};
       const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
@@ -151,6 +157,7 @@ double AutoTimestep::Next(double until) {
     }
   }
 
+  for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;
   if (previous_ > 0) step = std::min(step, options_.growth * previous_);
   previous_ = step;  // a cut at `until` does not slow the growth after it
   step = std::min(step, until);

@@ -38,6 +38,7 @@
 #ifndef CONTACTLAWS_AUTO_TIMESTEP_H_
 #define CONTACTLAWS_AUTO_TIMESTEP_H_
 
+#include <cstdint>
 #include <vector>
 
 #include "contactlaws/contact_data.h"
@@ -95,6 +96,7 @@ class AutoTimestep {
   std::vector<double> duration_at_unit_speed_;
   std::vector<double> duration_speed_exponent_;
   std::vector<double> top_acceleration_;  // of the pair's driven bodies, m/s^2
+  std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   double previous_ = 0;
   long fine_steps_ = 0;
   long steps_ = 0;
