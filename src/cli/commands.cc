@@ -79,13 +79,18 @@ void Warn(const std::string& scene, const std::string& what) {
 
 // Before any run: every run's tags are validated (bad input costs nothing),
 // and a timestep too coarse for a tag's estimated contact is named once.
-void Prepare(const Scene& scene, const SimulationOptions& options,
-             const std::vector<RunSpec>& specs, bool auto_timestep) {
+// Returns each run's advice, for its divergence message.
+std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
+                                                 const SimulationOptions& options,
+                                                 const std::vector<RunSpec>& specs,
+                                                 bool auto_timestep) {
   std::set<std::string> warned;
+  std::vector<std::vector<TimestepAdvice>> advices;
   for (const RunSpec& spec : specs) {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    advices.push_back(AdviseTimestep(sim.get()));
     if (auto_timestep) continue;  // the steps will resolve the contacts
-    for (const TimestepAdvice& advice : AdviseTimestep(sim.get())) {
+    for (const TimestepAdvice& advice : advices.back()) {
       if (!advice.coarse) continue;
       const std::string text = CoarseTimestepWarning(*sim, advice);
       if (warned.insert(text).second) {
@@ -93,6 +98,7 @@ void Prepare(const Scene& scene, const SimulationOptions& options,
       }
     }
   }
+  return advices;
 }
 
 // The warnings a finished run leaves: energy growth, MuJoCo's own.
@@ -164,13 +170,13 @@ RunOutput NotRun(const RunSpec& spec) {
 // One run of a sweep, on any thread. Refused input and divergence make a
 // failed run, not an exception: the sweep goes on.
 RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
-                  const AdvanceOptions& advance, bool record) {
+                  const std::vector<TimestepAdvice>& advice, const AdvanceOptions& advance,
+                  bool record) {
   RunOutput out;
   out.restitution = spec.restitution.value_or(0.0);
   try {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
     out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
-    const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
     const std::vector<std::string> prefix = {std::string(LawName(spec.law)),
                                              Field(out.restitution)};
     std::function<void(const std::vector<double>&)> on_row;
@@ -218,14 +224,16 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
 // order. Returns the exit status: 0, kExitIncomplete when a run failed,
 // kExitInterrupted after a stop request.
 int Sweep(const Scene& scene, const SimulationOptions& options,
-          const std::vector<RunSpec>& specs, const AdvanceOptions& advance, bool record,
-          int jobs, bool quiet, const std::function<void(int, RunOutput&)>& deliver) {
+          const std::vector<RunSpec>& specs,
+          const std::vector<std::vector<TimestepAdvice>>& advices,
+          const AdvanceOptions& advance, bool record, int jobs, bool quiet,
+          const std::function<void(int, RunOutput&)>& deliver) {
   Progress progress(static_cast<int>(specs.size()), quiet);
   int failed = 0;
   bool interrupted = false;
   RunInOrder<RunOutput>(
       static_cast<int>(specs.size()), jobs,
-      [&](int k) { return Execute(scene, options, specs[k], advance, record); },
+      [&](int k) { return Execute(scene, options, specs[k], advices[k], advance, record); },
       [&](int k, RunOutput& out) {
         progress.Done();  // what deliver or the warnings print starts a line
         for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
@@ -331,7 +339,8 @@ int CompareCommand(const SweepArgs& args) {
     }
   }
   const Scene scene(args.scene);
-  Prepare(scene, options, specs, auto_timestep.has_value());
+  const std::vector<std::vector<TimestepAdvice>> advices =
+      Prepare(scene, options, specs, auto_timestep.has_value());
 
   CreateDirectory(args.output_dir);
   CsvFile trajectories(args.output_dir + "/trajectories.csv");
@@ -357,7 +366,7 @@ int CompareCommand(const SweepArgs& args) {
   };
   std::vector<Row> rows;
   const int status = Sweep(
-      scene, options, specs, {args.duration, args.sample_rate, false, auto_timestep}, true, jobs,
+      scene, options, specs, advices, {args.duration, args.sample_rate, false, auto_timestep}, true, jobs,
       args.quiet,
       [&](int k, RunOutput& out) {
         const RunSpec& spec = specs[k];
@@ -419,7 +428,8 @@ int RestitutionCommand(const SweepArgs& args) {
     for (double e : restitutions) specs.push_back({law, e});
   }
   const Scene scene(args.scene);
-  Prepare(scene, options, specs, auto_timestep.has_value());
+  const std::vector<std::vector<TimestepAdvice>> advices =
+      Prepare(scene, options, specs, auto_timestep.has_value());
 
   CsvFile out(args.output);
   out.Header({"law", "restitution", "restitution_post", "impact_velocity", "max_depth",
@@ -431,7 +441,7 @@ int RestitutionCommand(const SweepArgs& args) {
   std::vector<Row> rows;
   int incomplete = 0;
   int status = Sweep(
-      scene, options, specs, {args.duration, 0.0, true, auto_timestep}, false, jobs, args.quiet,
+      scene, options, specs, advices, {args.duration, 0.0, true, auto_timestep}, false, jobs, args.quiet,
       [&](int k, RunOutput& run) {
         const RunSpec& spec = specs[k];
         const std::optional<Impact>& first = run.first;
