@@ -33,6 +33,7 @@ std::string PairName(const Simulation& sim, int pair_index) {
 class EnergyWatch {
  public:
   explicit EnergyWatch(const Simulation& sim) : enabled_(sim.Undriven()) {}
+  bool enabled() const { return enabled_; }
   // At a state after mj_forward.
   void Observe(const Simulation& sim) {
     if (!enabled_) return;
@@ -157,7 +158,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     return false;
   };
 
-  if (!sampling) {
+  if (!sampling && energy.enabled()) {
     mj_forward(sim->model(), sim->data());
     energy.Observe(*sim);
   }
@@ -186,9 +187,11 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     result.steps = stepper->steps();
     result.fine_steps = stepper->fine_steps();
   }
-  mj_forward(sim->model(), sim->data());
-  energy.Observe(*sim);
-  result.energy_growth = energy.Report();
+  if (energy.enabled()) {
+    mj_forward(sim->model(), sim->data());  // the ledger of the final state
+    energy.Observe(*sim);
+    result.energy_growth = energy.Report();
+  }
   return result;
 }
 
@@ -223,14 +226,16 @@ std::string DivergenceMessage(const Simulation& sim, const Divergence& divergenc
                                         PairName(sim, divergence.pair), divergence.depth,
                                         divergence.depth_rate)
                           : std::string("no tagged pair in contact");
-  // the likely cause: the coarsest-resolved tag, or the one that diverged
-  const TimestepAdvice* cause = nullptr;
-  for (const TimestepAdvice& a : advice) {
-    const bool same_tag =
-        divergence.pair >= 0 && sim.contact_model().pairs()[divergence.pair].tag == a.tag;
-    if (same_tag || (!cause && a.coarse) || (cause && !cause->coarse && a.coarse)) cause = &a;
-    if (same_tag) break;
-  }
+  // the likely cause: the tag that diverged, else the first tag the
+  // timestep does not resolve, else the first tag
+  const int tag = divergence.pair >= 0 ? sim.contact_model().pairs()[divergence.pair].tag : -1;
+  auto find = [&](auto&& which) -> const TimestepAdvice* {
+    const auto found = std::find_if(advice.begin(), advice.end(), which);
+    return found == advice.end() ? nullptr : &*found;
+  };
+  const TimestepAdvice* cause = find([&](const TimestepAdvice& a) { return a.tag == tag; });
+  if (!cause) cause = find([](const TimestepAdvice& a) { return a.coarse; });
+  if (!cause && !advice.empty()) cause = &advice.front();
   std::string likely;
   if (cause && std::isfinite(cause->steps)) {
     const ContactEstimate& e = cause->shortest.estimate;

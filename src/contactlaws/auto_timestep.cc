@@ -24,10 +24,6 @@ double TimeToClose(double g, double v, double a) {
   return kInfinity;
 }
 
-bool Immovable(const ContactModel& cm, int body) {
-  return cm.model()->body_weldid[body] == 0 || cm.FindDrive(body) != nullptr;
-}
-
 }  // namespace
 
 AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
@@ -131,15 +127,8 @@ double AutoTimestep::Next(double until) {
       for (int b = 0; b < 2; ++b) contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
       mju_sub3(relative, v[0], v[1]);
       const double closing = mju_dot3(relative, normal) + spin;
-      double accel = top_acceleration_[p];
-      const bool movable[2] = {!Immovable(cm, pair.body[0]), !Immovable(cm, pair.body[1])};
-      if (movable[0] != movable[1]) {
-        accel += (movable[0] ? 1 : -1) * mju_dot3(m->opt.gravity, normal);
-      }
-      const double impact_speed =
-          std::sqrt(std::max(closing, 0.0) * std::max(closing, 0.0) +
-                    2 * std::max(accel, 0.0) * std::max(gap, 0.0));
-      const double pair_fine = FineStep(p, impact_speed);
+      const double accel = top_acceleration_[p] + GravityClosingAcceleration(cm, pair, normal);
+      const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
       const double allowed =
           gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
       if (allowed > pair_fine) {

@@ -64,6 +64,13 @@ ContactData* Lookup(const mjModel* m, const mjData* d) {
   return cd && cd->model().model() == m ? cd : nullptr;
 }
 
+// Gives back the callbacks found before ours, unless somebody replaced ours
+// since (under registry.mutex).
+void RestoreCallbacks(const Registry& registry) {
+  if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter.load();
+  if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive.load();
+}
+
 void Register(mjData* d, ContactData* cd) {
   Registry& registry = GetRegistry();
   std::unique_lock lock(registry.mutex);
@@ -84,11 +91,9 @@ void Unregister(mjData* d) {
   std::unique_lock lock(registry.mutex);
   registry.data.erase(d);
   if (registry.data.empty()) {
-    // give back what we found, unless somebody replaced us since
     // previous_* stay: a hook MuJoCo entered just before this still chains
     // to them
-    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter.load();
-    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive.load();
+    RestoreCallbacks(registry);
   }
   registry.generation.fetch_add(1, std::memory_order_acq_rel);
 }
@@ -99,9 +104,7 @@ struct RestoreAtUnload {
   ~RestoreAtUnload() {
     Registry& registry = GetRegistry();
     std::unique_lock lock(registry.mutex);
-    if (registry.data.empty()) return;
-    if (mjcb_contactfilter == FilterHook) mjcb_contactfilter = registry.previous_filter.load();
-    if (mjcb_passive == PassiveHook) mjcb_passive = registry.previous_passive.load();
+    if (!registry.data.empty()) RestoreCallbacks(registry);
   }
 } restore_at_unload;
 

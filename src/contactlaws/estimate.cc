@@ -2,6 +2,7 @@
 
 #include "contactlaws/estimate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -13,12 +14,26 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A body the contact force cannot move: the world, a static body, a driven one.
+}  // namespace
+
 bool Immovable(const ContactModel& cm, int body) {
   return cm.model()->body_weldid[body] == 0 || cm.FindDrive(body) != nullptr;
 }
 
-}  // namespace
+double GravityClosingAcceleration(const ContactModel& cm, const GeomPair& pair,
+                                  const mjtNum normal[3]) {
+  const mjtNum along = mju_dot3(cm.model()->opt.gravity, normal);
+  double accel = 0;
+  if (!Immovable(cm, pair.body[0])) accel += along;
+  if (!Immovable(cm, pair.body[1])) accel -= along;
+  return accel;
+}
+
+double SpeedAtTouch(double closing, double accel, double gap) {
+  if (!(closing > 0 || accel > 0)) return 0;
+  const double squared = closing * closing + 2 * accel * std::max(0.0, gap);
+  return squared > 0 ? std::sqrt(squared) : 0.0;
+}
 
 ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
                                 std::optional<double> impact_velocity) {
@@ -60,14 +75,7 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
     }
     mju_sub3(relative, v[0], v[1]);
     const double closing = mju_dot3(relative, normal);
-    // gravity closes the gap at the difference of the two bodies' accelerations
-    double accel = 0;
-    if (!Immovable(cm, pair.body[0])) accel += mju_dot3(m->opt.gravity, normal);
-    if (!Immovable(cm, pair.body[1])) accel -= mju_dot3(m->opt.gravity, normal);
-    const double gap = std::max(0.0, *e.gap);
-    double squared = 0;
-    if (closing > 0 || accel > 0) squared = closing * closing + 2 * accel * gap;
-    speed = squared > 0 ? std::sqrt(squared) : 0.0;
+    speed = SpeedAtTouch(closing, GravityClosingAcceleration(cm, pair, normal), *e.gap);
   }
   for (int body : pair.body) {
     if (const Drive* drive = cm.FindDrive(body)) {

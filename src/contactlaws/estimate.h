@@ -40,6 +40,20 @@ struct ContactEstimate {
   double timestep() const { return contact_duration / kStepsPerContact; }
 };
 
+// A body the contact force cannot move: the world, a static body, a driven one.
+bool Immovable(const ContactModel& model, int body);
+
+// The rate at which gravity closes pair's gap along normal (from geom[0]
+// towards geom[1]), m/s^2: the difference of the two bodies' accelerations
+// (a body that cannot move does not fall).
+double GravityClosingAcceleration(const ContactModel& model, const GeomPair& pair,
+                                  const mjtNum normal[3]);
+
+// The closing speed at touch, m/s, of a gap (m, < 0 counts as 0) closing at
+// speed closing and acceleration accel (> 0: closing): sqrt(v^2 + 2 a gap),
+// 0 when the gap never closes.
+double SpeedAtTouch(double closing, double accel, double gap);
+
 // The translational effective mass of pair along the line of impact, kg, as
 // ContactEstimate::effective_mass.
 double PairEffectiveMass(const ContactModel& model, int pair);
