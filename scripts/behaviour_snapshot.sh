@@ -61,13 +61,18 @@ case_ bad_restitution run "$repo/$ball" --restitution 1.5
 case_ bad_restitution_hex run "$repo/$ball" --restitution 0x1p-1 --duration 0.01
 case_ bad_timestep run "$repo/$ball" --timestep fast
 case_ bad_duration run "$repo/$ball" --duration -1
+case_ bad_duration_text run "$repo/$ball" --duration abc
+case_ bad_duration_hex run "$repo/$ball" --duration 0x1p-4
+case_ bad_timestep_hex run "$repo/$ball" --timestep 0x1p-16 --duration 0.01
+case_ bad_jobs_text compare "$repo/$ball" --jobs two
+case_ bad_impact_velocity check "$repo/$ball" --impact-velocity 1e999
 case_ bad_jobs compare "$repo/$ball" --jobs 0
 case_ bad_max_timestep run "$repo/$ball" --max-timestep 1e-3
 case_ bad_list restitution "$repo/$ball" --restitution 0.5,0.5
 case_ bad_range restitution "$repo/$ball" --restitution 0.9:0.1:0.1
 case_ bad_laws compare "$repo/$ball" --laws hertz,hooke
 case_ bad_integrator run "$repo/$ball" --integrator rk5
-case_ missing_scene run "$out/no-such-scene.xml"
+case_ missing_scene run no-such-scene.xml
 case_ unknown_option run "$repo/$ball" --frobnicate
 
 # refusals of tags: the ball scene with the tag's data replaced

@@ -5,12 +5,13 @@
 # time; the first that fails stops the script with a non-zero status):
 #   build     scripts/build.sh: missing Debian packages, Release configure+build
 #   run_ctest ctest on build/: every test of tests/, among them
-#             consumer_find_package (installs the library into a temporary
-#             prefix and builds a find_package consumer against it) and
-#             tag_fuzzer_replay (the fuzz corpus and regressions, no libFuzzer)
+#             consumer_build_tree and consumer_installed (a find_package
+#             consumer built against this build tree, and against an install
+#             of it in a temporary prefix) and tag_fuzzer_replay (the fuzz
+#             corpus and regressions, no libFuzzer)
 #   asan      build-asan/: the whole suite again under AddressSanitizer +
 #             UndefinedBehaviorSanitizer
-#   tsan      build-tsan/: thread_test under ThreadSanitizer
+#   tsan      build-tsan/: hooks_test (threads) under ThreadSanitizer
 #   fuzz      build-fuzz/: the libFuzzer target tag_fuzzer for about 60 s on a
 #             scratch copy of its corpus (only where clang and libFuzzer are)
 # libmujoco itself is not instrumented: the sanitizers see this project's code
@@ -58,23 +59,24 @@ asan() {
   local flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
   configure_sanitized build-asan "$(sanitizer_cxx)" "$flags" "$flags"
   cmake --build build-asan -j"$jobs"
-  # Left out: consumer_find_package (it builds a consumer without the
-  # sanitizer flags against the instrumented static library, which cannot
-  # link, and it checks packaging, not memory) and the benchmark smoke run
+  # Left out: the consumer tests (label consumer: they build a consumer
+  # without the sanitizer flags against the instrumented static library,
+  # which cannot link, and they check packaging, not memory) and the
+  # benchmark smoke run
   # (label benchmark: timings mean nothing here, and it is the slowest).
   ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-      -E '^consumer_find_package$' -LE benchmark
+      -LE 'benchmark|consumer'
 }
 
 tsan() {
   local flags="-fsanitize=thread -fno-omit-frame-pointer"
   configure_sanitized build-tsan "$(sanitizer_cxx)" "$flags" "$flags"
-  cmake --build build-tsan -j"$jobs" --target thread_test
+  cmake --build build-tsan -j"$jobs" --target hooks_test
   # a report makes the test exit non-zero (exitcode=66), whatever gtest says
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:exitcode=66 \
-    build-tsan/tests/thread_test
+    build-tsan/tests/hooks_test
 }
 
 fuzz() {

@@ -19,7 +19,7 @@ inline constexpr int kExitInterrupted = 130;  // Ctrl-C (128 + SIGINT), as shell
 
 struct RunArgs : CommonArgs {
   std::optional<std::string> law;
-  std::optional<double> restitution;
+  std::optional<std::string> restitution;
   std::optional<std::string> output;
   std::optional<std::string> impacts;
 };
@@ -30,22 +30,27 @@ struct SweepArgs : CommonArgs {
   std::string output_dir = "results";      // compare
   std::string output = "-";                // restitution
   bool quiet = false;
-  std::optional<int> jobs;                 // default: the number of cores
+  std::optional<std::string> jobs;         // default: the number of cores
 };
 
 struct CheckArgs {
   std::string scene;
   std::optional<std::string> law;
-  std::optional<double> restitution;
-  std::optional<double> timestep;
-  std::optional<double> impact_velocity;
+  std::optional<std::string> restitution;
+  std::optional<std::string> timestep;
+  std::optional<std::string> impact_velocity;
 };
 
 int RunCommand(const RunArgs& args);
 int CompareCommand(const SweepArgs& args);
 int RestitutionCommand(const SweepArgs& args);
 int CheckCommand(const CheckArgs& args);
-int LawsCommand();
+struct LawsArgs {
+  std::string format = "text";             // text or csv
+  std::optional<std::string> restitution;  // csv: E1,E2,... or start:stop:step
+};
+
+int LawsCommand(const LawsArgs& args);
 
 }  // namespace contactlaws::cli
 

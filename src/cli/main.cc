@@ -17,27 +17,35 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
-#include "cli/runner.h"
+#include "contactlaws/contactlaws.h"
 
 namespace contactlaws::cli {
 namespace {
 
-constexpr char kLawHelp[] =
-    "hertz, kelvin-voigt, hunt-crossley, lankarani-nikravesh, flores";
+// A number option: taken as text, read by the one number parser (the
+// commands' Parse* functions), shown as FLOAT in the help.
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name, std::string* value,
+                       const std::string& help) {
+  return cmd->add_option(name, *value, help)->type_name("FLOAT");
+}
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name,
+                       std::optional<std::string>* value, const std::string& help) {
+  return cmd->add_option(name, *value, help)->type_name("FLOAT");
+}
 
 void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
-  cmd->add_option("--duration", args->duration, "simulated time, s")->capture_default_str();
+  AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
   cmd->add_option("--timestep", args->timestep,
                   "s (default: the scene's), or auto: long steps while the tagged pairs are "
                   "apart, steps that resolve the contact near and in it (README)");
-  cmd->add_option("--max-timestep", args->max_timestep,
+  AddNumber(cmd, "--max-timestep", &args->max_timestep,
                   "s, with --timestep auto: the step while every tagged pair is far apart "
                   "(default 0.001)");
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
   if (sampling) {
-    cmd->add_option("--sample-rate", args->sample_rate, "trajectory rows per simulated second")
+    AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();
   }
 }
@@ -45,13 +53,14 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
 void AddSweep(CLI::App* cmd, SweepArgs* args, const char* restitution_help) {
   AddCommon(cmd, args, true);
   cmd->add_option("--laws", args->laws,
-                  fmt::format("L1,L2,... or all ({})", kLawHelp))
+                  fmt::format("L1,L2,... or all ({})", LawNameList()))
       ->capture_default_str();
   cmd->add_option("--restitution", args->restitution, restitution_help);
   cmd->add_flag("--quiet", args->quiet, "no progress on stderr");
   cmd->add_option("--jobs", args->jobs,
                   "runs at a time, >= 1 (default: the number of cores); the output does not "
-                  "depend on it");
+                  "depend on it")
+      ->type_name("INT");
 }
 
 // Ctrl-C (or SIGTERM): the runs stop after their current step and the
@@ -85,9 +94,9 @@ int Main(int argc, char** argv) {
   RunArgs run;
   CLI::App* run_cmd = app.add_subcommand("run", "simulate one tagged scene");
   AddCommon(run_cmd, &run, true);
-  run_cmd->add_option("--law", run.law, fmt::format("override every tag's law: {}", kLawHelp));
-  run_cmd->add_option("--restitution", run.restitution,
-                      "override every tag's restitution e, in [0, 1]");
+  run_cmd->add_option("--law", run.law, fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(run_cmd, "--restitution", &run.restitution,
+            "override every tag's restitution e, in [0, 1]");
   run_cmd->add_option("--output", run.output, "trajectory CSV ('-' for stdout); none if absent");
   run_cmd->add_option("--impacts", run.impacts, "impact log CSV, one row per contact episode");
 
@@ -101,7 +110,7 @@ int Main(int argc, char** argv) {
       ->capture_default_str();
 
   SweepArgs restitution;
-  restitution.duration = 2.0;
+  restitution.duration = "2";
   CLI::App* restitution_cmd = app.add_subcommand(
       "restitution", "the first impact of every law x restitution: e_post (paper Fig. 7)");
   AddSweep(restitution_cmd, &restitution,
@@ -113,14 +122,22 @@ int Main(int argc, char** argv) {
   CLI::App* check_cmd = app.add_subcommand(
       "check", "the scene's tags resolved, contact estimates and the timestep they need");
   check_cmd->add_option("scene", check.scene, "MJCF scene with contactlaw tags")->required();
-  check_cmd->add_option("--law", check.law, fmt::format("override every tag's law: {}", kLawHelp));
-  check_cmd->add_option("--restitution", check.restitution, "override every tag's restitution");
-  check_cmd->add_option("--timestep", check.timestep, "s (default: the scene's)");
-  check_cmd->add_option("--impact-velocity", check.impact_velocity,
-                        "m/s (default: estimated from the scene's initial state)");
+  check_cmd->add_option("--law", check.law, fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(check_cmd, "--restitution", &check.restitution, "override every tag's restitution");
+  AddNumber(check_cmd, "--timestep", &check.timestep, "s (default: the scene's)");
+  AddNumber(check_cmd, "--impact-velocity", &check.impact_velocity,
+            "m/s (default: estimated from the scene's initial state)");
 
+  LawsArgs laws;
   CLI::App* laws_cmd =
       app.add_subcommand("laws", "list the laws: formula, parameters, units, citation");
+  laws_cmd->add_option("--format", laws.format,
+                       "text, or csv: each law's hysteresis coefficient a(e) and the "
+                       "restitution it rebounds with, per restitution")
+      ->capture_default_str();
+  laws_cmd->add_option("--restitution", laws.restitution,
+                       "with --format csv: E1,E2,... or start:stop:step (default "
+                       "0.9,0.7,0.5,0.3,0.1)");
 
   try {
     app.parse(argc, argv);
@@ -143,7 +160,7 @@ int Main(int argc, char** argv) {
     if (compare_cmd->parsed()) status = CompareCommand(compare);
     if (restitution_cmd->parsed()) status = RestitutionCommand(restitution);
     if (check_cmd->parsed()) status = CheckCommand(check);
-    if (laws_cmd->parsed()) status = LawsCommand();
+    if (laws_cmd->parsed()) status = LawsCommand(laws);
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     status = kExitRefused;

@@ -4,15 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include <fmt/format.h>
 
+#include "scene/number.h"
+
 namespace contactlaws::cli {
 namespace {
-
-constexpr char kLawNames[] =
-    "hertz, kelvin-voigt, hunt-crossley, lankarani-nikravesh, flores";
 
 // Longest restitution list a range may expand to.
 constexpr long kMaxListLength = 100000;
@@ -30,13 +28,9 @@ std::vector<std::string_view> Split(std::string_view text, char separator) {
 
 // The whole of text as a finite number, or Refuse.
 double Number(std::string_view option, std::string_view text, std::string_view whole) {
-  const std::string s(text);
-  char* end = nullptr;
-  const double value = s.empty() ? 0.0 : std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value)) {
-    Refuse(option, whole, fmt::format("has '{}', which is not a finite number", text));
-  }
-  return value;
+  const std::optional<double> value = ParseNumber(text);
+  if (!value) Refuse(option, whole, fmt::format("has '{}', which is not a finite number", text));
+  return *value;
 }
 
 double Round12(double v) { return std::round(v * 1e12) / 1e12; }
@@ -47,10 +41,18 @@ void Refuse(std::string_view option, std::string_view value, std::string_view re
   throw Error(fmt::format("{}={} {}", option, value, requirement));
 }
 
-void RequirePositive(std::string_view option, double value, std::string_view unit) {
-  if (!(std::isfinite(value) && value > 0)) {
+double ParseOption(std::string_view option, std::string_view text) {
+  const std::optional<double> value = ParseNumber(text);
+  if (!value) Refuse(option, text, "is not a finite number");
+  return *value;
+}
+
+double ParsePositive(std::string_view option, std::string_view text, std::string_view unit) {
+  const double value = ParseOption(option, text);
+  if (!(value > 0)) {
     Refuse(option, fmt::format("{}", value), fmt::format("must be a number > 0 ({})", unit));
   }
+  return value;
 }
 
 int ParseIntegrator(std::string_view name) {
@@ -60,51 +62,45 @@ int ParseIntegrator(std::string_view name) {
   Refuse("--integrator", name, "must be euler, rk4 or implicit");
 }
 
-SimulationOptions ParseCommon(const CommonArgs& args) {
-  RequirePositive("--duration", args.duration, "s");
-  RequirePositive("--sample-rate", args.sample_rate, "rows per simulated second");
-  SimulationOptions options;
-  if (args.timestep && *args.timestep != "auto") {
-    const std::string& text = *args.timestep;
-    char* end = nullptr;
-    const double value = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size()) {
-      Refuse("--timestep", text, "must be a number > 0 (s) or auto");
+CommonOptions ParseCommon(const CommonArgs& args) {
+  CommonOptions options;
+  options.duration = ParsePositive("--duration", args.duration, "s");
+  options.sample_rate = ParsePositive("--sample-rate", args.sample_rate, "rows per simulated second");
+  const bool auto_timestep = args.timestep && *args.timestep == "auto";
+  if (args.timestep && !auto_timestep) {
+    if (!ParseNumber(*args.timestep)) {
+      Refuse("--timestep", *args.timestep, "must be a number > 0 (s) or auto");
     }
-    RequirePositive("--timestep", value, "s");
-    options.timestep = value;
+    options.simulation.timestep = ParsePositive("--timestep", *args.timestep, "s");
   }
-  if (args.max_timestep) {
-    if (!args.timestep || *args.timestep != "auto") {
-      Refuse("--max-timestep", fmt::format("{}", *args.max_timestep),
-             "goes with --timestep auto");
+  if (args.max_timestep && !auto_timestep) {
+    const std::optional<double> value = ParseNumber(*args.max_timestep);
+    Refuse("--max-timestep", value ? fmt::format("{}", *value) : *args.max_timestep,
+           "goes with --timestep auto");
+  }
+  if (auto_timestep) {
+    options.auto_timestep.emplace();
+    if (args.max_timestep) {
+      options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
     }
-    RequirePositive("--max-timestep", *args.max_timestep, "s");
   }
-  if (args.integrator) options.integrator = ParseIntegrator(*args.integrator);
-  return options;
-}
-
-std::optional<AutoTimestepOptions> ParseAutoTimestep(const CommonArgs& args) {
-  if (!args.timestep || *args.timestep != "auto") return std::nullopt;
-  AutoTimestepOptions options;
-  if (args.max_timestep) options.max_step = *args.max_timestep;
+  if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   return options;
 }
 
 LawKind ParseLaw(std::string_view option, std::string_view name) {
   const std::optional<LawKind> law = ParseLawName(name);
-  if (!law) Refuse(option, name, fmt::format("is not a law ({})", kLawNames));
+  if (!law) Refuse(option, name, fmt::format("is not a law ({})", LawNameList()));
   return *law;
 }
 
 std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text) {
-  if (text == "all") return {std::begin(kAllLaws), std::end(kAllLaws)};
+  if (text == "all") return AllLaws();
   std::vector<LawKind> laws;
   for (std::string_view name : Split(text, ',')) {
     const std::optional<LawKind> law = ParseLawName(name);
     if (!law) {
-      Refuse(option, text, fmt::format("has '{}', which is not a law (all, {})", name, kLawNames));
+      Refuse(option, text, fmt::format("has '{}', which is not a law (all, {})", name, LawNameList()));
     }
     if (std::find(laws.begin(), laws.end(), *law) != laws.end()) {
       Refuse(option, text, fmt::format("names {} twice", name));
@@ -114,10 +110,9 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
   return laws;
 }
 
-double ParseRestitution(std::string_view option, double value) {
-  if (!(std::isfinite(value) && value >= 0 && value <= 1)) {
-    Refuse(option, fmt::format("{}", value), "must be in [0, 1]");
-  }
+double ParseRestitution(std::string_view option, std::string_view text) {
+  const double value = ParseOption(option, text);
+  if (!(value >= 0 && value <= 1)) Refuse(option, fmt::format("{}", value), "must be in [0, 1]");
   return value;
 }
 

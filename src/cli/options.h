@@ -15,30 +15,38 @@
 
 namespace contactlaws::cli {
 
-// The options of run, compare, restitution and check as given.
+// The options of run, compare, restitution and check as given: numbers as
+// text, read by the one number parser (scene/number.h) as tags are.
 struct CommonArgs {
   std::string scene;
-  double duration = 2.0;
+  std::string duration = "2";
   std::optional<std::string> timestep;  // a number, or "auto"
-  std::optional<double> max_timestep;   // with auto
+  std::optional<std::string> max_timestep;  // with auto
   std::optional<std::string> integrator;
-  double sample_rate = 1000.0;
+  std::string sample_rate = "1000";
+};
+
+// What SimulationOptions leave out of the common options: the run's length
+// and sampling, and the auto timestep when asked for.
+struct CommonOptions {
+  SimulationOptions simulation;
+  double duration = 0;     // s
+  double sample_rate = 0;  // rows per simulated second
+  std::optional<AutoTimestepOptions> auto_timestep;
 };
 
 // Throws Error "OPTION=VALUE REQUIREMENT".
 [[noreturn]] void Refuse(std::string_view option, std::string_view value,
                          std::string_view requirement);
 
-// A finite number > 0, or Refuse naming option and unit.
-void RequirePositive(std::string_view option, double value, std::string_view unit);
+// The number text, or Refuse: "OPTION=TEXT is not a finite number".
+double ParseOption(std::string_view option, std::string_view text);
 
-// Validates duration and sample rate; returns timestep and integrator as
-// SimulationOptions (overrides left empty; no timestep for auto).
-SimulationOptions ParseCommon(const CommonArgs& args);
+// A number > 0, or Refuse: "OPTION=VALUE must be a number > 0 (UNIT)".
+double ParsePositive(std::string_view option, std::string_view text, std::string_view unit);
 
-// The auto timestep's options for --timestep auto (and --max-timestep);
-// nullopt for a fixed timestep.
-std::optional<AutoTimestepOptions> ParseAutoTimestep(const CommonArgs& args);
+// Validates the common options (overrides left empty; no timestep for auto).
+CommonOptions ParseCommon(const CommonArgs& args);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
 int ParseIntegrator(std::string_view name);
@@ -46,11 +54,11 @@ int ParseIntegrator(std::string_view name);
 // A law name, or Refuse under option.
 LawKind ParseLaw(std::string_view option, std::string_view name);
 
-// "all" (the five, in kAllLaws order) or "L1,L2,..." (no repeats).
+// "all" (every law, in table order) or "L1,L2,..." (no repeats).
 std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text);
 
 // A restitution in [0, 1].
-double ParseRestitution(std::string_view option, double value);
+double ParseRestitution(std::string_view option, std::string_view text);
 
 // "E1,E2,..." or "start:stop:step" (stop included when it is on the grid, to
 // 1e-9 of a step). Values are rounded to 12 decimals, so 0.1:1.0:0.1 gives

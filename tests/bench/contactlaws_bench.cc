@@ -36,7 +36,6 @@
 #include <mujoco/mujoco.h>
 
 #include "ball_box.h"
-#include "cli/runner.h"
 #include "contactlaws/contactlaws.h"
 
 namespace contactlaws::bench {
@@ -48,7 +47,7 @@ struct Stretches {
   double ball_box = 0.01;      // from the launch: its collisions begin at 1-2 ms
   std::vector<int> ball_counts = {8, 64, 512};
   // the sweep's subset: every law at one e, until the first episode ends
-  std::vector<LawKind> sweep_laws = {std::begin(kAllLaws), std::end(kAllLaws)};
+  std::vector<LawKind> sweep_laws = {AllLaws().begin(), AllLaws().end()};
   std::vector<double> sweep_restitutions = {0.5};
 };
 
@@ -202,11 +201,11 @@ void BM_BallBox(benchmark::State& state, Contact contact, int balls, double dura
 
 // ---------------------------------------------------------------------------
 // The restitution sweep: what `contactlaws restitution` runs for each
-// (law, e), through the same cli::Scene and cli::Advance.
+// (law, e), through the same Scene and Advance.
 
 // The sweep with the scene's fixed 1e-5 s step, or with --timestep auto.
 void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
-  const cli::Scene scene(ScenePath("bouncing_ball.xml"));
+  const Scene scene(ScenePath("bouncing_ball.xml"));
   long steps = 0;
   for (auto _ : state) {
     steps = 0;
@@ -216,11 +215,11 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
         options.overrides.law = law;
         options.overrides.restitution = e;
         std::unique_ptr<Simulation> sim = scene.Make(options);
-        cli::AdvanceOptions advance;
+        AdvanceOptions advance;
         advance.duration = 2.0;  // s: the first contact ends at ~0.45 s
         advance.until_first_episode = true;
         if (automatic) advance.auto_timestep = AutoTimestepOptions{};
-        const cli::AdvanceResult result = cli::Advance(sim.get(), advance, nullptr);
+        const AdvanceResult result = Advance(sim.get(), advance, nullptr);
         const std::vector<Impact>& impacts = sim->contacts().impacts();
         if (impacts.empty() || impacts[0].open) {
           state.SkipWithError("a first contact did not end within 2 s");
@@ -240,7 +239,7 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
 }
 
 void RegisterAll(const Stretches& s) {
-  for (LawKind kind : kAllLaws) {
+  for (LawKind kind : AllLaws()) {
     benchmark::RegisterBenchmark(fmt::format("Law/{}", LawName(kind)).c_str(), BM_Law, kind);
   }
 

@@ -12,7 +12,7 @@
 //      groups, a mocap body, an explicit <pair>, an <exclude>), XML-escaped;
 //      the header's second character picks the integrator (e Euler, r RK4,
 //      i implicit), its third the command line's --law override (1 to 5:
-//      kAllLaws[n - 1]; anything else none) and its fourth the --restitution
+//      AllLaws()[n - 1]; anything else none) and its fourth the --restitution
 //      override (0 to 9: n / 9; anything else none); the scene is loaded, its
 //      tags resolved, and when they are valid it is stepped a few times with
 //      its laws
@@ -37,7 +37,8 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contactlaws.h"
-#include "contactlaws/tags.h"
+#include "scene/number.h"
+#include "scene/tags.h"
 
 namespace {
 
@@ -196,7 +197,7 @@ void FuzzScene(bool raw, std::string_view header, std::string_view body) {
   const char integrator = header.size() > 1 ? header[1] : 'e';
   contactlaws::Overrides overrides;
   if (header.size() > 2 && header[2] >= '1' && header[2] <= '5') {
-    overrides.law = contactlaws::kAllLaws[header[2] - '1'];
+    overrides.law = contactlaws::AllLaws()[header[2] - '1'];
   }
   if (header.size() > 3 && header[3] >= '0' && header[3] <= '9') {
     overrides.restitution = (header[3] - '0') / 9.0;

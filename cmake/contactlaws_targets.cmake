@@ -1,0 +1,62 @@
+# Helpers of the top CMakeLists: the warning flags of every target, the
+# library's layers, and the check that a layer stays free of MuJoCo.
+
+# The warnings of every target of this project, tests included: link
+# contactlaws_warnings PRIVATE (never exported).
+add_library(contactlaws_warnings INTERFACE)
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  target_compile_options(contactlaws_warnings INTERFACE -Wall -Wextra -Wpedantic)
+endif()
+
+# contactlaws_add_layer(NAME SOURCES...): one layer of the library, an object
+# library that sees include/ and src/.
+function(contactlaws_add_layer name)
+  add_library(${name} OBJECT ${ARGN})
+  target_compile_features(${name} PUBLIC cxx_std_17)
+  target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>)
+  target_link_libraries(${name} PRIVATE contactlaws_warnings)
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
+
+# Headers a MuJoCo-free layer (laws, memory) must not reach, directly or
+# through the project's own headers it includes.
+set(contactlaws_forbidden_includes "mujoco/" "fmt/" "Eigen/")
+
+# Follows the #include lines of file, recording in the parent's
+# contactlaws_visited the files seen; fails on a forbidden header.
+function(contactlaws_check_includes file origin)
+  if(file IN_LIST contactlaws_visited)
+    return()
+  endif()
+  list(APPEND contactlaws_visited "${file}")
+  set(contactlaws_visited "${contactlaws_visited}" PARENT_SCOPE)
+  file(STRINGS "${file}" lines REGEX "^#include [<\"]")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^#include [<\"]([^>\"]+)[>\"].*" "\\1" header "${line}")
+    foreach(forbidden IN LISTS contactlaws_forbidden_includes)
+      string(FIND "${header}" "${forbidden}" at)
+      if(at EQUAL 0)
+        message(FATAL_ERROR "${origin} reaches <${header}> (through ${file}): "
+                            "this layer is built without MuJoCo, fmt and Eigen")
+      endif()
+    endforeach()
+    foreach(root "${PROJECT_SOURCE_DIR}/include" "${PROJECT_SOURCE_DIR}/src")
+      if(EXISTS "${root}/${header}")
+        contactlaws_check_includes("${root}/${header}" "${origin}")
+        set(contactlaws_visited "${contactlaws_visited}" PARENT_SCOPE)
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+# contactlaws_check_layer(DIR): every source and header of DIR is free of the
+# forbidden headers, through everything of the project it includes.
+function(contactlaws_check_layer dir)
+  file(GLOB files "${PROJECT_SOURCE_DIR}/${dir}/*.cc" "${PROJECT_SOURCE_DIR}/${dir}/*.h")
+  set(contactlaws_visited "")
+  foreach(file IN LISTS files)
+    contactlaws_check_includes("${file}" "${file}")
+  endforeach()
+endfunction()

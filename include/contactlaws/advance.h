@@ -1,0 +1,64 @@
+// Copyright contactlaws authors.
+//
+// The stepping loop of a Simulation with its monitors: divergence after every
+// step, the energy ledger of an undriven scene, a stop request (Ctrl-C), and
+// the trajectory sampled on a fixed grid. What the command line, the
+// benchmarks and a user's program step with.
+
+#ifndef CONTACTLAWS_ADVANCE_H_
+#define CONTACTLAWS_ADVANCE_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contactlaws/auto_timestep.h"
+#include "contactlaws/contact_memory.h"
+#include "contactlaws/simulation.h"
+
+namespace contactlaws {
+
+struct AdvanceOptions {
+  double duration = 2.0;     // s of simulated time
+  double sample_rate = 0.0;  // rows per simulated second; 0: no rows
+  // Stop as soon as the first contact episode of the scene's first tag ends.
+  bool until_first_episode = false;
+  // Step with AutoTimestep instead of the model's fixed timestep; rows stay
+  // on the sample grid (steps are cut at sample times).
+  std::optional<AutoTimestepOptions> auto_timestep;
+};
+
+// How a call of Advance ended.
+struct AdvanceResult {
+  enum class Status {
+    kComplete,     // reached the duration (or the first episode's end)
+    kDiverged,     // stopped at divergence (see divergence)
+    kInterrupted,  // stopped because StopRequested()
+  };
+  Status status = Status::kComplete;
+  std::optional<Divergence> divergence;
+  // Set when the total energy of an undriven scene grew beyond
+  // kEnergyGrowthTolerance: how much, and when it was largest.
+  std::optional<std::string> energy_growth;
+  // With the auto timestep: the steps taken, and those at a contact's fine step.
+  long steps = 0;
+  long fine_steps = 0;
+};
+
+// Steps sim from its current time until options.duration (or the first
+// episode's end), calling on_row with Simulation::Sample() at every time
+// k / sample_rate on the way, t = 0 included. Stops at divergence (the rows
+// given so far are finite) and when a stop is requested. Checks the energy
+// ledger of undriven scenes at every row and at the end.
+AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
+                      const std::function<void(const std::vector<double>&)>& on_row);
+
+// Asks every Advance in the process to stop after its current step (safe to
+// call from a signal handler), and whether that was asked.
+void RequestStop();
+bool StopRequested();
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_ADVANCE_H_

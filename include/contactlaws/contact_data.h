@@ -1,0 +1,187 @@
+// Copyright contactlaws authors.
+//
+// ContactData: the laws acting on one mjData.
+//
+// While a ContactData exists, MuJoCo's global hooks are ours (installed by the
+// first ContactData, the callbacks found before restored when the last one is
+// destroyed):
+//   mjcb_contactfilter  discards the tagged geom pairs of this data's model
+//                       (MuJoCo makes no constraint for them), records them
+//                       as proposed by the broadphase, and applies MuJoCo's
+//                       own rule, or the callback found before, to every
+//                       other pair;
+//   mjcb_passive        runs MuJoCo's narrowphase on each tagged pair the
+//                       broadphase proposed (so the cost grows with the pairs
+//                       near each other, not with all tagged pairs), evaluates
+//                       the pair's law at each contact point and adds the force
+//                       to qfrc_passive (after the callback found before).
+// An mjData with no ContactData is left entirely to MuJoCo.
+//
+// The hooks are pure functions of the state they are given (RK4 calls the
+// passive hook four times a step): the per-contact memory (impact velocity v0,
+// episode, energy) is committed once per accepted step, from the evaluation
+// at the step's start state, by AfterStep(). A user's loop is therefore
+//
+//   contactlaws::ContactData contacts(contact_model, d);
+//   while (...) contacts.Step();      // BeforeStep(); mj_step(m, d); AfterStep();
+//
+// mj_resetData (the time going back) is noticed by the next BeforeStep, which
+// then forgets the per-contact memory; after any other jump of the state, call
+// Reset(). After each step, divergence() says whether the run can go on.
+
+#ifndef CONTACTLAWS_CONTACT_DATA_H_
+#define CONTACTLAWS_CONTACT_DATA_H_
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_memory.h"
+#include "contactlaws/contact_model.h"
+#include "contactlaws/kinematics.h"
+
+namespace contactlaws {
+
+// MuJoCo 2.2.2's own contact filter for a geom pair (not exported by the
+// library): 1 discards. Installing mjcb_contactfilter replaces it for every
+// pair, so untagged pairs go through this copy of the rule.
+int DefaultContactFilter(const mjModel* m, int g1, int g2);
+
+// The latest evaluation of one tag: its deepest contact point, and the sum of
+// the forces of all its points.
+struct TagReading {
+  double depth = 0;       // m, 0 when out of contact
+  double depth_rate = 0;  // m/s, 0 when out of contact
+  double force = 0;       // N
+};
+
+class ContactData {
+ public:
+  // model must describe d's mjModel and outlive this object.
+  ContactData(const ContactModel& model, mjData* d);
+  ~ContactData();
+
+  ContactData(const ContactData&) = delete;
+  ContactData& operator=(const ContactData&) = delete;
+
+  // One accepted step: BeforeStep(); mj_step(m, d); AfterStep(). An mjData
+  // stepped with plain mj_step gets one MuJoCo warning (mju_warning) after a
+  // few steps: its contacts then have no memory.
+  void Step();
+
+  // Moves driven (mocap) bodies to their prescribed pose at d->time and arms
+  // the capture of the step's first hook evaluation.
+  void BeforeStep();
+
+  // Commits the per-contact memory from the evaluation captured at the step's
+  // start state.
+  void AfterStep();
+
+  // Forgets every episode, the energy ledger and any divergence. BeforeStep
+  // calls it when the time has gone back (mj_resetData).
+  void Reset();
+
+  // Set by the AfterStep that found the state diverged; the state is then
+  // not to be trusted (MuJoCo may even have reset it).
+  const std::optional<Divergence>& divergence() const { return divergence_; }
+
+  const ContactModel& model() const { return model_; }
+  mjData* data() const { return d_; }
+
+  // Every contact episode so far, in order of first touch.
+  const std::vector<Impact>& impacts() const { return episodes_.impacts(); }
+
+  // One contact point as the hook last saw it.
+  using Evaluation = PointEvaluation;
+
+  // The contact points of the latest hook evaluation (depth > 0).
+  const std::vector<Evaluation>& latest() const { return latest_; }
+
+  // The tagged pairs the last collision pass proposed (what ApplyForces
+  // evaluates), in pair order.
+  const std::vector<int>& proposed_pairs() const { return proposed_; }
+
+  // The latest hook evaluation (call mj_forward first for the current state).
+  TagReading Reading(int tag) const;
+  double ElasticEnergy() const;   // J, latest evaluation
+  // J, integrated (trapezoid) over committed steps, up to the latest evaluation
+  double DissipatedEnergy() const;
+
+  // Called by the contact filter hook for each pair the broadphase proposes:
+  // true, and recorded for ApplyForces, when the pair is tagged. O(1); no
+  // allocation.
+  bool ClaimPair(int g1, int g2);
+
+  // Called by the passive hook: adds the laws' forces to d->qfrc_passive for
+  // the tagged pairs the last collision pass proposed (the same pairs again
+  // when the pass was skipped, e.g. mj_forwardSkip past positions).
+  void ApplyForces();
+
+  // World-frame velocity of a point fixed to body (driven bodies: their
+  // prescribed motion). Needs cvel (mj_forward, or inside the hooks).
+  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const {
+    contactlaws::PointVelocity(model_, d_, body, point, vel);
+  }
+
+ private:
+  // The law at contact point i of pair p (narrowphase output con).
+  PointEvaluation Evaluate(int p, const mjContact& con, int i);
+  // Once a step: sets divergence_ when the step diverged.
+  void CheckDivergence();
+  // Notices an mjData stepped without BeforeStep (plain mj_step): warns once.
+  void NoticeUnmanagedStep();
+  // The velocities of the step's start and of the one before (BeforeStep).
+  void RecordStepStart();
+
+  const ContactModel& model_;
+  const mjModel* m_;
+  mjData* d_;
+
+  std::vector<mjContact> contacts_;   // narrowphase output, mjMAXCONPAIR
+
+  // tagged pairs proposed by the broadphase (ClaimPair), for ApplyForces
+  std::vector<int> proposed_;
+  std::vector<uint8_t> is_proposed_;  // per pair
+  bool proposals_sorted_ = true;
+  bool proposals_consumed_ = true;  // ApplyForces used the list
+
+  // the hook's last evaluation, and the one at the step's start, which
+  // AfterStep commits
+  std::vector<PointEvaluation> latest_;
+  double latest_time_ = 0;
+  std::vector<PointEvaluation> captured_;
+  double captured_time_ = 0;
+  bool capture_armed_ = false;
+  bool has_capture_ = false;
+
+  // plain mj_step detection: evaluations at a later time with no step armed
+  static constexpr int kUnarmedAdvancesBeforeWarning = 8;
+  int advances_unarmed_ = 0;
+  bool unmanaged_ = false;
+
+  // qvel at the start of this step and of the one before (BeforeStep): the
+  // rates just before a contact begins and just after it ends, which no
+  // contact force has touched
+  std::vector<mjtNum> current_qvel_;
+  std::vector<mjtNum> previous_qvel_;
+  double current_time_ = 0;
+  double previous_time_ = 0;
+  bool has_current_ = false;
+  bool has_previous_ = false;
+
+  // MuJoCo's bad-state warning counts at BeforeStep: a rise means mj_step
+  // found NaN/huge values and reset the data
+  std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
+  std::optional<Divergence> divergence_;
+
+  EpisodeLog episodes_;
+  DissipationLedger ledger_;
+};
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_CONTACT_DATA_H_

@@ -1,0 +1,164 @@
+// Copyright contactlaws authors.
+//
+// Per-contact memory, without MuJoCo types: what the hooks evaluated at each
+// contact point, the episodes of every point (first touch to separation), the
+// energy the laws dissipated, and why a run stopped. ContactData (MuJoCo
+// side) fills these once per accepted step; nothing here reads a simulation.
+
+#ifndef CONTACTLAWS_CONTACT_MEMORY_H_
+#define CONTACTLAWS_CONTACT_MEMORY_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace contactlaws {
+
+// One contact point as the hook last saw it (depth > 0).
+struct PointEvaluation {
+  int pair = -1;     // ContactModel::pairs() index
+  int tag = -1;      // ContactModel::tags() index of the pair
+  int slot = -1;     // absolute slot index (pair.first_slot + point)
+  bool touch = false;  // no open episode: this evaluation is its first touch
+  double depth = 0;
+  double depth_rate = 0;
+  double impact_velocity = 0;  // the law's v0 (floored)
+  double touch_velocity = 0;   // touch: d' at the step before first touch
+  double touch_power = 0;      // touch: the law's dissipated power at touch, W
+  double force = 0;
+  double elastic_energy = 0;
+  double dissipated_power = 0;
+  double pos[3] = {0, 0, 0};     // contact point, world frame
+  double normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
+};
+
+// One contact episode of one contact point: first touch to separation.
+struct Impact {
+  int tag = -1;             // ContactModel::tags() index
+  int pair = -1;            // ContactModel::pairs() index
+  int index = 0;            // 1 for the tag's first episode, 2 for its second ...
+  double time_contact = 0;  // s, extrapolated to d = 0
+  // d' of the last state before first touch, m/s (> 0): the approach no
+  // contact force has slowed yet (a fixed step finds a contact a fraction of
+  // a step late, when a force that jumps at d = 0+ has acted for part of it)
+  double impact_velocity = 0;
+  bool open = true;               // still in contact
+  double time_separation = 0;     // s, extrapolated to d = 0 (closed only)
+  double separation_velocity = 0; // -d' of the first state after it, m/s (closed only)
+  double max_depth = 0;           // m
+  double max_force = 0;           // N
+  // separation / impact depth rate (closed only)
+  double restitution_post() const { return separation_velocity / impact_velocity; }
+};
+
+// The time a point touched, extrapolated back from its first evaluation at t:
+// the depth was reached at the mean of the touch and current rates.
+double TouchTime(const PointEvaluation& e, double t);
+
+// Sum of the dissipated power of points, W.
+double DissipatedPower(const std::vector<PointEvaluation>& points);
+
+// The episodes of every contact point, committed once per accepted step.
+class EpisodeLog {
+ public:
+  // slots: contact points the model can have; tags: its tag count.
+  EpisodeLog(int slots, int tags);
+
+  // Forgets every episode.
+  void Reset();
+
+  // The index in impacts() of slot's open episode, or -1.
+  int OpenEpisode(int slot) const { return slot_impact_[slot]; }
+
+  // Opens an episode for each touch point and advances the open ones with
+  // the points evaluated at the step's start state, time t.
+  void Commit(double t, const std::vector<PointEvaluation>& points);
+
+  // Closes the episodes whose point was not in the last Commit. For each,
+  // separation_speed(pair, pos, normal, last_rate) gives -d' of the first
+  // state out of contact at the point and normal last in contact.
+  template <typename SeparationSpeed>
+  void CloseVanished(SeparationSpeed&& separation_speed);
+
+  // Every episode so far, in order of first touch.
+  const std::vector<Impact>& impacts() const { return impacts_; }
+
+ private:
+  // What closing an episode needs beyond Impact.
+  struct Track {
+    int slot = -1;
+    int64_t last_commit = -1;  // the commit that last saw it in contact
+    double last_time = 0;
+    double last_depth = 0;
+    double last_rate = 0;
+    double last_pos[3] = {0, 0, 0};
+    double last_normal[3] = {0, 0, 0};
+  };
+  void Close(int index, double separation_velocity);
+
+  std::vector<int> slot_impact_;  // slot -> index of its open impact, or -1
+  std::vector<int> open_;         // indices of open impacts
+  std::vector<int> tag_count_;    // episodes per tag
+  std::vector<Impact> impacts_;
+  std::vector<Track> tracks_;     // parallel to impacts_
+  int64_t commits_ = 0;
+};
+
+// The energy the laws dissipated: the trapezoid of their power over the
+// committed steps.
+class DissipationLedger {
+ public:
+  void Reset();
+
+  // Adds the step that ends at t, whose start state's points are points. A
+  // touch point's power acted from its touch, where a law whose force jumps
+  // at d = 0+ (Kelvin-Voigt) already dissipates: its trapezoid spans
+  // [touch, t] with the touch's power, not [previous commit, t] from zero.
+  void Commit(double t, const std::vector<PointEvaluation>& points);
+
+  // J, up to the latest evaluation (points, at time t).
+  double Dissipated(double t, const std::vector<PointEvaluation>& points) const;
+
+ private:
+  bool has_committed_ = false;
+  double committed_time_ = 0;
+  double committed_power_ = 0;
+  double dissipated_ = 0;
+};
+
+// Why a run cannot go on: found after a step, kept until the memory is reset.
+struct Divergence {
+  enum class Kind {
+    kNonFinite,     // NaN or infinity in qpos, qvel, qacc or a contact force
+    kMujocoReset,   // MuJoCo found a bad qpos/qvel/qacc and reset the data
+    kTooDeep,       // a contact deeper than its pair's depth_limit
+  };
+  Kind kind = Kind::kNonFinite;
+  double time = 0;       // s: the start of the step that diverged
+  // The deepest tagged contact at that state, relative to its limit (-1: none
+  // in contact), its depth and depth rate.
+  int pair = -1;
+  double depth = 0;        // m
+  double depth_rate = 0;   // m/s
+  std::string what;        // one phrase: "depth 0.06 m beyond 0.05 m (half ...)"
+};
+
+template <typename SeparationSpeed>
+void EpisodeLog::CloseVanished(SeparationSpeed&& separation_speed) {
+  for (size_t k = 0; k < open_.size();) {
+    const int index = open_[k];
+    const Track& track = tracks_[index];
+    if (track.last_commit == commits_) {
+      ++k;
+      continue;
+    }
+    Close(index, separation_speed(impacts_[index].pair, track.last_pos, track.last_normal,
+                                  track.last_rate));
+    open_[k] = open_.back();
+    open_.pop_back();
+  }
+}
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_CONTACT_MEMORY_H_

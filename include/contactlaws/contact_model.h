@@ -1,0 +1,130 @@
+// Copyright contactlaws authors.
+//
+// ContactModel: the tags of one mjModel resolved against it. Built once per
+// model (it reads names, groups, radii); immutable afterwards, so any number
+// of ContactData (one per mjData, on any threads) can share it.
+
+#ifndef CONTACTLAWS_CONTACT_MODEL_H_
+#define CONTACTLAWS_CONTACT_MODEL_H_
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/law.h"
+
+namespace contactlaws {
+
+// Command-line style overrides applied to every tagged pair before
+// validation (contactlaws run --law ... --restitution ...).
+struct Overrides {
+  std::optional<LawKind> law;
+  std::optional<double> restitution;
+};
+
+// One contactlaw tag.
+struct PairTag {
+  std::string label;   // "ball-floor" for contactlaw:ball-floor
+  std::string geom1;   // as written: a name or group:N
+  std::string geom2;
+  LawKind law = LawKind::kHertz;
+  double restitution = 1.0;
+  std::vector<int> pairs;  // indices into ContactModel::pairs()
+};
+
+// One geom pair a tag covers (a group tag covers many).
+struct GeomPair {
+  // ordered as MuJoCo's narrowphase wants: geom_type[geom[0]] <= geom_type[geom[1]]
+  std::array<int, 2> geom = {-1, -1};
+  std::array<int, 2> body = {-1, -1};
+  std::array<int, 2> named = {-1, -1};  // geom1, geom2 in the tag's order
+  int tag = -1;          // index into ContactModel::tags()
+  int first_slot = 0;    // this pair's contact points: slots [first_slot, first_slot + slots)
+  int slots = 1;         // most contact points the narrowphase returns for it
+  LawParams params;      // resolved (stiffness from materials included)
+  // A depth beyond this is divergence, not contact: kDivergenceDepthFraction
+  // of the smaller geom's size (GeomSize), m; infinite for two planes.
+  double depth_limit = 0;
+};
+
+// The depth at which a run is stopped as diverged, as a fraction of the
+// smaller geom's size. The laws come from Hertz's small-deformation theory
+// (d much smaller than the radii): at half the radius the model no longer
+// describes anything, and a stiff contact that gets there has been stepped
+// over, not resolved.
+inline constexpr double kDivergenceDepthFraction = 0.5;
+
+// A geom's smallest characteristic size, m: the radius of a sphere, capsule
+// or cylinder (or the cylinder's half length when smaller), the smallest
+// semi-axis of an ellipsoid or half-size of a box, the bounding radius of a
+// mesh; infinite for planes and height fields.
+double GeomSize(const mjModel* m, int g);
+
+// A body whose position is prescribed by a contactdrive tag:
+//   p(t) = ref + axis * amplitude * sin(omega t + phase).
+struct Drive {
+  std::string label;
+  int body = -1;
+  int mocap = -1;  // the body's mocap index
+  std::array<double, 3> ref = {0, 0, 0};
+  std::array<double, 3> axis = {0, 0, 1};
+  double amplitude = 0.0;  // m
+  double omega = 0.0;      // rad/s
+  double phase = 0.0;      // rad
+
+  void Position(double t, double pos[3]) const;
+  void Velocity(double t, double vel[3]) const;
+};
+
+struct PairTagSpec;  // scene/tags.h
+class TagResolver;   // contact_model.cc
+
+class ContactModel {
+ public:
+  // Reads and validates the tags of m; source names the file in messages.
+  // Throws Error with a one-line message. m must outlive this object.
+  explicit ContactModel(const mjModel* m, std::string source = "model",
+                        const Overrides& overrides = {});
+
+  ContactModel(const ContactModel&) = delete;
+  ContactModel& operator=(const ContactModel&) = delete;
+
+  const mjModel* model() const { return model_; }
+  const std::string& source() const { return source_; }
+  const std::vector<PairTag>& tags() const { return tags_; }
+  const std::vector<GeomPair>& pairs() const { return pairs_; }
+  const std::vector<Drive>& drives() const { return drives_; }
+  int slot_count() const { return slot_count_; }
+
+  // The tagged pair of two geoms, in either order; -1 when untagged. O(1).
+  int FindPair(int g1, int g2) const;
+
+  // The drive of body b, or nullptr.
+  const Drive* FindDrive(int body) const;
+
+ private:
+  void ReadDrives();
+  void ReadTags(const Overrides& overrides);
+  // The geom pairs of one tag (appended to pairs_ and tag->pairs).
+  void AddPairs(const PairTagSpec& spec, const LawParams& base, const TagResolver& resolve,
+                PairTag* tag);
+
+  const mjModel* model_;
+  std::string source_;
+  std::vector<PairTag> tags_;
+  std::vector<GeomPair> pairs_;
+  std::vector<Drive> drives_;
+  std::vector<int> body_drive_;          // body -> drive index or -1
+  std::vector<uint8_t> geom_tagged_;     // fast reject in FindPair
+  std::unordered_map<uint64_t, int> pair_index_;
+  int slot_count_ = 0;
+};
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_CONTACT_MODEL_H_

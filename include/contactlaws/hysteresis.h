@@ -1,0 +1,41 @@
+// Copyright contactlaws authors.
+//
+// The Hertz law with hysteresis damping (paper eq. 5), the form of every law
+// of the hysteresis family (law_table.cc):
+//   F = K d^n + chi d^n d',  chi = a K / v0,  i.e.  F = K d^n (1 + a d'/v0)
+// a: dimensionless hysteresis coefficient, a function of the restitution e
+// that each law defines; a = 0 is the Hertz law.
+// Convention: see law.h. The force is continuous at d = 0 (it starts and ends
+// at zero), unlike Kelvin-Voigt.
+//
+// Neglecting gravity, a sphere of effective mass m that hits at v0 leaves with
+// the rebound e_post that solves (nondimensionalise m x'' = -K x^n (1 + a x'/v0)
+// and integrate the energy in the (x', x^(n+1)) plane):
+//   a (1 + e_post) = ln((1 + a) / (1 - a e_post))
+// whatever K, n, m and v0. ExactRebound() solves it; the tests hold every law
+// to it.
+
+#ifndef CONTACTLAWS_HYSTERESIS_H_
+#define CONTACTLAWS_HYSTERESIS_H_
+
+#include <cmath>
+
+#include "contactlaws/hertz.h"
+
+namespace contactlaws {
+
+// K d^n (1 + a d'/v0) for d > 0, 0 otherwise (N); not clamped.
+inline double HysteresisForce(double stiffness, double exponent,
+                              double coefficient, double depth,
+                              double depth_rate, double impact_velocity) {
+  return HertzForce(stiffness, exponent, depth) *
+         (1.0 + coefficient * depth_rate / impact_velocity);
+}
+
+// The rebound restitution e_post of a law with coefficient a >= 0: the root in
+// (0, 1] of a (1 + e) - ln((1 + a) / (1 - a e)) = 0 (1 for a = 0).
+double ExactRebound(double coefficient);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_HYSTERESIS_H_

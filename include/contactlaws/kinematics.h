@@ -1,0 +1,55 @@
+// Copyright contactlaws authors.
+//
+// The kinematics the laws need from MuJoCo, at the state of an mjData (inside
+// the hooks, or after mj_forward): the velocity of a point on a body, the
+// approach rate and effective mass of a pair along a normal, a force applied
+// at a point, and the driven bodies' prescribed motion.
+
+#ifndef CONTACTLAWS_KINEMATICS_H_
+#define CONTACTLAWS_KINEMATICS_H_
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_model.h"
+
+namespace contactlaws {
+
+// qfrc += J^T force for a world-frame force at a world point fixed to body:
+// what mj_applyFT(m, d, force, 0, point, body, qfrc) adds, walking only the
+// dofs of the body's chain (O(depth of the tree), not O(nv)). Needs cdof and
+// subtree_com (mj_comPos; current inside the hooks).
+void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                   const mjtNum force[3], mjtNum* qfrc);
+
+// World-frame velocity of a point fixed to body (driven bodies: their
+// prescribed motion at d->time). Needs cvel.
+void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
+                   mjtNum vel[3]);
+
+// jn = (J1 - J0)^T n at point (nv entries): the normal relative velocity of
+// pair's bodies per dof. Uses d's stack for scratch.
+void NormalJacobian(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+                    const mjtNum normal[3], mjtNum* jn);
+
+// 1 / (n^T J M^-1 J^T n) at a point, for the two bodies of pair (infinite
+// when neither can move along n).
+double EffectiveMass(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+                     const mjtNum normal[3]);
+
+// d' at point along normal for the velocities qvel (driven bodies: their
+// prescribed velocity at time), with the current configuration's Jacobians.
+double ApproachRate(const ContactModel& model, mjData* d, const GeomPair& pair,
+                    const mjtNum point[3], const mjtNum normal[3], const mjtNum* qvel,
+                    double time);
+
+// Bounding-sphere test of MuJoCo's broadphase (margin 0): true if g1 and g2
+// cannot touch.
+bool FarApart(const mjModel* m, const mjData* d, int g1, int g2);
+
+// Translates each driven body (and its geoms) to its pose at d->time: exact
+// at every RK4 stage, where mocap_pos still holds the step's start.
+void ApplyDrives(const ContactModel& model, mjData* d);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_KINEMATICS_H_

@@ -1,0 +1,149 @@
+// Copyright contactlaws authors.
+//
+// Continuous contact force laws: the common vocabulary of every law.
+//
+// Sign convention, the same in every law, every header and every file this
+// library writes:
+//   depth d        > 0 when the surfaces interpenetrate (m);
+//   depth rate d'  > 0 while the surfaces approach, < 0 while they separate (m/s);
+//   impact velocity v0 = d' at the first touch of this contact episode (m/s, > 0);
+//   force F        >= 0 pushes the two bodies apart (N), along the contact normal.
+// For d <= 0 every law returns F = 0. Unless allow_tension is set, F is clamped
+// to F >= 0 (a damping term may otherwise pull the bodies together while they
+// separate, which a contact cannot do).
+//
+// The kernels in this directory take plain numbers: no MuJoCo types, no
+// globals, no I/O. Reference: P. Flores, M. Machado, M. T. Silva,
+// J. M. Martins, "On the continuous contact force models for soft materials in
+// multibody dynamics", Multibody Syst. Dyn. 25:357-375 (2011).
+
+#ifndef CONTACTLAWS_LAW_H_
+#define CONTACTLAWS_LAW_H_
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace contactlaws {
+
+// A law: the index of its row in the table of laws (Laws(), law_table.cc).
+// The named ids are the rows the code refers to; a law added to the table
+// needs no id of its own (it is found by name, ParseLawName).
+enum class LawKind : int {
+  kHertz = 0,               // F = K d^n
+  kKelvinVoigt = 1,         // F = k d + c d'
+  kHuntCrossley = 2,        // the Hertz family: F = K d^n (1 + a(e) d'/v0)
+  kLankaraniNikravesh = 3,
+  kFlores = 4,
+};
+
+// The two forms a law can take.
+enum class LawFamily {
+  kHysteresis,  // F = K d^n (1 + a(e) d'/v0) (hysteresis.h); Hertz is a = 0
+  kLinear,      // F = k d + c d' (kelvin_voigt.h)
+};
+
+// One row of the table of laws.
+struct LawInfo {
+  LawKind kind;
+  std::string_view name;        // as written in tags and on the command line
+  LawFamily family;
+  std::string_view formula;     // one line, for help texts and `laws`
+  std::string_view parameters;  // the tag keys it reads, with units and ranges
+  std::string_view reference;   // citation, and its equations in Flores et al. (2011)
+  // a(e) of the hysteresis family (nullptr: a = 0, the law is elastic and
+  // ignores e); nullptr for the linear family too.
+  double (*hysteresis)(double restitution);
+  // The restitution is in [0, 1], or in (0, 1] when e = 0 is refused (a(e)
+  // grows without bound as e -> 0).
+  bool restitution_excludes_zero;
+};
+
+// Every law, in table order (LawKind is the index).
+const std::vector<LawInfo>& Laws();
+const LawInfo& Law(LawKind kind);
+
+// Every law's kind, in table order.
+const std::vector<LawKind>& AllLaws();
+
+// The law's name as written in tags and on the command line ("flores", ...).
+std::string_view LawName(LawKind kind);
+
+// "hertz, kelvin-voigt, ...": every name, in table order, for messages.
+const std::string& LawNameList();
+
+// Inverse of LawName; nullopt for an unknown name.
+std::optional<LawKind> ParseLawName(std::string_view name);
+
+// Default floor of the impact velocity v0 (m/s): keeps d'/v0 finite for a
+// contact that starts at rest (a ball settling on the floor).
+inline constexpr double kDefaultMinImpactVelocity = 1e-3;
+
+// Parameters of one law for one pair of geoms, validated once where parsed
+// (ValidateLawParams). Fields a law does not use are ignored by it.
+struct LawParams {
+  LawKind kind = LawKind::kHertz;
+  double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for flores
+  double stiffness = 0.0;         // K, N/m^n, > 0 (hertz family)
+  double exponent = 1.5;          // n, dimensionless, [1, 3] (hertz family)
+  double linear_stiffness = 0.0;  // k, N/m, > 0 (kelvin-voigt)
+  std::optional<double> damping;  // c, N s/m, >= 0 (kelvin-voigt); unset: from e
+  double min_impact_velocity = kDefaultMinImpactVelocity;  // m/s, > 0
+  bool allow_tension = false;     // keep F < 0 instead of clamping to 0
+};
+
+// The kinematic state of one contact point, in the convention above.
+struct ContactState {
+  double depth = 0.0;            // d, m
+  double depth_rate = 0.0;       // d', m/s
+  double impact_velocity = 0.0;  // v0, m/s (floored by min_impact_velocity)
+  double effective_mass = 0.0;   // m_eff along the normal, kg (kelvin-voigt)
+};
+
+// A law's force split into its conservative and dissipative parts.
+struct ContactForce {
+  double total = 0.0;    // F, N (clamped to >= 0 unless allow_tension)
+  double elastic = 0.0;  // the spring part alone, N (K d^n or k d)
+  // Power dissipated by the contact, W: (total - elastic) * d'. It is >= 0
+  // whenever the law dissipates (and the clamp only removes tension).
+  double dissipated_power(double depth_rate) const {
+    return (total - elastic) * depth_rate;
+  }
+};
+
+// What is wrong with a parameter: key, offending value, and the valid range,
+// e.g. {"restitution", 1.5, "must be in [0, 1]"}.
+struct ParamError {
+  std::string key;
+  double value = 0.0;
+  std::string requirement;
+};
+
+// Checks the fields kind uses; nullopt when valid.
+std::optional<ParamError> ValidateLawParams(const LawParams& params);
+
+// The contact force of params.kind at state. Pure; params must be valid.
+ContactForce EvaluateLaw(const LawParams& params, const ContactState& state);
+
+// Elastic energy stored at depth d (J): K d^(n+1)/(n+1), or k d^2/2.
+double ElasticEnergy(const LawParams& params, double depth);
+
+// The dimensionless hysteresis coefficient a of the Hertz family, for which
+// F = K d^n (1 + a d'/v0): 0 for hertz, the law's a(e) otherwise.
+// Not defined for kelvin-voigt (returns 0).
+double HysteresisCoefficient(LawKind kind, double restitution);
+
+// The restitution e_post the law rebounds with from a first impact at
+// restitution e, neglecting gravity during the contact: ExactRebound(a(e)) for
+// the hysteresis family; nullopt for the linear family (its clamped force has
+// no closed form) and for e outside the law's range.
+std::optional<double> EffectiveRestitution(LawKind kind, double restitution);
+
+// The restitution the law reports for an input e: 1 for an elastic law
+// (Hertz), which ignores e, else e.
+double ReportedRestitution(LawKind kind, double restitution);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_LAW_H_

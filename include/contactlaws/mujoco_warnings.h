@@ -1,0 +1,26 @@
+// Copyright contactlaws authors.
+//
+// MuJoCo's messages, kept instead of printed.
+
+#ifndef CONTACTLAWS_MUJOCO_WARNINGS_H_
+#define CONTACTLAWS_MUJOCO_WARNINGS_H_
+
+#include <string>
+#include <vector>
+
+#include "contactlaws/simulation.h"
+
+namespace contactlaws {
+
+// MuJoCo's messages to mju_user_warning. The program installs
+// RecordMujocoWarning, which keeps them (thread-safe) instead of letting
+// MuJoCo print to stdout, where CSV may go. Runs report their warnings from
+// d->warning with counts and note them here; UnreportedMujocoWarnings gives
+// the others (a model's, say), each once with the times it came.
+void RecordMujocoWarning(const char* text);
+void NoteReportedMujocoWarning(const std::string& text);
+std::vector<MujocoWarning> UnreportedMujocoWarnings();
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_MUJOCO_WARNINGS_H_

@@ -1,0 +1,43 @@
+// Copyright contactlaws authors.
+//
+// Whether a scene's timestep resolves its contacts, said before a run, and the
+// likely cause of a run that diverged.
+
+#ifndef CONTACTLAWS_TIMESTEP_ADVICE_H_
+#define CONTACTLAWS_TIMESTEP_ADVICE_H_
+
+#include <string>
+#include <vector>
+
+#include "contactlaws/contact_memory.h"
+#include "contactlaws/estimate.h"
+#include "contactlaws/simulation.h"
+
+namespace contactlaws {
+
+// Each tag's estimated contact at the simulation's current state, and how
+// many steps of the scene's timestep resolve it.
+struct TimestepAdvice {
+  int tag = -1;
+  TagEstimate shortest;
+  double steps = 0;     // per estimated contact duration (inf: not estimated)
+  bool coarse = false;  // steps < kStepsPerContact
+};
+std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim);
+
+// "contactlaw:TAG (g1, g2): timestep H s puts S steps in the estimated
+// contact duration T s (>= 20 needed): use --timestep H' or smaller".
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+
+// "t = T s: contactlaw:TAG (g1, g2): depth D m, depth rate R m/s: WHAT;
+// likely cause: ..." for a run stopped at divergence; advice from before the
+// run names the timestep against the estimated contact duration.
+std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
+                              const std::vector<TimestepAdvice>& advice);
+
+// "contactlaw:TAG (g1, g2)": a pair as messages name it.
+std::string PairName(const Simulation& sim, int pair_index);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_TIMESTEP_ADVICE_H_

@@ -1,0 +1,40 @@
+// Copyright contactlaws authors.
+
+#include "cli/impact_csv.h"
+
+#include <fmt/format.h>
+
+namespace contactlaws::cli {
+
+std::vector<std::string> ImpactColumns() {
+  return {"law", "restitution", "pair", "geom1", "geom2", "index", "time_contact",
+          "time_separation", "impact_velocity", "separation_velocity", "restitution_post",
+          "max_depth", "max_force"};
+}
+
+std::string Field(double value) { return fmt::format("{}", value); }
+
+std::string Field(const std::optional<double>& value) { return value ? Field(*value) : ""; }
+
+std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impact) {
+  const ContactModel& cm = sim.contact_model();
+  const PairTag& tag = cm.tags()[impact.tag];
+  const GeomPair& pair = cm.pairs()[impact.pair];
+  const bool closed = !impact.open;
+  auto if_closed = [closed](double v) { return closed ? Field(v) : std::string(); };
+  return {std::string(LawName(tag.law)),
+          Field(ReportedRestitution(tag.law, pair.params.restitution)),
+          tag.label,
+          ObjectName(sim.model(), mjOBJ_GEOM, pair.named[0]),
+          ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]),
+          Field(impact.index),
+          Field(impact.time_contact),
+          if_closed(impact.time_separation),
+          Field(impact.impact_velocity),
+          if_closed(impact.separation_velocity),
+          if_closed(impact.restitution_post()),
+          Field(impact.max_depth),
+          Field(impact.max_force)};
+}
+
+}  // namespace contactlaws::cli

@@ -1,0 +1,26 @@
+// Copyright contactlaws authors.
+//
+// The impact log as CSV fields, and numbers as the CSV files write them.
+
+#ifndef CONTACTLAWS_CLI_IMPACT_CSV_H_
+#define CONTACTLAWS_CLI_IMPACT_CSV_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contactlaws/contactlaws.h"
+
+namespace contactlaws::cli {
+
+// The impact-log CSV: its columns, and the fields of one impact.
+std::vector<std::string> ImpactColumns();
+std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impact);
+
+// A number in its shortest exact form; an empty field for nullopt.
+std::string Field(double value);
+std::string Field(const std::optional<double>& value);
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_IMPACT_CSV_H_

@@ -1,0 +1,28 @@
+// Copyright contactlaws authors.
+
+#include "cli/report.h"
+
+#include <fmt/format.h>
+
+namespace contactlaws::cli {
+
+void Warn(const std::string& scene, const std::string& what) {
+  fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
+}
+
+std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result) {
+  std::vector<std::string> warnings;
+  if (result.energy_growth) warnings.push_back(*result.energy_growth);
+  for (const MujocoWarning& w : sim.Warnings()) {
+    warnings.push_back(fmt::format("MuJoCo: {} ({} time{})", w.text, w.count,
+                                   w.count == 1 ? "" : "s"));
+    NoteReportedMujocoWarning(w.text);
+  }
+  return warnings;
+}
+
+std::string Cell(const std::optional<double>& value, const char* format) {
+  return value ? fmt::format(fmt::runtime(format), *value) : "-";
+}
+
+}  // namespace contactlaws::cli

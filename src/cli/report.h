@@ -1,0 +1,28 @@
+// Copyright contactlaws authors.
+//
+// What the commands print besides their files: warnings on stderr, table
+// cells.
+
+#ifndef CONTACTLAWS_CLI_REPORT_H_
+#define CONTACTLAWS_CLI_REPORT_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contactlaws/contactlaws.h"
+
+namespace contactlaws::cli {
+
+// "contactlaws: warning: SCENE: WHAT" on stderr.
+void Warn(const std::string& scene, const std::string& what);
+
+// The warnings a finished run leaves: energy growth, MuJoCo's own.
+std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result);
+
+// A table cell: "-" for a value that does not exist.
+std::string Cell(const std::optional<double>& value, const char* format);
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_REPORT_H_

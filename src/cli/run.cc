@@ -1,0 +1,93 @@
+// Copyright contactlaws authors.
+
+#include "cli/commands.h"
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "cli/csv_file.h"
+#include "cli/impact_csv.h"
+#include "cli/report.h"
+
+namespace contactlaws::cli {
+namespace {
+
+void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
+  const ContactModel& cm = sim.contact_model();
+  fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14}\n", "pair", "law", "restitution",
+             "impacts", "first e_post", "max force (N)");
+  for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
+    const PairTag& tag = cm.tags()[t];
+    std::vector<Impact> impacts;
+    for (const Impact& impact : sim.contacts().impacts()) {
+      if (impact.tag == t) impacts.push_back(impact);
+    }
+    const RunSummary s = Summarize(impacts, end_time);
+    fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14.6g}\n", tag.label,
+               LawName(tag.law), tag.law == LawKind::kHertz ? "-" : Field(tag.restitution),
+               s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);
+  }
+}
+
+}  // namespace
+
+
+int RunCommand(const RunArgs& args) {
+  const CommonOptions common = ParseCommon(args);
+  SimulationOptions options = common.simulation;
+  const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
+  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
+  if (args.restitution) {
+    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
+  }
+  const Scene scene(args.scene);
+  std::unique_ptr<Simulation> sim = scene.Make(options);
+
+  // open the outputs before the run: an unwritable path fails now
+  std::optional<CsvFile> trajectory;
+  std::optional<CsvFile> impacts;
+  if (args.output) trajectory.emplace(*args.output);
+  if (args.impacts) impacts.emplace(*args.impacts);
+
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  for (const TimestepAdvice& a : advice) {
+    if (a.coarse && !auto_timestep) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+  }
+  if (trajectory) trajectory->Header(sim->Columns());
+  AdvanceOptions advance;
+  advance.duration = common.duration;
+  advance.sample_rate = trajectory ? common.sample_rate : 0.0;
+  advance.auto_timestep = auto_timestep;
+  const AdvanceResult result =
+      Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
+  if (result.status == AdvanceResult::Status::kInterrupted) {
+    fmt::print(stderr, "contactlaws: interrupted at t = {:.6g} s: no file written\n",
+               sim->time());
+    return kExitInterrupted;
+  }
+  for (const std::string& w : RunWarnings(*sim, result)) Warn(scene.path(), w);
+
+  // what was computed up to a divergence is valid, and written
+  const double end_time =
+      result.divergence ? result.divergence->time : sim->time();
+  if (trajectory) trajectory->Commit();
+  if (impacts) {
+    impacts->Header(ImpactColumns());
+    for (const Impact& impact : sim->contacts().impacts()) {
+      impacts->Fields(ImpactFields(*sim, impact));
+    }
+    impacts->Commit();
+  }
+  PrintRunSummary(*sim, end_time, args.output && *args.output == "-" ? stderr : stdout);
+  if (result.divergence) {
+    fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
+               DivergenceMessage(*sim, *result.divergence, advice));
+    return kExitIncomplete;
+  }
+  return 0;
+}
+
+}  // namespace contactlaws::cli

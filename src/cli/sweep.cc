@@ -1,0 +1,204 @@
+// Copyright contactlaws authors.
+
+#include "cli/sweep.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/csv_file.h"
+#include "cli/impact_csv.h"
+#include "cli/parallel.h"
+#include "cli/report.h"
+#include "scene/number.h"
+
+namespace contactlaws::cli {
+namespace {
+
+// The most runs at a time --jobs takes (an int).
+constexpr long kMaxJobs = 1L << 30;
+
+// Progress lines on stderr, only when it is a terminal.
+class Progress {
+ public:
+  Progress(int total, bool quiet) : total_(total), enabled_(!quiet && isatty(STDERR_FILENO)) {}
+  ~Progress() { Done(); }
+  // Ends the progress line, before anything else is printed.
+  void Done() {
+    if (enabled_ && started_) fmt::print(stderr, "\r\033[K");
+    started_ = false;
+  }
+  void Finished(int k, const std::string& what) {
+    if (!enabled_) return;
+    started_ = true;
+    fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, total_, what);
+    std::fflush(stderr);
+  }
+
+ private:
+  int total_;
+  bool enabled_;
+  bool started_ = false;
+};
+
+RunOutput NotRun(const RunSpec& spec) {
+  RunOutput out;
+  out.status = RunOutput::Status::kNotRun;
+  out.reason = "interrupted before it started";
+  out.restitution = spec.restitution.value_or(0.0);
+  return out;
+}
+
+// One run of a sweep, on any thread. Refused input and divergence make a
+// failed run, not an exception: the sweep goes on.
+RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
+                  const std::vector<TimestepAdvice>& advice, const AdvanceOptions& advance,
+                  Record record) {
+  RunOutput out;
+  out.restitution = spec.restitution.value_or(0.0);
+  try {
+    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
+    const std::vector<std::string> prefix = {std::string(LawName(spec.law)),
+                                             Field(out.restitution)};
+    std::function<void(const std::vector<double>&)> on_row;
+    if (record == Record::kEverything) {
+      on_row = [&](const std::vector<double>& row) {
+        if (!AppendRow(&out.trajectory, prefix, row)) {
+          throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
+                                  sim->time()));
+        }
+      };
+    }
+    const AdvanceResult result = Advance(sim.get(), advance, on_row);
+    double end_time = sim->time();
+    if (result.status == AdvanceResult::Status::kDiverged) {
+      out.status = RunOutput::Status::kFailed;
+      out.reason = "diverged at " + DivergenceMessage(*sim, *result.divergence, advice);
+      end_time = result.divergence->time;
+    } else if (result.status == AdvanceResult::Status::kInterrupted) {
+      out.status = RunOutput::Status::kInterrupted;
+      out.reason = fmt::format("interrupted at t = {:.6g} s", end_time);
+      return out;
+    }
+    out.warnings = RunWarnings(*sim, result);
+    if (record == Record::kEverything) {
+      for (const Impact& impact : sim->contacts().impacts()) {
+        AppendFields(&out.impacts, ImpactFields(*sim, impact));
+      }
+    }
+    for (const Impact& impact : sim->contacts().impacts()) {
+      if (impact.tag == 0) {
+        out.first = impact;
+        break;
+      }
+    }
+    out.summary = Summarize(sim->contacts().impacts(), end_time);
+    out.dissipated = sim->contacts().DissipatedEnergy();
+  } catch (const Error& e) {
+    out.status = RunOutput::Status::kFailed;
+    out.reason = e.what();
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string Describe(const RunSpec& spec) {
+  return spec.restitution ? fmt::format("{} e={}", LawName(spec.law), *spec.restitution)
+                          : std::string(LawName(spec.law));
+}
+
+SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
+  options.overrides.law = spec.law;
+  options.overrides.restitution = spec.restitution;
+  return options;
+}
+
+int Jobs(const std::optional<std::string>& jobs) {
+  if (!jobs) return DefaultJobs();
+  const std::optional<long> n = ParseWholeNumber(*jobs, 1, kMaxJobs);
+  if (!n) Refuse("--jobs", *jobs, "must be a whole number >= 1");
+  return static_cast<int>(*n);
+}
+
+std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
+                                                 const SimulationOptions& options,
+                                                 const std::vector<RunSpec>& specs,
+                                                 bool auto_timestep) {
+  std::set<std::string> warned;
+  std::vector<std::vector<TimestepAdvice>> advices;
+  for (const RunSpec& spec : specs) {
+    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    advices.push_back(AdviseTimestep(sim.get()));
+    if (auto_timestep) continue;  // the steps will resolve the contacts
+    for (const TimestepAdvice& advice : advices.back()) {
+      if (!advice.coarse) continue;
+      const std::string text = CoarseTimestepWarning(*sim, advice);
+      if (warned.insert(text).second) {
+        Warn(scene.path(), specs.size() > 1 ? Describe(spec) + ": " + text : text);
+      }
+    }
+  }
+  return advices;
+}
+
+const char* StatusName(RunOutput::Status status) {
+  switch (status) {
+    case RunOutput::Status::kOk: return "ok";
+    case RunOutput::Status::kFailed: return "failed";
+    case RunOutput::Status::kInterrupted: return "interrupted";
+    case RunOutput::Status::kNotRun: return "not run";
+  }
+  return "?";
+}
+
+int Sweep(const Scene& scene, const SimulationOptions& options,
+          const std::vector<RunSpec>& specs,
+          const std::vector<std::vector<TimestepAdvice>>& advices,
+          const AdvanceOptions& advance, Record record, int jobs, bool quiet,
+          const std::function<void(int, RunOutput&)>& deliver) {
+  Progress progress(static_cast<int>(specs.size()), quiet);
+  int failed = 0;
+  bool interrupted = false;
+  RunInOrder<RunOutput>(
+      static_cast<int>(specs.size()), jobs,
+      [&](int k) { return Execute(scene, options, specs[k], advices[k], advance, record); },
+      [&](int k, RunOutput& out) {
+        progress.Done();  // what deliver or the warnings print starts a line
+        for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
+        if (out.status == RunOutput::Status::kFailed) {
+          ++failed;
+          fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene.path(),
+                     Describe(specs[k]), out.reason);
+        }
+        interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
+                      out.status == RunOutput::Status::kNotRun;
+        deliver(k, out);
+        progress.Finished(k, Describe(specs[k]));
+      },
+      StopRequested, [&](int k) { return NotRun(specs[k]); });
+  progress.Done();
+  if (interrupted) {
+    fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
+    return kExitInterrupted;
+  }
+  return failed ? kExitIncomplete : 0;
+}
+
+std::string CreateDirectory(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) {
+    throw Error(fmt::format("{}: cannot create the output directory ({})", dir, error.message()));
+  }
+  return dir;
+}
+
+}  // namespace contactlaws::cli

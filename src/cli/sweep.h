@@ -1,0 +1,78 @@
+// Copyright contactlaws authors.
+//
+// What compare and restitution share: a sweep of (law, restitution) runs of
+// one scene, validated before any runs, run jobs at a time, delivered in
+// order.
+
+#ifndef CONTACTLAWS_CLI_SWEEP_H_
+#define CONTACTLAWS_CLI_SWEEP_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+#include "contactlaws/contactlaws.h"
+
+namespace contactlaws::cli {
+
+// One (law, restitution) combination of a sweep.
+struct RunSpec {
+  LawKind law = LawKind::kHertz;
+  std::optional<double> restitution;  // nullopt: the scene's
+};
+
+// "flores e=0.5", or the law alone for the scene's restitution.
+std::string Describe(const RunSpec& spec);
+
+// options with spec's law and restitution as overrides.
+SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec);
+
+// --jobs: the number of cores when absent, else a whole number >= 1.
+int Jobs(const std::optional<std::string>& jobs);
+
+// Before any run: every run's tags are validated (bad input costs nothing),
+// and a timestep too coarse for a tag's estimated contact is named once.
+// Returns each run's advice, for its divergence message.
+std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
+                                                 const SimulationOptions& options,
+                                                 const std::vector<RunSpec>& specs,
+                                                 bool auto_timestep);
+
+// What one run of a sweep leaves for the thread that writes, in order.
+struct RunOutput {
+  enum class Status { kOk, kFailed, kInterrupted, kNotRun };
+  Status status = Status::kOk;
+  std::string reason;                 // failed, interrupted
+  std::vector<std::string> warnings;  // for stderr
+  double restitution = 0;             // as reported (1 for Hertz)
+  std::string trajectory;             // CSV lines (compare)
+  std::string impacts;                // CSV lines (compare)
+  RunSummary summary;
+  double dissipated = 0;
+  std::optional<Impact> first;        // the first episode of the first tag
+};
+
+// "ok", "failed", "interrupted", "not run".
+const char* StatusName(RunOutput::Status status);
+
+// What a run records: compare keeps its trajectory and impact log, restitution
+// only the summary.
+enum class Record { kSummary, kEverything };
+
+// Runs every spec (jobs at a time) and hands each output to deliver, in
+// order. Returns the exit status: 0, kExitIncomplete when a run failed,
+// kExitInterrupted after a stop request.
+int Sweep(const Scene& scene, const SimulationOptions& options,
+          const std::vector<RunSpec>& specs,
+          const std::vector<std::vector<TimestepAdvice>>& advices,
+          const AdvanceOptions& advance, Record record, int jobs, bool quiet,
+          const std::function<void(int, RunOutput&)>& deliver);
+
+// Creates dir (and its parents); throws Error naming it when it cannot.
+std::string CreateDirectory(const std::string& dir);
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_SWEEP_H_

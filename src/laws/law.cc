@@ -1,0 +1,139 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/law.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contactlaws/hertz.h"
+#include "contactlaws/hysteresis.h"
+#include "contactlaws/kelvin_voigt.h"
+
+namespace contactlaws {
+
+const LawInfo& Law(LawKind kind) { return Laws()[static_cast<int>(kind)]; }
+
+const std::vector<LawKind>& AllLaws() {
+  static const std::vector<LawKind> kinds = [] {
+    std::vector<LawKind> all;
+    for (const LawInfo& law : Laws()) all.push_back(law.kind);
+    return all;
+  }();
+  return kinds;
+}
+
+std::string_view LawName(LawKind kind) { return Law(kind).name; }
+
+const std::string& LawNameList() {
+  static const std::string list = [] {
+    std::string names;
+    for (const LawInfo& law : Laws()) {
+      if (!names.empty()) names += ", ";
+      names += law.name;
+    }
+    return names;
+  }();
+  return list;
+}
+
+std::optional<LawKind> ParseLawName(std::string_view name) {
+  for (const LawInfo& law : Laws()) {
+    if (law.name == name) return law.kind;
+  }
+  return std::nullopt;
+}
+
+double HysteresisCoefficient(LawKind kind, double restitution) {
+  const LawInfo& law = Law(kind);
+  return law.hysteresis ? law.hysteresis(restitution) : 0.0;
+}
+
+namespace {
+
+// A finite value in [lo, hi] (open ends where asked).
+bool InRange(double v, double lo, double hi, bool lo_open = false) {
+  if (!std::isfinite(v)) return false;
+  if (lo_open ? v <= lo : v < lo) return false;
+  return v <= hi;
+}
+
+bool RestitutionInRange(const LawInfo& law, double e) {
+  return InRange(e, 0.0, 1.0, law.restitution_excludes_zero);
+}
+
+}  // namespace
+
+std::optional<double> EffectiveRestitution(LawKind kind, double restitution) {
+  const LawInfo& law = Law(kind);
+  if (law.family != LawFamily::kHysteresis || !RestitutionInRange(law, restitution)) {
+    return std::nullopt;
+  }
+  return ExactRebound(HysteresisCoefficient(kind, restitution));
+}
+
+double ReportedRestitution(LawKind kind, double restitution) {
+  const LawInfo& law = Law(kind);
+  const bool elastic = law.family == LawFamily::kHysteresis && !law.hysteresis;
+  return elastic ? 1.0 : restitution;
+}
+
+std::optional<ParamError> ValidateLawParams(const LawParams& p) {
+  const LawInfo& law = Law(p.kind);
+  if (!RestitutionInRange(law, p.restitution)) {
+    if (law.restitution_excludes_zero) {
+      return ParamError{"restitution", p.restitution,
+                        "must be in (0, 1] for " + std::string(law.name)};
+    }
+    return ParamError{"restitution", p.restitution, "must be in [0, 1]"};
+  }
+  if (law.family == LawFamily::kHysteresis) {
+    if (!InRange(p.stiffness, 0.0, HUGE_VAL, /*lo_open=*/true)) {
+      return ParamError{"stiffness", p.stiffness, "must be > 0 (N/m^n)"};
+    }
+    if (!InRange(p.exponent, 1.0, 3.0)) {
+      return ParamError{"exponent", p.exponent, "must be in [1, 3]"};
+    }
+  } else if (!InRange(p.linear_stiffness, 0.0, HUGE_VAL, /*lo_open=*/true)) {
+    return ParamError{"linear_stiffness", p.linear_stiffness, "must be > 0 (N/m)"};
+  }
+  if (p.damping && !InRange(*p.damping, 0.0, HUGE_VAL)) {
+    return ParamError{"damping", *p.damping, "must be >= 0 (N s/m)"};
+  }
+  if (!InRange(p.min_impact_velocity, 0.0, HUGE_VAL, /*lo_open=*/true)) {
+    return ParamError{"min_impact_velocity", p.min_impact_velocity, "must be > 0 (m/s)"};
+  }
+  return std::nullopt;
+}
+
+ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
+  ContactForce f;
+  if (s.depth <= 0.0) return f;
+
+  // spring and damper of the law
+  if (Law(p.kind).family == LawFamily::kLinear) {
+    const double c = p.damping ? *p.damping
+                               : KelvinVoigtDamping(p.linear_stiffness, s.effective_mass,
+                                                    p.restitution);
+    f.elastic = p.linear_stiffness * s.depth;
+    f.total = KelvinVoigtForce(p.linear_stiffness, c, s.depth, s.depth_rate);
+  } else {
+    const double a = HysteresisCoefficient(p.kind, p.restitution);
+    f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
+    f.total = HysteresisForce(p.stiffness, p.exponent, a, s.depth, s.depth_rate,
+                              s.impact_velocity);
+  }
+
+  // a contact pushes, it does not pull
+  if (!p.allow_tension) f.total = std::max(f.total, 0.0);
+  return f;
+}
+
+double ElasticEnergy(const LawParams& p, double depth) {
+  if (depth <= 0.0) return 0.0;
+  if (Law(p.kind).family == LawFamily::kLinear) {
+    return 0.5 * p.linear_stiffness * depth * depth;
+  }
+  return HertzEnergy(p.stiffness, p.exponent, depth);
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,305 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/contact_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "contactlaws/kinematics.h"
+#include "mujoco/hooks.h"
+
+namespace contactlaws {
+namespace {
+
+// The warnings of mj_checkPos, mj_checkVel and mj_checkAcc, each of which
+// resets the data when it fires.
+constexpr int kBadStateWarnings[3] = {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC};
+
+bool AllFinite(const mjtNum* x, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(x[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ContactData::ContactData(const ContactModel& model, mjData* d)
+    : model_(model),
+      m_(model.model()),
+      d_(d),
+      episodes_(model.slot_count(), static_cast<int>(model.tags().size())) {
+  contacts_.resize(mjMAXCONPAIR);
+  const size_t points = std::min<size_t>(model.slot_count(), 4 * model.pairs().size());
+  latest_.reserve(points);
+  captured_.reserve(points);
+  proposed_.reserve(model.pairs().size());
+  is_proposed_.assign(model.pairs().size(), 0);
+  previous_qvel_.assign(m_->nv, 0.0);
+  current_qvel_.assign(m_->nv, 0.0);
+  RegisterContactData(d, this);
+}
+
+ContactData::~ContactData() { UnregisterContactData(d_); }
+
+void ContactData::Step() {
+  BeforeStep();
+  mj_step(m_, d_);
+  AfterStep();
+}
+
+void ContactData::BeforeStep() {
+  // the time went back: mj_resetData (or a keyframe) since the last step
+  if (has_current_ && d_->time < current_time_) Reset();
+  for (int i = 0; i < 3; ++i) bad_state_warnings_[i] = d_->warning[kBadStateWarnings[i]].number;
+  for (const Drive& drive : model_.drives()) {
+    drive.Position(d_->time, d_->mocap_pos + 3 * drive.mocap);
+  }
+  RecordStepStart();
+  capture_armed_ = true;
+  advances_unarmed_ = 0;
+  has_capture_ = false;
+}
+
+void ContactData::RecordStepStart() {
+  // no allocation: the buffers have nv entries from the constructor on
+  std::swap(previous_qvel_, current_qvel_);
+  previous_time_ = current_time_;
+  has_previous_ = has_current_;
+  std::copy(d_->qvel, d_->qvel + m_->nv, current_qvel_.begin());
+  current_time_ = d_->time;
+  has_current_ = true;
+}
+
+void ContactData::Reset() {
+  latest_.clear();
+  captured_.clear();
+  capture_armed_ = has_capture_ = false;
+  episodes_.Reset();
+  ledger_.Reset();
+  has_previous_ = has_current_ = false;
+  divergence_.reset();
+}
+
+bool ContactData::ClaimPair(int g1, int g2) {
+  // the first filter call after the passive hook used the list starts the
+  // next collision pass's
+  if (proposals_consumed_) {
+    for (const int p : proposed_) is_proposed_[p] = 0;
+    proposed_.clear();
+    proposals_consumed_ = false;
+  }
+  const int p = model_.FindPair(g1, g2);
+  if (p < 0) return false;
+  if (!is_proposed_[p]) {
+    is_proposed_[p] = 1;
+    proposals_sorted_ = proposals_sorted_ && (proposed_.empty() || proposed_.back() < p);
+    proposed_.push_back(p);
+  }
+  return true;
+}
+
+void ContactData::NoticeUnmanagedStep() {
+  // the time moves on from one evaluation to the next with no step armed
+  // (RK4 moves it 3 times a step, mj_forward never)
+  if (capture_armed_ || !(d_->time > latest_time_) || unmanaged_) return;
+  if (++advances_unarmed_ > kUnarmedAdvancesBeforeWarning) {
+    unmanaged_ = true;
+    mju_warning(
+        "contactlaws: this mjData is stepped without ContactData::BeforeStep/AfterStep "
+        "(plain mj_step): the laws act, but keep no memory of each contact's impact "
+        "velocity; step with ContactData::Step()");
+  }
+}
+
+void ContactData::ApplyForces() {
+  NoticeUnmanagedStep();
+  latest_.clear();
+  latest_time_ = d_->time;
+  ApplyDrives(model_, d_);
+
+  // the tagged pairs the broadphase proposed, in pair order (so that sums do
+  // not depend on the broadphase's order)
+  if (!proposals_sorted_) {
+    std::sort(proposed_.begin(), proposed_.end());
+    proposals_sorted_ = true;
+  }
+  proposals_consumed_ = true;
+  for (const int p : proposed_) {
+    const GeomPair& pair = model_.pairs()[p];
+    const int g0 = pair.geom[0];
+    const int g1 = pair.geom[1];
+    if (FarApart(m_, d_, g0, g1)) continue;
+
+    // MuJoCo's narrowphase: dist < 0 is penetration, frame[0..2] the normal
+    // from geom[0] to geom[1], pos midway between the surfaces
+    mjfCollision collide = mjCOLLISIONFUNC[m_->geom_type[g0]][m_->geom_type[g1]];
+    const int count = std::min(collide(m_, d_, contacts_.data(), g0, g1, 0), pair.slots);
+    for (int i = 0; i < count; ++i) {
+      const mjContact& con = contacts_[i];
+      if (!(-con.dist > 0)) continue;
+      const PointEvaluation e = Evaluate(p, con, i);
+
+      // equal and opposite, at the same point: geom[1] pushed along +normal
+      mjtNum push[3];
+      for (int b = 0; b < 2; ++b) {
+        mju_scl3(push, con.frame, b == 1 ? e.force : -e.force);
+        AddPointForce(m_, d_, pair.body[b], con.pos, push, d_->qfrc_passive);
+      }
+      latest_.push_back(e);
+    }
+  }
+
+  if (capture_armed_) {
+    captured_ = latest_;
+    captured_time_ = latest_time_;
+    capture_armed_ = false;
+    has_capture_ = true;
+  }
+}
+
+PointEvaluation ContactData::Evaluate(int p, const mjContact& con, int i) {
+  const GeomPair& pair = model_.pairs()[p];
+  const mjtNum* normal = con.frame;
+  PointEvaluation e;
+  e.pair = p;
+  e.tag = pair.tag;
+  e.slot = pair.first_slot + i;
+  e.depth = -con.dist;
+
+  // depth rate: approach speed of geom[0] towards geom[1] along the normal
+  mjtNum v0[3], v1[3], relative[3];
+  PointVelocity(pair.body[0], con.pos, v0);
+  PointVelocity(pair.body[1], con.pos, v1);
+  mju_sub3(relative, v0, v1);
+  e.depth_rate = mju_dot3(relative, normal);
+
+  ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
+  if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
+    state.effective_mass = EffectiveMass(m_, d_, pair, con.pos, normal);
+  }
+  const int open = episodes_.OpenEpisode(e.slot);
+  e.touch = open < 0;
+  if (e.touch) {
+    // v0: the rate at the step before first touch, which no force has slowed
+    e.touch_velocity = has_previous_ ? ApproachRate(model_, d_, pair, con.pos, normal,
+                                                    previous_qvel_.data(), previous_time_)
+                                     : e.depth_rate;
+    state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);
+    // the law at the touch itself (d = 0+, d' = v0)
+    const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity,
+                             state.impact_velocity, state.effective_mass};
+    e.touch_power = EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
+  } else {
+    state.impact_velocity = std::max(episodes_.impacts()[open].impact_velocity,
+                                     pair.params.min_impact_velocity);
+  }
+  e.impact_velocity = state.impact_velocity;
+  const ContactForce f = EvaluateLaw(pair.params, state);
+  e.force = f.total;
+  e.elastic_energy = contactlaws::ElasticEnergy(pair.params, e.depth);
+  e.dissipated_power = f.dissipated_power(e.depth_rate);
+  mju_copy3(e.pos, con.pos);
+  mju_copy3(e.normal, normal);
+  return e;
+}
+
+void ContactData::CheckDivergence() {
+  if (divergence_) return;
+  // the deepest contact of the step's start state, relative to its limit
+  const PointEvaluation* deepest = nullptr;
+  bool finite_forces = true;
+  for (const PointEvaluation& e : captured_) {
+    finite_forces = finite_forces && std::isfinite(e.force);
+    const double limit = model_.pairs()[e.pair].depth_limit;
+    if (!deepest || e.depth / limit > deepest->depth / model_.pairs()[deepest->pair].depth_limit) {
+      deepest = &e;
+    }
+  }
+  std::optional<Divergence::Kind> kind;
+  std::string what;
+  for (int i = 0; i < 3 && !kind; ++i) {
+    const mjWarningStat& w = d_->warning[kBadStateWarnings[i]];
+    if (w.number > bad_state_warnings_[i]) {
+      kind = Divergence::Kind::kMujocoReset;
+      what = fmt::format("MuJoCo found NaN, infinity or a value beyond {:g} in {} (dof {}) and "
+                         "reset the state",
+                         mjMAXVAL, i == 0 ? "qpos" : i == 1 ? "qvel" : "qacc", w.lastinfo);
+    }
+  }
+  if (!kind && has_capture_ && d_->time < captured_time_) {
+    kind = Divergence::Kind::kMujocoReset;
+    what = "the time went back during the step (MuJoCo reset the state)";
+  }
+  if (!kind && (!AllFinite(d_->qpos, m_->nq) || !AllFinite(d_->qvel, m_->nv) ||
+                !AllFinite(d_->qacc, m_->nv) || !finite_forces)) {
+    kind = Divergence::Kind::kNonFinite;
+    what = "NaN or infinity in the state or a contact force";
+  }
+  if (!kind && deepest) {
+    const GeomPair& pair = model_.pairs()[deepest->pair];
+    if (deepest->depth > pair.depth_limit) {
+      kind = Divergence::Kind::kTooDeep;
+      what = fmt::format("depth {:.4g} m beyond {:.4g} m ({} of the smaller geom's size)",
+                         deepest->depth, pair.depth_limit, kDivergenceDepthFraction);
+    }
+  }
+  if (!kind) return;
+  Divergence& divergence = divergence_.emplace();
+  divergence.kind = *kind;
+  divergence.time = has_capture_ ? captured_time_ : current_time_;
+  divergence.what = std::move(what);
+  if (deepest) {
+    divergence.pair = deepest->pair;
+    divergence.depth = deepest->depth;
+    divergence.depth_rate = deepest->depth_rate;
+  }
+}
+
+void ContactData::AfterStep() {
+  capture_armed_ = false;
+  CheckDivergence();
+  const bool commit = has_capture_ && !divergence_;
+  has_capture_ = false;
+  if (!commit) return;
+
+  // the energy of the step, the episodes of its start state
+  ledger_.Commit(captured_time_, captured_);
+  episodes_.Commit(captured_time_, captured_);
+
+  // the separation speed is the one the bodies leave with: their rate at
+  // this first state out of contact (the step's start), at the point and
+  // normal last in contact
+  episodes_.CloseVanished([this](int pair, const double pos[3], const double normal[3],
+                                 double last_rate) {
+    return has_current_ ? -ApproachRate(model_, d_, model_.pairs()[pair], pos, normal,
+                                        current_qvel_.data(), current_time_)
+                        : -last_rate;
+  });
+}
+
+TagReading ContactData::Reading(int tag) const {
+  TagReading reading;
+  for (const PointEvaluation& e : latest_) {
+    if (e.tag != tag) continue;
+    if (e.depth > reading.depth) {
+      reading.depth = e.depth;
+      reading.depth_rate = e.depth_rate;
+    }
+    reading.force += e.force;
+  }
+  return reading;
+}
+
+double ContactData::ElasticEnergy() const {
+  double energy = 0;
+  for (const PointEvaluation& e : latest_) energy += e.elastic_energy;
+  return energy;
+}
+
+double ContactData::DissipatedEnergy() const { return ledger_.Dissipated(latest_time_, latest_); }
+
+}  // namespace contactlaws

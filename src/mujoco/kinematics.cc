@@ -1,0 +1,133 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/kinematics.h"
+
+#include <limits>
+
+#include <Eigen/Core>
+
+namespace contactlaws {
+
+void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                   const mjtNum force[3], mjtNum* qfrc) {
+  // the body's nearest ancestor (itself included) with dofs: its last dof
+  int b = body;
+  while (b > 0 && m->body_dofnum[b] == 0) b = m->body_parentid[b];
+  if (b <= 0) return;  // welded to the world (mocap bodies too): no dofs
+  // qfrc_j += f . (lin_j + ang_j x r) = f . lin_j + ang_j . (r x f), with
+  // cdof_j = (ang_j, lin_j) at the subtree com of the body's root
+  mjtNum r[3], moment[3];
+  mju_sub3(r, point, d->subtree_com + 3 * m->body_rootid[body]);
+  mju_cross(moment, r, force);
+  for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
+    const mjtNum* cdof = d->cdof + 6 * j;
+    qfrc[j] += mju_dot3(cdof, moment) + mju_dot3(cdof + 3, force);
+  }
+}
+
+void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
+                   mjtNum vel[3]) {
+  const mjModel* m = model.model();
+  if (const Drive* drive = model.FindDrive(body)) {
+    drive->Velocity(d->time, vel);
+    return;
+  }
+  if (m->body_weldid[body] == 0) {
+    mju_zero3(vel);
+    return;
+  }
+  // cvel: (angular, linear) velocity at the subtree com of the body's root
+  const mjtNum* cvel = d->cvel + 6 * body;
+  mjtNum offset[3], turn[3];
+  mju_sub3(offset, point, d->subtree_com + 3 * m->body_rootid[body]);
+  mju_cross(turn, cvel, offset);
+  mju_add3(vel, cvel + 3, turn);
+}
+
+void NormalJacobian(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+                    const mjtNum normal[3], mjtNum* jn) {
+  using RowJacobian = Eigen::Matrix<mjtNum, 3, Eigen::Dynamic, Eigen::RowMajor>;
+  const int nv = m->nv;
+  const int mark = d->pstack;
+  Eigen::Map<RowJacobian> jac0(mj_stackAlloc(d, 3 * nv), 3, nv);
+  Eigen::Map<RowJacobian> jac1(mj_stackAlloc(d, 3 * nv), 3, nv);
+  mj_jac(m, d, jac0.data(), nullptr, point, pair.body[0]);
+  mj_jac(m, d, jac1.data(), nullptr, point, pair.body[1]);
+  Eigen::Map<Eigen::VectorX<mjtNum>>(jn, nv).noalias() =
+      (jac1 - jac0).transpose() * Eigen::Map<const Eigen::Vector3<mjtNum>>(normal);
+  d->pstack = mark;
+}
+
+double EffectiveMass(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+                     const mjtNum normal[3]) {
+  // 1 / (n^T J M^-1 J^T n), J the relative Jacobian at point
+  const int nv = m->nv;
+  const int mark = d->pstack;
+  Eigen::Map<Eigen::VectorX<mjtNum>> jn(mj_stackAlloc(d, nv), nv);
+  Eigen::Map<Eigen::VectorX<mjtNum>> x(mj_stackAlloc(d, nv), nv);
+  NormalJacobian(m, d, pair, point, normal, jn.data());
+  mj_solveM(m, d, x.data(), jn.data(), 1);
+  const double inverse_mass = jn.dot(x);
+  d->pstack = mark;
+  return inverse_mass > 0 ? 1.0 / inverse_mass : std::numeric_limits<double>::infinity();
+}
+
+double ApproachRate(const ContactModel& model, mjData* d, const GeomPair& pair,
+                    const mjtNum point[3], const mjtNum normal[3], const mjtNum* qvel,
+                    double time) {
+  const mjModel* m = model.model();
+  // (v0 - v1) . n = -(n^T (J1 - J0)) qvel for the dofs; driven bodies through
+  // their prescribed velocity at time
+  const int nv = m->nv;
+  const int mark = d->pstack;
+  mjtNum* jn = mj_stackAlloc(d, nv);
+  NormalJacobian(m, d, pair, point, normal, jn);
+  double rate = -mju_dot(jn, qvel, nv);
+  d->pstack = mark;
+  mjtNum drive_velocity[3];
+  if (const Drive* drive = model.FindDrive(pair.body[0])) {
+    drive->Velocity(time, drive_velocity);
+    rate += mju_dot3(drive_velocity, normal);
+  }
+  if (const Drive* drive = model.FindDrive(pair.body[1])) {
+    drive->Velocity(time, drive_velocity);
+    rate -= mju_dot3(drive_velocity, normal);
+  }
+  return rate;
+}
+
+void ApplyDrives(const ContactModel& model, mjData* d) {
+  const mjModel* m = model.model();
+  for (const Drive& drive : model.drives()) {
+    mjtNum pos[3], delta[3];
+    drive.Position(d->time, pos);
+    mju_sub3(delta, pos, d->xpos + 3 * drive.body);
+    mju_addTo3(d->xpos + 3 * drive.body, delta);
+    mju_addTo3(d->xipos + 3 * drive.body, delta);
+    const int first = m->body_geomadr[drive.body];
+    for (int g = first; g < first + m->body_geomnum[drive.body]; ++g) {
+      mju_addTo3(d->geom_xpos + 3 * g, delta);
+    }
+  }
+}
+
+bool FarApart(const mjModel* m, const mjData* d, int g1, int g2) {
+  const mjtNum r1 = m->geom_rbound[g1];
+  const mjtNum r2 = m->geom_rbound[g2];
+  auto plane_distance = [&](int plane, int other) {
+    const mjtNum* mat = d->geom_xmat + 9 * plane;
+    const mjtNum* p = d->geom_xpos + 3 * plane;
+    const mjtNum* q = d->geom_xpos + 3 * other;
+    return (q[0] - p[0]) * mat[2] + (q[1] - p[1]) * mat[5] + (q[2] - p[2]) * mat[8];
+  };
+  if (r1 > 0 && r2 > 0) {
+    mjtNum dif[3];
+    mju_sub3(dif, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g2);
+    return mju_dot3(dif, dif) > (r1 + r2) * (r1 + r2);
+  }
+  if (m->geom_type[g1] == mjGEOM_PLANE && r2 > 0) return plane_distance(g1, g2) > r2;
+  if (m->geom_type[g2] == mjGEOM_PLANE && r1 > 0) return plane_distance(g2, g1) > r1;
+  return false;
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,326 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/contact_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "contactlaws/hertz.h"
+#include "contactlaws/model_io.h"
+#include "scene/model_queries.h"
+#include "scene/number.h"
+#include "scene/tags.h"
+
+namespace contactlaws {
+
+namespace {
+
+bool StartsWith(std::string_view s, std::string_view prefix) {
+  return s.substr(0, prefix.size()) == prefix;
+}
+
+uint64_t PairKey(int g1, int g2) {
+  if (g1 > g2) std::swap(g1, g2);
+  return (static_cast<uint64_t>(g1) << 32) | static_cast<uint32_t>(g2);
+}
+
+}  // namespace
+
+// Resolves one tag's geom1/geom2 value to geom ids.
+class TagResolver {
+ public:
+  TagResolver(const mjModel* m, std::string_view source, std::string_view tag)
+      : m_(m), source_(source), tag_(tag) {}
+
+  [[noreturn]] void Fail(std::string_view what) const {
+    throw Error(fmt::format("{}: {}{}: {}", source_, kPairTagPrefix, tag_, what));
+  }
+
+  std::vector<int> Geoms(std::string_view key, const std::string& value,
+                         bool* is_group) const {
+    std::vector<int> geoms;
+    *is_group = StartsWith(value, "group:");
+    if (*is_group) {
+      const std::optional<long> n = ParseWholeNumber(value.substr(6), 0, mjNGROUP - 1);
+      if (!n) {
+        Fail(fmt::format("{}={}: the group must be a whole number in [0, {}]",
+                         key, value, mjNGROUP - 1));
+      }
+      for (int g = 0; g < m_->ngeom; ++g) {
+        if (m_->geom_group[g] == *n) geoms.push_back(g);
+      }
+      if (geoms.empty()) {
+        Fail(fmt::format("{}={}: no geom is in group {}", key, value, *n));
+      }
+    } else {
+      int g = mj_name2id(m_, mjOBJ_GEOM, value.c_str());
+      if (g < 0) Fail(fmt::format("{}={}: no geom is named '{}'", key, value, value));
+      geoms.push_back(g);
+    }
+    return geoms;
+  }
+
+ private:
+  const mjModel* m_;
+  std::string_view source_;
+  std::string_view tag_;
+};
+
+void Drive::Position(double t, double pos[3]) const {
+  const double s = amplitude * std::sin(omega * t + phase);
+  for (int i = 0; i < 3; ++i) pos[i] = ref[i] + axis[i] * s;
+}
+
+void Drive::Velocity(double t, double vel[3]) const {
+  const double c = amplitude * omega * std::cos(omega * t + phase);
+  for (int i = 0; i < 3; ++i) vel[i] = axis[i] * c;
+}
+
+ContactModel::ContactModel(const mjModel* m, std::string source,
+                           const Overrides& overrides)
+    : model_(m), source_(std::move(source)) {
+  body_drive_.assign(m->nbody, -1);
+  geom_tagged_.assign(m->ngeom, 0);
+  ReadDrives();
+  ReadTags(overrides);
+}
+
+void ContactModel::ReadDrives() {
+  const mjModel* m = model_;
+  for (int i = 0; i < m->ntext; ++i) {
+    std::string_view name = TextName(m, i);
+    if (!StartsWith(name, kDriveTagPrefix)) continue;
+    DriveTagSpec spec = ParseDriveTag(source_, name, TextData(m, i));
+    auto fail = [&](std::string_view what) {
+      throw Error(fmt::format("{}: {}: {}", source_, name, what));
+    };
+    Drive drive;
+    drive.label = spec.label;
+    drive.body = mj_name2id(m, mjOBJ_BODY, spec.body.c_str());
+    if (drive.body < 0) {
+      fail(fmt::format("body={}: no body is named '{}'", spec.body, spec.body));
+    }
+    drive.mocap = m->body_mocapid[drive.body];
+    if (drive.mocap < 0) {
+      fail(fmt::format("body={}: a driven body must be declared mocap=\"true\"",
+                       spec.body));
+    }
+    if (body_drive_[drive.body] >= 0) {
+      fail(fmt::format("body={}: the body is driven twice", spec.body));
+    }
+    for (int k = 0; k < 3; ++k) drive.ref[k] = m->body_pos[3 * drive.body + k];
+    drive.axis = spec.axis;
+    drive.amplitude = spec.amplitude;
+    drive.omega = spec.omega;
+    drive.phase = spec.phase;
+    body_drive_[drive.body] = static_cast<int>(drives_.size());
+    drives_.push_back(drive);
+  }
+}
+
+namespace {
+
+// The law of a tag with the overrides applied, and every parameter that does
+// not depend on the pair (materials give the stiffness per pair).
+LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
+                     const TagResolver& resolve) {
+  LawParams base;
+  base.kind = overrides.law ? *overrides.law : *spec.law;
+  const std::optional<double> restitution =
+      overrides.restitution ? overrides.restitution : spec.restitution;
+  if (!restitution && base.kind != LawKind::kHertz) {
+    resolve.Fail(fmt::format("missing key restitution (law={} needs it)", LawName(base.kind)));
+  }
+  base.restitution = restitution.value_or(1.0);
+  base.exponent = spec.exponent.value_or(1.5);
+  base.damping = spec.damping;
+  base.min_impact_velocity = spec.min_impact_velocity.value_or(kDefaultMinImpactVelocity);
+  base.allow_tension = spec.allow_tension.value_or(false);
+  const bool materials = spec.youngs1.has_value();
+  if (Law(base.kind).family == LawFamily::kLinear) {
+    // linear: linear_stiffness, or stiffness when the exponent is 1 or absent
+    if (spec.linear_stiffness) {
+      base.linear_stiffness = *spec.linear_stiffness;
+    } else if (spec.stiffness && (!spec.exponent || *spec.exponent == 1.0)) {
+      base.linear_stiffness = *spec.stiffness;
+    } else {
+      resolve.Fail(fmt::format("law={} needs linear_stiffness (N/m), or stiffness with "
+                               "exponent 1 or absent",
+                               LawName(base.kind)));
+    }
+  } else if (spec.stiffness) {
+    base.stiffness = *spec.stiffness;
+  } else if (!materials) {
+    resolve.Fail(fmt::format(
+        "missing key stiffness (or youngs1 poisson1 youngs2 poisson2) for law={}",
+        LawName(base.kind)));
+  }
+  return base;
+}
+
+// Why the law cannot act on geoms g1, g2, or nullptr.
+const char* PairProblem(const mjModel* m, int g1, int g2) {
+  const int b1 = m->geom_bodyid[g1];
+  const int b2 = m->geom_bodyid[g2];
+  if (!mjCOLLISIONFUNC[std::min(m->geom_type[g1], m->geom_type[g2])]
+                      [std::max(m->geom_type[g1], m->geom_type[g2])]) {
+    return "MuJoCo has no collision function for these geom types";
+  }
+  if (m->body_weldid[b1] == m->body_weldid[b2]) {
+    return "the two geoms belong to the same body (or to bodies welded together)";
+  }
+  if (IsExcluded(m, b1, b2)) return "the bodies are excluded by <contact><exclude>";
+  return nullptr;
+}
+
+// The stiffness of two materials for the pair's radii (paper eqs. 2-3).
+double MaterialStiffness(const mjModel* m, int g1, int g2, const PairTagSpec& spec,
+                         const std::string& pair_name, const TagResolver& resolve) {
+  const std::optional<double> r1 = HertzRadius(m, g1);
+  const std::optional<double> r2 = HertzRadius(m, g2);
+  if (!r1 || !r2 || (std::isinf(*r1) && std::isinf(*r2))) {
+    resolve.Fail(fmt::format(
+        "{}: materials (youngs1 ...) need sphere, capsule or plane geoms, not both planes; "
+        "give stiffness instead",
+        pair_name));
+  }
+  return HertzSphereStiffness(*r1, *r2, MaterialCompliance(*spec.youngs1, *spec.poisson1),
+                              MaterialCompliance(*spec.youngs2, *spec.poisson2));
+}
+
+// Refuses a model whose flags keep the hooks from ever acting.
+void CheckFlags(const mjModel* m, const std::string& source, size_t tags) {
+  if (tags == 0) return;
+  // the filter hook, through which the broadphase's proposals come, is never
+  // called without collision detection or for dynamic pairs
+  if (m->opt.disableflags & mjDSBL_CONTACT) {
+    throw Error(fmt::format(
+        "{}: <flag contact=\"disable\"/> turns off collision detection, so the contact "
+        "laws of {} tag(s) would never act: remove the flag",
+        source, tags));
+  }
+  if (m->opt.collision == mjCOL_PAIR) {
+    throw Error(fmt::format(
+        "{}: <option collision=\"predefined\"/> checks only <contact><pair>, which the "
+        "tags cannot use, so the contact laws of {} tag(s) would never act: use "
+        "collision=\"all\" or \"dynamic\"",
+        source, tags));
+  }
+  // MuJoCo would return from mj_passive before calling our hook
+  if (m->opt.disableflags & mjDSBL_PASSIVE) {
+    throw Error(fmt::format(
+        "{}: <flag passive=\"disable\"/> turns off mjcb_passive, so the contact "
+        "laws of {} tag(s) would never act: remove the flag",
+        source, tags));
+  }
+}
+
+}  // namespace
+
+void ContactModel::ReadTags(const Overrides& overrides) {
+  const mjModel* m = model_;
+  for (int i = 0; i < m->ntext; ++i) {
+    const std::string_view name = TextName(m, i);
+    if (!StartsWith(name, kPairTagPrefix)) continue;
+    const PairTagSpec spec = ParsePairTag(source_, name, TextData(m, i));
+    const TagResolver resolve(m, source_, spec.label);
+    const LawParams base = ResolveLaw(spec, overrides, resolve);
+
+    PairTag tag;
+    tag.label = spec.label;
+    tag.geom1 = spec.geom1;
+    tag.geom2 = spec.geom2;
+    tag.law = base.kind;
+    tag.restitution = base.restitution;
+    AddPairs(spec, base, resolve, &tag);
+    tags_.push_back(std::move(tag));
+  }
+  CheckFlags(m, source_, tags_.size());
+}
+
+void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
+                            const TagResolver& resolve, PairTag* tag) {
+  const mjModel* m = model_;
+  bool group1 = false;
+  bool group2 = false;
+  const std::vector<int> set1 = resolve.Geoms("geom1", spec.geom1, &group1);
+  const std::vector<int> set2 = resolve.Geoms("geom2", spec.geom2, &group2);
+  const bool explicit_pair = !group1 && !group2;
+  const int tag_index = static_cast<int>(tags_.size());
+  for (const int g1 : set1) {
+    for (const int g2 : set2) {
+      if (g1 == g2) {
+        if (explicit_pair) resolve.Fail("geom1 and geom2 are the same geom");
+        continue;
+      }
+      const std::string pair_name =
+          fmt::format("({}, {})", ObjectName(m, mjOBJ_GEOM, g1), ObjectName(m, mjOBJ_GEOM, g2));
+      // pairs a law cannot act on: an error when named, skipped in a group
+      if (const char* problem = PairProblem(m, g1, g2)) {
+        if (explicit_pair) resolve.Fail(fmt::format("{}: {}", pair_name, problem));
+        continue;
+      }
+      if (IsExplicitPair(m, g1, g2)) {
+        // the filter hook never sees <pair>: MuJoCo's constraint would stay
+        resolve.Fail(fmt::format(
+            "{} is also a <contact><pair>, which bypasses the contact filter: remove one of "
+            "the two",
+            pair_name));
+      }
+      const uint64_t key = PairKey(g1, g2);
+      if (const auto found = pair_index_.find(key); found != pair_index_.end()) {
+        const int other = pairs_[found->second].tag;
+        if (other == tag_index) continue;  // group:N with group:N
+        resolve.Fail(fmt::format("{} is already tagged by {}{}", pair_name, kPairTagPrefix,
+                                 tags_[other].label));
+      }
+
+      GeomPair pair;
+      const bool swap = m->geom_type[g1] > m->geom_type[g2];
+      pair.geom = swap ? std::array<int, 2>{g2, g1} : std::array<int, 2>{g1, g2};
+      pair.body = {m->geom_bodyid[pair.geom[0]], m->geom_bodyid[pair.geom[1]]};
+      pair.named = {g1, g2};
+      pair.tag = tag_index;
+      pair.params = base;
+      pair.first_slot = slot_count_;
+      pair.slots = MaxContacts(m->geom_type[g1], m->geom_type[g2]);
+      pair.depth_limit = kDivergenceDepthFraction * std::min(GeomSize(m, g1), GeomSize(m, g2));
+      // stiffness from materials, per pair: radii differ
+      if (spec.youngs1 && Law(base.kind).family == LawFamily::kHysteresis) {
+        pair.params.stiffness = MaterialStiffness(m, g1, g2, spec, pair_name, resolve);
+      }
+      if (const std::optional<ParamError> e = ValidateLawParams(pair.params)) {
+        resolve.Fail(fmt::format("{}={} {}", e->key, e->value, e->requirement));
+      }
+
+      slot_count_ += pair.slots;
+      pair_index_.emplace(key, static_cast<int>(pairs_.size()));
+      geom_tagged_[g1] = geom_tagged_[g2] = 1;
+      tag->pairs.push_back(static_cast<int>(pairs_.size()));
+      pairs_.push_back(pair);
+    }
+  }
+  if (tag->pairs.empty()) {
+    resolve.Fail(fmt::format("geom1={} geom2={} cover no pair of geoms that can touch",
+                             spec.geom1, spec.geom2));
+  }
+}
+
+int ContactModel::FindPair(int g1, int g2) const {
+  if (!geom_tagged_[g1] || !geom_tagged_[g2]) return -1;
+  auto found = pair_index_.find(PairKey(g1, g2));
+  return found == pair_index_.end() ? -1 : found->second;
+}
+
+const Drive* ContactModel::FindDrive(int body) const {
+  const int i = body_drive_[body];
+  return i < 0 ? nullptr : &drives_[i];
+}
+
+}  // namespace contactlaws

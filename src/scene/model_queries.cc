@@ -1,0 +1,79 @@
+// Copyright contactlaws authors.
+
+#include "scene/model_queries.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+#include "contactlaws/contact_model.h"
+
+namespace contactlaws {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+std::string_view TextName(const mjModel* m, int i) {
+  return m->names + m->name_textadr[i];
+}
+
+std::string_view TextData(const mjModel* m, int i) {
+  const char* data = m->text_data + m->text_adr[i];
+  return std::string_view(data, strnlen(data, m->text_size[i]));
+}
+
+int MaxContacts(int type1, int type2) {
+  if (type1 == mjGEOM_SPHERE || type2 == mjGEOM_SPHERE ||
+      type1 == mjGEOM_ELLIPSOID || type2 == mjGEOM_ELLIPSOID) {
+    return 1;
+  }
+  return mjMAXCONPAIR;
+}
+
+std::optional<double> HertzRadius(const mjModel* m, int g) {
+  switch (m->geom_type[g]) {
+    case mjGEOM_PLANE: return kInfinity;
+    case mjGEOM_SPHERE:
+    case mjGEOM_CAPSULE: return m->geom_size[3 * g];
+    default: return std::nullopt;
+  }
+}
+
+bool IsExcluded(const mjModel* m, int b1, int b2) {
+  const int s1 = ((b1 + 1) << 16) + b2 + 1;
+  const int s2 = ((b2 + 1) << 16) + b1 + 1;
+  for (int i = 0; i < m->nexclude; ++i) {
+    if (m->exclude_signature[i] == s1 || m->exclude_signature[i] == s2) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool IsExplicitPair(const mjModel* m, int g1, int g2) {
+  for (int i = 0; i < m->npair; ++i) {
+    if ((m->pair_geom1[i] == g1 && m->pair_geom2[i] == g2) ||
+        (m->pair_geom1[i] == g2 && m->pair_geom2[i] == g1)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+double GeomSize(const mjModel* m, int g) {
+  const mjtNum* size = m->geom_size + 3 * g;
+  switch (m->geom_type[g]) {
+    case mjGEOM_PLANE:
+    case mjGEOM_HFIELD: return kInfinity;
+    case mjGEOM_SPHERE:
+    case mjGEOM_CAPSULE: return size[0];
+    case mjGEOM_CYLINDER: return std::min(size[0], size[1]);
+    case mjGEOM_ELLIPSOID:
+    case mjGEOM_BOX: return std::min({size[0], size[1], size[2]});
+    default: return m->geom_rbound[g];
+  }
+}
+
+}  // namespace contactlaws

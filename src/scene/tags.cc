@@ -1,0 +1,274 @@
+// Copyright contactlaws authors.
+
+#include "scene/tags.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "scene/number.h"
+
+namespace contactlaws {
+
+namespace {
+
+// key=value words of a tag's data, in order.
+struct KeyValue {
+  std::string_view key;
+  std::string_view value;
+};
+
+bool IsSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+         c == '\f';
+}
+
+// Builds messages "SOURCE: TAG: ..." for one tag.
+class TagContext {
+ public:
+  TagContext(std::string_view source, std::string_view name)
+      : source_(source), name_(name) {}
+
+  [[noreturn]] void Fail(std::string_view what) const {
+    throw Error(fmt::format("{}: {}: {}", source_, name_, what));
+  }
+
+  [[noreturn]] void FailValue(std::string_view key, std::string_view value,
+                              std::string_view requirement) const {
+    Fail(fmt::format("{}={} {}", key, value, requirement));
+  }
+
+  // Splits data into key=value words, refusing malformed and repeated keys
+  // and keys not in allowed.
+  template <size_t N>
+  std::vector<KeyValue> Split(std::string_view data,
+                              const std::array<std::string_view, N>& allowed) const {
+    std::vector<KeyValue> words;
+    size_t i = 0;
+    while (i < data.size()) {
+      while (i < data.size() && IsSpace(data[i])) ++i;
+      size_t start = i;
+      while (i < data.size() && !IsSpace(data[i])) ++i;
+      if (start == i) break;
+      std::string_view word = data.substr(start, i - start);
+      size_t eq = word.find('=');
+      if (eq == std::string_view::npos || eq == 0) {
+        Fail(fmt::format("'{}' is not of the form key=value", word));
+      }
+      KeyValue kv{word.substr(0, eq), word.substr(eq + 1)};
+      if (std::find(allowed.begin(), allowed.end(), kv.key) == allowed.end()) {
+        std::string_view hint = NearestWord(kv.key, allowed.data(), N);
+        Fail(hint.empty()
+                 ? fmt::format("unknown key '{}'", kv.key)
+                 : fmt::format("unknown key '{}' (did you mean '{}'?)", kv.key,
+                               hint));
+      }
+      for (const KeyValue& seen : words) {
+        if (seen.key == kv.key) {
+          Fail(fmt::format("key '{}' is given twice", kv.key));
+        }
+      }
+      if (kv.value.empty()) FailValue(kv.key, "", "has no value");
+      words.push_back(kv);
+    }
+    return words;
+  }
+
+  double Number(const KeyValue& kv) const {
+    std::optional<double> v = ParseNumber(kv.value);
+    if (!v) FailValue(kv.key, kv.value, "is not a finite number");
+    return *v;
+  }
+
+  // A number in (0, inf).
+  double Positive(const KeyValue& kv, std::string_view unit) const {
+    double v = Number(kv);
+    if (!(v > 0.0)) FailValue(kv.key, kv.value, fmt::format("must be > 0 ({})", unit));
+    return v;
+  }
+
+ private:
+  std::string_view source_;
+  std::string_view name_;
+};
+
+std::string_view Label(const TagContext& ctx, std::string_view name,
+                       std::string_view prefix) {
+  // (a name shorter than the prefix made substr throw std::out_of_range)
+  if (name.substr(0, prefix.size()) != prefix) {
+    ctx.Fail(fmt::format("the tag name must start with '{}'", prefix));
+  }
+  std::string_view label = name.substr(prefix.size());
+  if (label.empty()) ctx.Fail("the tag has an empty label");
+  return label;
+}
+
+}  // namespace
+
+std::string_view NearestWord(std::string_view word,
+                             const std::string_view* candidates, size_t count) {
+  // Levenshtein distance, accepting at most a third of the word's length
+  std::string_view best;
+  size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+  std::vector<size_t> row;
+  for (size_t c = 0; c < count; ++c) {
+    std::string_view cand = candidates[c];
+    row.resize(cand.size() + 1);
+    for (size_t j = 0; j <= cand.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= word.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= cand.size(); ++j) {
+        size_t up = row[j];
+        size_t cost = word[i - 1] == cand[j - 1] ? 0 : 1;
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
+        diagonal = up;
+      }
+    }
+    if (row[cand.size()] < best_distance) {
+      best_distance = row[cand.size()];
+      best = cand;
+    }
+  }
+  return best;
+}
+
+PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
+                         std::string_view data) {
+  TagContext ctx(source, name);
+  PairTagSpec spec;
+  spec.label = std::string(Label(ctx, name, kPairTagPrefix));
+
+  for (const KeyValue& kv : ctx.Split(data, kPairKeys)) {
+    const std::string_view k = kv.key;
+    if (k == "geom1") {
+      spec.geom1 = std::string(kv.value);
+    } else if (k == "geom2") {
+      spec.geom2 = std::string(kv.value);
+    } else if (k == "law") {
+      spec.law = ParseLawName(kv.value);
+      if (!spec.law) {
+        ctx.FailValue(k, kv.value, fmt::format("is not a law ({})", LawNameList()));
+      }
+    } else if (k == "restitution") {
+      spec.restitution = ctx.Number(kv);
+      if (*spec.restitution < 0.0 || *spec.restitution > 1.0) {
+        ctx.FailValue(k, kv.value, "must be in [0, 1]");
+      }
+    } else if (k == "stiffness") {
+      spec.stiffness = ctx.Positive(kv, "N/m^n");
+    } else if (k == "exponent") {
+      spec.exponent = ctx.Number(kv);
+      if (*spec.exponent < 1.0 || *spec.exponent > 3.0) {
+        ctx.FailValue(k, kv.value, "must be in [1, 3]");
+      }
+    } else if (k == "linear_stiffness") {
+      spec.linear_stiffness = ctx.Positive(kv, "N/m");
+    } else if (k == "damping") {
+      spec.damping = ctx.Number(kv);
+      if (*spec.damping < 0.0) ctx.FailValue(k, kv.value, "must be >= 0 (N s/m)");
+    } else if (k == "min_impact_velocity") {
+      spec.min_impact_velocity = ctx.Positive(kv, "m/s");
+    } else if (k == "allow_tension") {
+      if (kv.value == "true" || kv.value == "1") {
+        spec.allow_tension = true;
+      } else if (kv.value == "false" || kv.value == "0") {
+        spec.allow_tension = false;
+      } else {
+        ctx.FailValue(k, kv.value, "must be true or false");
+      }
+    } else if (k == "youngs1" || k == "youngs2") {
+      (k == "youngs1" ? spec.youngs1 : spec.youngs2) = ctx.Positive(kv, "Pa");
+    } else if (k == "poisson1" || k == "poisson2") {
+      double nu = ctx.Number(kv);
+      if (!(nu > -1.0 && nu < 0.5)) {
+        ctx.FailValue(k, kv.value, "must be in (-1, 0.5)");
+      }
+      (k == "poisson1" ? spec.poisson1 : spec.poisson2) = nu;
+    }
+  }
+
+  // keys every tag needs, and keys that go together
+  if (spec.geom1.empty()) ctx.Fail("missing key geom1");
+  if (spec.geom2.empty()) ctx.Fail("missing key geom2");
+  if (!spec.law) ctx.Fail("missing key law");
+  const int materials = spec.youngs1.has_value() + spec.poisson1.has_value() +
+                        spec.youngs2.has_value() + spec.poisson2.has_value();
+  if (materials != 0 && materials != 4) {
+    const char* missing = !spec.youngs1    ? "youngs1"
+                          : !spec.poisson1 ? "poisson1"
+                          : !spec.youngs2  ? "youngs2"
+                                           : "poisson2";
+    ctx.Fail(fmt::format(
+        "missing key {} (materials need youngs1 poisson1 youngs2 poisson2)",
+        missing));
+  }
+  if (materials == 4 && spec.stiffness) {
+    ctx.Fail("stiffness and materials (youngs1 ...) exclude each other");
+  }
+  return spec;
+}
+
+DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
+                           std::string_view data) {
+  TagContext ctx(source, name);
+  DriveTagSpec spec;
+  spec.label = std::string(Label(ctx, name, kDriveTagPrefix));
+  bool has_amplitude = false;
+  bool has_omega = false;
+
+  for (const KeyValue& kv : ctx.Split(data, kDriveKeys)) {
+    const std::string_view k = kv.key;
+    if (k == "body") {
+      spec.body = std::string(kv.value);
+    } else if (k == "motion") {
+      if (kv.value != "sine") ctx.FailValue(k, kv.value, "must be sine");
+    } else if (k == "axis") {
+      if (kv.value == "x") {
+        spec.axis = {1, 0, 0};
+      } else if (kv.value == "y") {
+        spec.axis = {0, 1, 0};
+      } else if (kv.value == "z") {
+        spec.axis = {0, 0, 1};
+      } else {
+        // ax,ay,az
+        std::array<double, 3> a{};
+        std::string_view rest = kv.value;
+        for (int i = 0; i < 3; ++i) {
+          size_t comma = rest.find(',');
+          std::string_view part = rest.substr(0, comma);
+          std::optional<double> v = ParseNumber(part);
+          if (!v || (i < 2) == (comma == std::string_view::npos)) {
+            ctx.FailValue(k, kv.value, "must be x, y, z or ax,ay,az");
+          }
+          a[i] = *v;
+          rest = comma == std::string_view::npos ? std::string_view()
+                                                 : rest.substr(comma + 1);
+        }
+        double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        if (!(norm > 0.0) || !std::isfinite(norm)) {
+          ctx.FailValue(k, kv.value, "must be a nonzero vector");
+        }
+        spec.axis = {a[0] / norm, a[1] / norm, a[2] / norm};
+      }
+    } else if (k == "amplitude") {
+      spec.amplitude = ctx.Number(kv);
+      has_amplitude = true;
+    } else if (k == "omega") {
+      spec.omega = ctx.Number(kv);
+      has_omega = true;
+    } else if (k == "phase") {
+      spec.phase = ctx.Number(kv);
+    }
+  }
+  if (spec.body.empty()) ctx.Fail("missing key body");
+  if (!has_amplitude) ctx.Fail("missing key amplitude");
+  if (!has_omega) ctx.Fail("missing key omega");
+  return spec;
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,80 @@
+// Copyright contactlaws authors.
+//
+// The tag grammar, parsed without MuJoCo (so it can be tested and fuzzed on
+// its own). A tag is an MJCF <custom><text> entry:
+//
+//   <text name="contactlaw:LABEL"   data="key=value key=value ..."/>
+//   <text name="contactdrive:LABEL" data="key=value key=value ..."/>
+//
+// Values contain no white space. contactlaw keys: see kPairKeys; contactdrive
+// keys: see kDriveKeys. Each key at most once per tag.
+
+#ifndef CONTACTLAWS_SCENE_TAGS_H_
+#define CONTACTLAWS_SCENE_TAGS_H_
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "contactlaws/law.h"
+
+namespace contactlaws {
+
+inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
+inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
+
+inline constexpr std::array<std::string_view, 14> kPairKeys = {
+    "geom1",         "geom2",    "law",      "restitution",
+    "stiffness",     "exponent", "linear_stiffness", "damping",
+    "min_impact_velocity", "allow_tension", "youngs1", "poisson1",
+    "youngs2",       "poisson2"};
+
+inline constexpr std::array<std::string_view, 6> kDriveKeys = {
+    "body", "motion", "axis", "amplitude", "omega", "phase"};
+
+// A contactlaw tag as written, before it meets a model: numbers parsed and
+// range-checked where the range does not depend on the law.
+struct PairTagSpec {
+  std::string label;  // the tag name after "contactlaw:"
+  std::string geom1;  // a geom name, or "group:N"
+  std::string geom2;
+  std::optional<LawKind> law;
+  std::optional<double> restitution;
+  std::optional<double> stiffness;
+  std::optional<double> exponent;
+  std::optional<double> linear_stiffness;
+  std::optional<double> damping;
+  std::optional<double> min_impact_velocity;
+  std::optional<bool> allow_tension;
+  // materials: E in Pa (> 0), nu in (-1, 0.5); all four or none
+  std::optional<double> youngs1, poisson1, youngs2, poisson2;
+};
+
+// A contactdrive tag: the body's position is prescribed as
+//   p(t) = p_ref + axis * amplitude * sin(omega t + phase),
+// p_ref the body's pos in the MJCF, axis a unit vector.
+struct DriveTagSpec {
+  std::string label;
+  std::string body;
+  std::array<double, 3> axis = {0.0, 0.0, 1.0};  // normalized
+  double amplitude = 0.0;                        // m
+  double omega = 0.0;                            // rad/s
+  double phase = 0.0;                            // rad
+};
+
+// Parse one tag. name is the full <text> name, data its data; source names the
+// file in messages. Throws Error naming source, tag, key and value.
+PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
+                         std::string_view data);
+DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
+                           std::string_view data);
+
+// The candidate closest to word by edit distance, for "did you mean" hints;
+// empty when nothing is close.
+std::string_view NearestWord(std::string_view word,
+                             const std::string_view* candidates, size_t count);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_SCENE_TAGS_H_

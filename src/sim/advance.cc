@@ -1,0 +1,133 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/advance.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace contactlaws {
+namespace {
+
+// Set by RequestStop (a signal handler among others): lock-free, so
+// async-signal-safe, and read once per step by every running Advance.
+std::atomic<bool> stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+// Watches the ledger's total of an undriven scene.
+class EnergyWatch {
+ public:
+  explicit EnergyWatch(const Simulation& sim) : enabled_(sim.Undriven()) {}
+  bool enabled() const { return enabled_; }
+  // At a state after mj_forward.
+  void Observe(const Simulation& sim) {
+    if (!enabled_) return;
+    const EnergyLedger e = sim.Energy();
+    const double total = e.total();
+    if (!started_) {
+      started_ = true;
+      initial_ = total;
+      scale_ = std::abs(total);
+    }
+    scale_ = std::max(scale_, e.kinetic);
+    const double growth = total - initial_;
+    if (growth > worst_growth_) {
+      worst_growth_ = growth;
+      worst_time_ = sim.time();
+    }
+  }
+  std::optional<std::string> Report() const {
+    if (!enabled_ || !(worst_growth_ > kEnergyGrowthTolerance * scale_)) return std::nullopt;
+    return fmt::format(
+        "the total energy of this undriven scene grew by {:.4g} J ({:.3g}% of {:.4g} J, "
+        "tolerance {}%) by t = {:.6g} s: the integration adds energy, likely a timestep too "
+        "coarse for the contact",
+        worst_growth_, 100 * worst_growth_ / scale_, scale_, 100 * kEnergyGrowthTolerance,
+        worst_time_);
+  }
+
+ private:
+  bool enabled_;
+  bool started_ = false;
+  double initial_ = 0;
+  double scale_ = 0;
+  double worst_growth_ = 0;
+  double worst_time_ = 0;
+};
+
+}  // namespace
+
+void RequestStop() { stop_requested.store(true, std::memory_order_relaxed); }
+
+bool StopRequested() { return stop_requested.load(std::memory_order_relaxed); }
+
+AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
+                      const std::function<void(const std::vector<double>&)>& on_row) {
+  std::optional<AutoTimestep> stepper;
+  if (options.auto_timestep) stepper.emplace(sim->contacts(), *options.auto_timestep);
+  // times closer than this are the same grid time: half a fixed step, or a
+  // nanosecond with auto steps (which land on the grid)
+  const double tolerance = stepper ? 1e-9 : 0.5 * sim->model()->opt.timestep;
+  const bool sampling = options.sample_rate > 0 && on_row;
+  const double period = sampling ? 1.0 / options.sample_rate : 0.0;
+  std::vector<double> row;
+  EnergyWatch energy(*sim);
+  AdvanceResult result;
+
+  // sample at the first step that reaches each grid time k * period (within
+  // the tolerance, so that rounding of the time does not skip or repeat a row)
+  long next = 0;
+  auto sample_if_due = [&] {
+    if (!sampling || sim->time() < next * period - tolerance) return;
+    sim->Sample(&row);
+    energy.Observe(*sim);
+    on_row(row);
+    while (next * period - tolerance <= sim->time()) ++next;
+  };
+  auto first_episode_over = [&] {
+    for (const Impact& impact : sim->contacts().impacts()) {
+      if (impact.tag == 0) return !impact.open;
+    }
+    return false;
+  };
+
+  if (!sampling && energy.enabled()) {
+    mj_forward(sim->model(), sim->data());
+    energy.Observe(*sim);
+  }
+  sample_if_due();
+  while (sim->time() < options.duration - tolerance) {
+    if (StopRequested()) {
+      result.status = AdvanceResult::Status::kInterrupted;
+      break;
+    }
+    if (stepper) {
+      double until = options.duration - sim->time();
+      if (sampling) until = std::min(until, next * period - sim->time());
+      sim->Step(stepper->Next(until));
+    } else {
+      sim->Step();
+    }
+    if (const std::optional<Divergence>& divergence = sim->contacts().divergence()) {
+      result.status = AdvanceResult::Status::kDiverged;
+      result.divergence = divergence;
+      return result;  // the state is not to be sampled
+    }
+    sample_if_due();
+    if (options.until_first_episode && first_episode_over()) break;
+  }
+  if (stepper) {
+    result.steps = stepper->steps();
+    result.fine_steps = stepper->fine_steps();
+  }
+  if (energy.enabled()) {
+    mj_forward(sim->model(), sim->data());  // the ledger of the final state
+    energy.Observe(*sim);
+    result.energy_growth = energy.Report();
+  }
+  return result;
+}
+
+}  // namespace contactlaws

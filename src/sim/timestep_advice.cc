@@ -1,0 +1,91 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/timestep_advice.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/tags.h"
+
+namespace contactlaws {
+
+std::string PairName(const Simulation& sim, int pair_index) {
+  const ContactModel& cm = sim.contact_model();
+  const GeomPair& pair = cm.pairs()[pair_index];
+  return fmt::format("{}{} ({}, {})", kPairTagPrefix, cm.tags()[pair.tag].label,
+                     ObjectName(sim.model(), mjOBJ_GEOM, pair.named[0]),
+                     ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]));
+}
+
+std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
+  mj_forward(sim->model(), sim->data());
+  const double dt = sim->model()->opt.timestep;
+  std::vector<TimestepAdvice> advice;
+  for (int t = 0; t < static_cast<int>(sim->contact_model().tags().size()); ++t) {
+    TimestepAdvice a;
+    a.tag = t;
+    a.shortest = EstimateTag(sim->contacts(), t);
+    a.steps = a.shortest.StepsPerContact(dt);
+    a.coarse = a.steps < kStepsPerContact;
+    advice.push_back(a);
+  }
+  return advice;
+}
+
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+  return fmt::format(
+      "{}: timestep {} s puts {:.3g} steps in the estimated contact duration {:.4g} s "
+      "(>= {} needed): use --timestep {:.3g} or smaller (see contactlaws check)",
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.steps,
+      advice.shortest.estimate.contact_duration, kStepsPerContact,
+      advice.shortest.estimate.timestep());
+}
+
+std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
+                              const std::vector<TimestepAdvice>& advice) {
+  std::string where = divergence.pair >= 0
+                          ? fmt::format("{}: depth {:.4g} m, depth rate {:.4g} m/s",
+                                        PairName(sim, divergence.pair), divergence.depth,
+                                        divergence.depth_rate)
+                          : std::string("no tagged pair in contact");
+  // the likely cause: the tag that diverged, else the first tag the
+  // timestep does not resolve, else the first tag
+  const int tag = divergence.pair >= 0 ? sim.contact_model().pairs()[divergence.pair].tag : -1;
+  auto find = [&](auto&& which) -> const TimestepAdvice* {
+    const auto found = std::find_if(advice.begin(), advice.end(), which);
+    return found == advice.end() ? nullptr : &*found;
+  };
+  const TimestepAdvice* cause = find([&](const TimestepAdvice& a) { return a.tag == tag; });
+  if (!cause) cause = find([](const TimestepAdvice& a) { return a.coarse; });
+  if (!cause && !advice.empty()) cause = &advice.front();
+  std::string likely;
+  if (cause && std::isfinite(cause->steps)) {
+    const ContactEstimate& e = cause->shortest.estimate;
+    const double limit = sim.contact_model().pairs()[cause->shortest.pair].depth_limit;
+    if (e.max_depth > limit) {
+      likely = fmt::format(
+          "likely cause: a contact too soft for the impact: the estimated elastic depth of {} "
+          "at {:.4g} m/s is {:.4g} m, beyond {:.4g} m (raise the stiffness)",
+          PairName(sim, cause->shortest.pair), e.impact_velocity, e.max_depth, limit);
+    } else {
+      likely = fmt::format(
+          "likely cause: the timestep {} s puts {:.3g} steps in the estimated contact duration "
+          "{:.4g} s of {}{}",
+          sim.model()->opt.timestep, cause->steps, e.contact_duration,
+          PairName(sim, cause->shortest.pair),
+          cause->coarse ? fmt::format(" (>= {} needed: --timestep {:.3g})", kStepsPerContact,
+                                      e.timestep())
+                        : std::string(" (enough for the estimate: check the stiffness, masses "
+                                      "and speeds against the scene)"));
+    }
+  } else {
+    likely = "likely cause: a timestep too coarse for the contact (the contact duration could "
+             "not be estimated at the start: see contactlaws check --impact-velocity)";
+  }
+  return fmt::format("t = {:.6g} s: {}: {}; {}", divergence.time, where, divergence.what,
+                     likely);
+}
+
+}  // namespace contactlaws

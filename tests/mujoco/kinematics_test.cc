@@ -1,0 +1,82 @@
+// Copyright contactlaws authors.
+//
+// The kinematics of the hooks: forces applied along the dof chain, driven
+// bodies exact at any time.
+
+#include "contactlaws/kinematics.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class KinematicsTest : public testing::MujocoTest {};
+
+TEST_F(KinematicsTest, AddPointForceIsMujocosApplyFTAlongTheChain) {
+  // a tree: free base, hinge and slide children, a ball joint, a welded
+  // child (no dofs of its own) and a static body
+  UniqueModel m = Load(R"(<mujoco>
+  <worldbody>
+    <body name="static" pos="0 0 -1"><geom type="box" size="0.1 0.1 0.1"/></body>
+    <body name="base" pos="0 0 1"><freejoint/><geom type="box" size="0.2 0.1 0.1" mass="2"/>
+      <body name="arm" pos="0.3 0 0"><joint type="hinge" axis="0 1 0"/>
+        <geom type="capsule" size="0.05 0.2" mass="1"/>
+        <body name="slider" pos="0 0 0.3"><joint type="slide" axis="1 0 0"/>
+          <geom type="sphere" size="0.05" mass="0.5"/>
+          <body name="welded" pos="0.1 0 0"><geom type="sphere" size="0.03" mass="0.2"/></body>
+        </body>
+      </body>
+      <body name="wrist" pos="-0.3 0 0"><joint type="ball"/>
+        <geom type="sphere" size="0.05" mass="0.3"/></body>
+    </body>
+  </worldbody>
+</mujoco>)");
+  mjData* d = MakeData(m.get());
+  for (int i = 0; i < m->nq; ++i) d->qpos[i] += 0.1 * std::sin(3.0 * i + 1);
+  mj_normalizeQuat(m.get(), d->qpos);
+  mj_forward(m.get(), d);
+  std::vector<mjtNum> ours(m->nv), theirs(m->nv);
+  const mjtNum force[3] = {1.5, -2.0, 0.7};
+  const mjtNum zero[3] = {0, 0, 0};
+  for (int b = 0; b < m->nbody; ++b) {
+    const mjtNum point[3] = {0.2 * b, -0.1, 0.3};
+    std::fill(ours.begin(), ours.end(), 0.5);
+    std::fill(theirs.begin(), theirs.end(), 0.5);
+    AddPointForce(m.get(), d, b, point, force, ours.data());
+    mj_applyFT(m.get(), d, force, zero, point, b, theirs.data());
+    for (int j = 0; j < m->nv; ++j) {
+      // the same sums in another order: rounding only
+      EXPECT_NEAR(ours[j], theirs[j], 1e-12) << "body " << b << " dof " << j;
+    }
+  }
+}
+
+TEST_F(KinematicsTest, DrivenBodyIsExactAtAnyTime) {
+  // the passive hook places the table from d->time alone, whatever
+  // mocap_pos holds: so at every RK4 stage
+  UniqueModel m = LoadModelFile(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/ball_table.xml");
+  ContactModel cm(m.get(), "ball_table.xml");
+  mjData* d = MakeData(m.get());
+  ContactData contacts(cm, d);
+  const int table = mj_name2id(m.get(), mjOBJ_BODY, "table");
+  const int geom = mj_name2id(m.get(), mjOBJ_GEOM, "table");
+  for (double t : {0.0, 0.1234, 0.5, 2.0}) {
+    d->time = t;
+    mj_forward(m.get(), d);
+    const double z = 0.5 + 0.1 * std::sin(7.5 * t);
+    EXPECT_NEAR(d->xpos[3 * table + 2], z, 1e-15) << "t = " << t;
+    EXPECT_NEAR(d->geom_xpos[3 * geom + 2], z - 0.05, 1e-15) << "t = " << t;
+    mjtNum vel[3];
+    contacts.PointVelocity(table, d->xpos + 3 * table, vel);
+    EXPECT_NEAR(vel[2], 0.75 * std::cos(7.5 * t), 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace contactlaws

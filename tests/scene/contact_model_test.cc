@@ -1,0 +1,135 @@
+// Copyright contactlaws authors.
+//
+// Tags resolved against a model: bad scenes are refused with one line naming
+// the file, the tag, the key and the value; overrides apply before validation.
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "contactlaws/hysteresis.h"
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class SceneTest : public testing::MujocoTest {
+ protected:
+  Simulation& LoadScene(const std::string& file, const SimulationOptions& options = {}) {
+    return MakeSceneSimulation(file, options);
+  }
+};
+
+// Bad scenes: each refused with the message that names the thing.
+struct BadScene {
+  const char* what;
+  const char* custom;   // inside <custom>
+  const char* message;  // expected message after "bad.xml: "
+  const char* extra = "";  // more MJCF inside <mujoco>
+};
+
+const BadScene kBadScenes[] = {
+    {"unknown law", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hooke stiffness=1"/>)",
+     "contactlaw:p: law=hooke is not a law (hertz, kelvin-voigt, hunt-crossley, "
+     "lankarani-nikravesh, flores)"},
+    {"unknown key", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stifness=1"/>)",
+     "contactlaw:p: unknown key 'stifness' (did you mean 'stiffness'?)"},
+    {"missing geom2", R"(<text name="contactlaw:p" data="geom1=ball law=hertz stiffness=1"/>)",
+     "contactlaw:p: missing key geom2"},
+    {"missing law", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor stiffness=1"/>)",
+     "contactlaw:p: missing key law"},
+    {"missing stiffness", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz"/>)",
+     "contactlaw:p: missing key stiffness (or youngs1 poisson1 youngs2 poisson2) for law=hertz"},
+    {"missing restitution", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=flores stiffness=1"/>)",
+     "contactlaw:p: missing key restitution (law=flores needs it)"},
+    {"geom not found", R"(<text name="contactlaw:p" data="geom1=bal geom2=floor law=hertz stiffness=1"/>)",
+     "contactlaw:p: geom1=bal: no geom is named 'bal'"},
+    {"empty group", R"(<text name="contactlaw:p" data="geom1=group:4 geom2=floor law=hertz stiffness=1"/>)",
+     "contactlaw:p: geom1=group:4: no geom is in group 4"},
+    {"restitution out of range", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=flores restitution=1.5 stiffness=1"/>)",
+     "contactlaw:p: restitution=1.5 must be in [0, 1]"},
+    {"not a number", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=abc"/>)",
+     "contactlaw:p: stiffness=abc is not a finite number"},
+    {"nan", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=nan"/>)",
+     "contactlaw:p: stiffness=nan is not a finite number"},
+    {"negative stiffness", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=-3"/>)",
+     "contactlaw:p: stiffness=-3 must be > 0 (N/m^n)"},
+    {"flores e = 0", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=flores restitution=0 stiffness=1"/>)",
+     "contactlaw:p: restitution=0 must be in (0, 1] for flores"},
+    {"poisson", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz youngs1=1e9 poisson1=0.5 youngs2=1e9 poisson2=0.3"/>)",
+     "contactlaw:p: poisson1=0.5 must be in (-1, 0.5)"},
+    {"kelvin-voigt without k", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=kelvin-voigt restitution=0.5 stiffness=1e8 exponent=1.5"/>)",
+     "contactlaw:p: law=kelvin-voigt needs linear_stiffness (N/m), or stiffness with exponent 1 or absent"},
+    {"same geom twice", R"(<text name="contactlaw:p" data="geom1=ball geom2=ball law=hertz stiffness=1"/>)",
+     "contactlaw:p: geom1 and geom2 are the same geom"},
+    {"tagged twice", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=1"/>
+                        <text name="contactlaw:q" data="geom1=floor geom2=ball law=hertz stiffness=1"/>)",
+     "contactlaw:q: (floor, ball) is already tagged by contactlaw:p"},
+    {"plane-plane", R"(<text name="contactlaw:p" data="geom1=floor geom2=wall law=hertz stiffness=1"/>)",
+     "contactlaw:p: (floor, wall): MuJoCo has no collision function for these geom types"},
+    {"same body", R"(<text name="contactlaw:p" data="geom1=ball geom2=ball2 law=hertz stiffness=1"/>)",
+     "contactlaw:p: (ball, ball2): the two geoms belong to the same body (or to bodies welded "
+     "together)"},
+    {"malformed word", R"(<text name="contactlaw:p" data="geom1=ball geom2 floor"/>)",
+     "contactlaw:p: 'geom2' is not of the form key=value"},
+    {"explicit pair", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=1"/>)",
+     "contactlaw:p: (ball, floor) is also a <contact><pair>, which bypasses the contact filter: "
+     "remove one of the two",
+     R"(<contact><pair geom1="ball" geom2="floor"/></contact>)"},
+    {"passive disabled", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=1"/>)",
+     "<flag passive=\"disable\"/> turns off mjcb_passive, so the contact laws of 1 tag(s) would "
+     "never act: remove the flag",
+     R"(<option><flag passive="disable"/></option>)"},
+    {"drive of a non-mocap body", R"(<text name="contactdrive:d" data="body=ball amplitude=1 omega=1"/>)",
+     "contactdrive:d: body=ball: a driven body must be declared mocap=\"true\""},
+};
+
+TEST_F(SceneTest, BadScenesAreRefusedByName) {
+  for (const BadScene& bad : kBadScenes) {
+    const std::string xml = fmt::format(R"(
+<mujoco>
+  {}
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <geom name="wall" type="plane" size="1 1 0.1" zaxis="1 0 0"/>
+    <body name="ball" pos="0 0 0.2"><freejoint/><geom name="ball" type="sphere" size="0.1"/>
+      <geom name="ball2" type="sphere" size="0.05" pos="0 0 0.1"/></body>
+  </worldbody>
+  <custom>{}</custom>
+</mujoco>)",
+                                        bad.extra, bad.custom);
+    UniqueModel m = LoadModelString(xml, "bad.xml");
+    try {
+      ContactModel cm(m.get(), "bad.xml");
+      ADD_FAILURE() << bad.what << ": accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("bad.xml: ") + bad.message) << bad.what;
+    }
+  }
+}
+
+TEST_F(SceneTest, OverridesApplyBeforeValidation) {
+  SimulationOptions options;
+  options.overrides.law = LawKind::kKelvinVoigt;
+  options.overrides.restitution = 0.4;
+  Simulation& sim = LoadScene("bouncing_ball.xml", options);
+  const LawParams& p = sim.contact_model().pairs().at(0).params;
+  EXPECT_EQ(p.kind, LawKind::kKelvinVoigt);
+  EXPECT_EQ(p.linear_stiffness, 5e6);
+  EXPECT_EQ(p.restitution, 0.4);
+
+  options.overrides = {};
+  options.overrides.restitution = 0.0;  // flores refuses e = 0
+  try {
+    LoadScene("bouncing_ball.xml", options);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "bouncing_ball.xml: contactlaw:ball-floor: restitution=0 must be in (0, 1] for "
+                 "flores");
+  }
+}
+
+}  // namespace
+}  // namespace contactlaws

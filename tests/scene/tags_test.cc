@@ -1,0 +1,80 @@
+// Copyright contactlaws authors.
+//
+// The tag grammar on its own (no model): keys, values and their ranges, with
+// messages that name the file, the tag, the key and the value.
+
+#include "scene/tags.h"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "contactlaws/error.h"
+
+namespace contactlaws {
+namespace {
+
+// The message ParsePairTag throws for data, or "" when it accepts it.
+std::string PairTagError(const std::string& data) {
+  try {
+    ParsePairTag("s.xml", "contactlaw:t", data);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TagsTest, APairTagIsReadWhole) {
+  const PairTagSpec spec = ParsePairTag(
+      "s.xml", "contactlaw:ball-floor",
+      "geom1=ball geom2=group:2 law=flores restitution=0.9 stiffness=1.4e8 exponent=1.5 "
+      "min_impact_velocity=0.01 allow_tension=true");
+  EXPECT_EQ(spec.label, "ball-floor");
+  EXPECT_EQ(spec.geom1, "ball");
+  EXPECT_EQ(spec.geom2, "group:2");
+  EXPECT_EQ(spec.law, LawKind::kFlores);
+  EXPECT_EQ(spec.restitution, 0.9);
+  EXPECT_EQ(spec.stiffness, 1.4e8);
+  EXPECT_EQ(spec.exponent, 1.5);
+  EXPECT_EQ(spec.min_impact_velocity, 0.01);
+  EXPECT_EQ(spec.allow_tension, true);
+}
+
+TEST(TagsTest, BadValuesAreNamed) {
+  const std::string ok = "geom1=a geom2=b law=hertz ";
+  EXPECT_EQ(PairTagError(ok + "stiffness=1e8"), "");
+  EXPECT_EQ(PairTagError(ok + "stiffness=0x10"),
+            "s.xml: contactlaw:t: stiffness=0x10 is not a finite number");
+  EXPECT_EQ(PairTagError(ok + "stiffness=-1"),
+            "s.xml: contactlaw:t: stiffness=-1 must be > 0 (N/m^n)");
+  EXPECT_EQ(PairTagError(ok + "stiffness=1e8 restitusion=1"),
+            "s.xml: contactlaw:t: unknown key 'restitusion' (did you mean 'restitution'?)");
+  EXPECT_EQ(PairTagError(ok + "stiffness=1e8 stiffness=2e8"),
+            "s.xml: contactlaw:t: key 'stiffness' is given twice");
+  EXPECT_EQ(PairTagError("geom1=a geom2=b law=hooke stiffness=1"),
+            "s.xml: contactlaw:t: law=hooke is not a law (" + LawNameList() + ")");
+  EXPECT_EQ(PairTagError(ok + "stiffness"),
+            "s.xml: contactlaw:t: 'stiffness' is not of the form key=value");
+}
+
+TEST(TagsTest, ADriveTagIsReadWhole) {
+  const DriveTagSpec spec = ParseDriveTag("s.xml", "contactdrive:table",
+                                          "body=table motion=sine axis=0,3,4 amplitude=0.1 "
+                                          "omega=7.5 phase=1");
+  EXPECT_EQ(spec.body, "table");
+  EXPECT_DOUBLE_EQ(spec.axis[1], 0.6);
+  EXPECT_DOUBLE_EQ(spec.axis[2], 0.8);
+  EXPECT_EQ(spec.amplitude, 0.1);
+  EXPECT_EQ(spec.omega, 7.5);
+  EXPECT_EQ(spec.phase, 1.0);
+}
+
+TEST(TagsTest, NearestWordSuggestsOnlyWhatIsClose) {
+  const std::string_view words[] = {"restitution", "stiffness", "exponent"};
+  EXPECT_EQ(NearestWord("stifness", words, 3), "stiffness");
+  EXPECT_EQ(NearestWord("exponant", words, 3), "exponent");
+  EXPECT_EQ(NearestWord("colour", words, 3), "");
+}
+
+}  // namespace
+}  // namespace contactlaws

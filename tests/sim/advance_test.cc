@@ -1,0 +1,122 @@
+// Copyright contactlaws authors.
+//
+// Advance over the restitution sweep, held against the closed form and
+// against an independent high-accuracy integration of the same 1-D drop.
+
+#include "contactlaws/advance.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "contactlaws/contactlaws.h"
+#include "mujoco_test_util.h"
+#include "sim/drop_reference.h"
+
+namespace contactlaws {
+namespace {
+
+using testing::Drop;
+using testing::IntegrateDrop;
+using testing::Reference;
+using testing::SweepFirstImpact;
+
+// The restitutions of the paper's Fig. 7, as `--restitution 0.1:1.0:0.1`
+// gives them.
+constexpr double kPaperSweep[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+
+TEST(SweepTest, HertzFamilyMatchesTheClosedForm) {
+  // Gravity off, 4.2 m/s, h = 1e-5, Euler: measured errors up to 5.7e-5 (the
+  // semi-implicit step's O(h / tau) energy error over a ~1.5 ms contact);
+  // 2e-4 leaves room for a platform's rounding without hiding an O(h) bug
+  // (doubling h doubles the error).
+  constexpr double kReboundTolerance = 2e-4;
+  const std::string xml = testing::DropXml("law=flores restitution=0.5 stiffness=1.4e8", 4.2);
+  const Scene scene("drop.xml", LoadModelString(xml, "drop.xml"));
+  for (LawKind law : {LawKind::kHuntCrossley, LawKind::kLankaraniNikravesh, LawKind::kFlores}) {
+    for (double e : kPaperSweep) {
+      const Impact impact = SweepFirstImpact(scene, law, e);
+      EXPECT_NEAR(impact.restitution_post(), ExactRebound(HysteresisCoefficient(law, e)),
+                  kReboundTolerance)
+          << LawName(law) << " e = " << e;
+    }
+  }
+}
+
+TEST(ReferenceTest, IndependentIntegrationConvergesAndMatchesTheClosedForm) {
+  // the reference is itself checked: halving its step changes nothing that
+  // matters (1e-5 relative: Kelvin-Voigt's clamp at F = 0 is a kink RK4
+  // integrates to first order, measured 3.5e-6 in e_post; the others 1e-10),
+  // and with gravity off it gives the closed-form rebound
+  Drop drop;
+  for (LawKind law : AllLaws()) {
+    const Reference a = IntegrateDrop(drop, law, 0.3);
+    const Reference fine = IntegrateDrop(drop, law, 0.3, 40000);
+    constexpr double kConverged = 1e-5;
+    EXPECT_NEAR(a.restitution_post, fine.restitution_post, kConverged) << LawName(law);
+    EXPECT_NEAR(a.max_depth / fine.max_depth, 1.0, kConverged) << LawName(law);
+    EXPECT_NEAR(a.max_force / fine.max_force, 1.0, kConverged) << LawName(law);
+    EXPECT_NEAR(a.contact_duration / fine.contact_duration, 1.0, kConverged) << LawName(law);
+  }
+  const Reference a = IntegrateDrop(drop, LawKind::kFlores, 0.3);
+  drop.gravity = 1e-9;  // effectively off; v0 comes from a fall at g
+  drop.fall = 0.9 * 9.81 / drop.gravity;
+  const Reference b = IntegrateDrop(drop, LawKind::kFlores, 0.3);
+  EXPECT_NEAR(b.restitution_post, ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.3)),
+              1e-7);
+  EXPECT_GT(std::abs(a.restitution_post - b.restitution_post), 1e-4)
+      << "gravity must matter at the measured size";
+}
+
+TEST(ReferenceTest, SweepAgreesWithTheIndependentIntegration) {
+  // The paper's drop (mjcf/bouncing_ball.xml: 1 kg, K = 1.4e8, 0.9 m fall,
+  // gravity on, RK4) at h = 1e-5, against IntegrateDrop. Tolerances (the
+  // issue's): 2e-3 in e_post, 1% in max depth, max force and contact duration.
+  // Measured: Hertz family e_post within 2.1e-5, depth, force and duration
+  // within 3e-4.
+  // Kelvin-Voigt's force jumps from 0 to c v0 at first touch. A fixed step
+  // first sees the contact a fraction f of a step after it began, and RK4's
+  // stages apply the jump over quantized parts (0, 1/6, 5/6, 1) of the step,
+  // not over f: the impulse is off by up to c v0 h, e_post by up to about
+  // zeta omega h (zeta = 0.59, omega = 2236/s at e = 0.1: 1.3e-2), with a sign
+  // and size set by f. At this drop and h = 1e-5, f gives 8.7e-4 (at 2e-5 it
+  // gives 2.5e-3); it shrinks with h, first order, like the bound. The 1%
+  // bounds hold for it with room (depth -3.4e-3, force -8.7e-3 at e = 0.1).
+  constexpr double kRebound = 2e-3;
+  constexpr double kRelative = 1e-2;
+  const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";
+  const Scene scene(path);
+  const Drop drop;
+  std::map<LawKind, double> worst;  // largest e_post error per law, printed
+  for (LawKind law : AllLaws()) {
+    for (double e : kPaperSweep) {
+      const Impact sim = SweepFirstImpact(scene, law, e, 1e-5);
+      const Reference ref = IntegrateDrop(drop, law, e);
+      const std::string what = fmt::format("{} e = {}", LawName(law), e);
+      const double error = std::abs(sim.restitution_post() - ref.restitution_post);
+      worst[law] = std::max(worst[law], error);
+      EXPECT_LT(error, kRebound) << what;
+      EXPECT_NEAR(sim.max_depth / ref.max_depth, 1.0, kRelative) << what;
+      EXPECT_NEAR(sim.max_force / ref.max_force, 1.0, kRelative) << what;
+      EXPECT_NEAR((sim.time_separation - sim.time_contact) / ref.contact_duration, 1.0,
+                  kRelative)
+          << what;
+      std::printf("%-20s e=%.1f  e_post sim %.6f ref %.6f  depth %+.2e  force %+.2e  "
+                  "duration %+.2e\n",
+                  std::string(LawName(law)).c_str(), e, sim.restitution_post(),
+                  ref.restitution_post, sim.max_depth / ref.max_depth - 1,
+                  sim.max_force / ref.max_force - 1,
+                  (sim.time_separation - sim.time_contact) / ref.contact_duration - 1);
+    }
+  }
+  for (const auto& [law, error] : worst) {
+    std::printf("largest |e_post - reference|, %s: %.2e\n", std::string(LawName(law)).c_str(),
+                error);
+  }
+}
+
+}  // namespace
+}  // namespace contactlaws

@@ -1,0 +1,74 @@
+// Copyright contactlaws authors.
+//
+// Run summaries computed by hand.
+
+#include "contactlaws/summary.h"
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace contactlaws {
+namespace {
+
+
+// An episode of pair p from t0 to t1 (open when t1 < 0).
+Impact Episode(int pair, double t0, double t1, double depth = 1e-3, double force = 1e3) {
+  Impact i;
+  i.tag = 0;
+  i.pair = pair;
+  i.time_contact = t0;
+  i.impact_velocity = 2.0;
+  i.open = t1 < 0;
+  if (!i.open) {
+    i.time_separation = t1;
+    i.separation_velocity = 1.5;
+  }
+  i.max_depth = depth;
+  i.max_force = force;
+  return i;
+}
+
+TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
+  // three bounces of 0.10, 0.15 and 0.05 s, then a contact from 0.8 s on
+  const std::vector<Impact> impacts = {Episode(0, 0.1, 0.2, 2e-3, 5e3),
+                                       Episode(0, 0.5, 0.65, 3e-3, 4e3),
+                                       Episode(0, 0.7, 0.75), Episode(0, 0.8, -1)};
+  const RunSummary s = Summarize(impacts, 2.0);
+  EXPECT_EQ(s.impacts, 4);
+  EXPECT_EQ(s.restitution_post, 0.75);  // 1.5 / 2.0, the first episode's
+  EXPECT_EQ(s.impact_velocity, 2.0);
+  EXPECT_NEAR(*s.contact_duration, 0.1, 1e-15);
+  EXPECT_EQ(s.max_depth, 3e-3);
+  EXPECT_EQ(s.max_force, 5e3);
+  EXPECT_EQ(s.time_to_rest, 0.8);
+
+  // the last contact has lasted 0.1 s at 0.9 s: not longer than the 0.15 s
+  // bounce before it, so it may be one more bounce
+  EXPECT_FALSE(Summarize(impacts, 0.9).time_to_rest);
+  EXPECT_EQ(Summarize(impacts, 0.96).time_to_rest, 0.8);  // 0.16 s > 0.15 s
+
+  // the run ends in flight: not at rest
+  EXPECT_FALSE(Summarize({Episode(0, 0.1, 0.2), Episode(0, 0.5, 0.6)}, 2.0).time_to_rest);
+  // a first episode still open: no post-restitution, no duration; resting from t = 0
+  const RunSummary resting = Summarize({Episode(0, 0.0, -1)}, 1.0);
+  EXPECT_FALSE(resting.restitution_post);
+  EXPECT_FALSE(resting.contact_duration);
+  EXPECT_EQ(resting.time_to_rest, 0.0);
+  // no contact at all
+  const RunSummary none = Summarize({}, 1.0);
+  EXPECT_EQ(none.impacts, 0);
+  EXPECT_FALSE(none.time_to_rest);
+  EXPECT_FALSE(none.impact_velocity);
+}
+
+TEST(SummaryTest, EveryPairMustRestAndTheLatestDecides) {
+  std::vector<Impact> impacts = {Episode(0, 0.1, 0.2), Episode(1, 0.15, 0.25),
+                                 Episode(0, 0.4, -1), Episode(1, 0.6, -1)};
+  EXPECT_EQ(Summarize(impacts, 2.0).time_to_rest, 0.6);
+  impacts.push_back(Episode(2, 0.5, 0.55));  // a third pair that touched and left
+  EXPECT_FALSE(Summarize(impacts, 2.0).time_to_rest);
+}
+
+}  // namespace
+}  // namespace contactlaws
