@@ -85,6 +85,10 @@ class AutoTimestep {
   long steps() const { return steps_; }
 
  private:
+  // The step pair p (out of contact) allows, from the current state: the
+  // time to close a fraction of its gap, or the fine step when it is near
+  // (then *fine is set), cut to end at its predicted touch.
+  double ApproachStep(int p, bool* fine) const;
   // The fine step of pair at impact speed v (m/s).
   double FineStep(int pair, double v) const;
 

@@ -140,6 +140,9 @@ double HysteresisCoefficient(LawKind kind, double restitution);
 // no closed form) and for e outside the law's range.
 std::optional<double> EffectiveRestitution(LawKind kind, double restitution);
 
+// True for a law that ignores e and dissipates nothing (Hertz).
+bool IsElastic(LawKind kind);
+
 // The restitution the law reports for an input e: 1 for an elastic law
 // (Hertz), which ignores e, else e.
 double ReportedRestitution(LawKind kind, double restitution);

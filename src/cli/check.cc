@@ -8,86 +8,79 @@
 
 namespace contactlaws::cli {
 
-int CheckCommand(const CheckArgs& args) {
-  SimulationOptions options;
-  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
-  if (args.restitution) {
-    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
-  }
-  if (args.timestep) {
-    options.timestep = ParsePositive("--timestep", *args.timestep, "s");
-  }
-  std::optional<double> impact_velocity;
-  if (args.impact_velocity) {
-    impact_velocity = ParsePositive("--impact-velocity", *args.impact_velocity, "m/s");
-  }
-  const Scene scene(args.scene);
-  std::unique_ptr<Simulation> sim = scene.Make(options);
-  const mjModel* m = sim->model();
-  mj_forward(m, sim->data());
-  const ContactModel& cm = sim->contact_model();
-  const double dt = m->opt.timestep;
+namespace {
+
+// The scene's MuJoCo settings, and the rule the estimates are held to.
+void PrintSettings(const Simulation& sim) {
+  const mjModel* m = sim.model();
   const char* integrators[] = {"euler", "rk4", "implicit"};
 
   fmt::print("{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
-             scene.path(), MujocoVersion() / 100, MujocoVersion() / 10 % 10,
-             MujocoVersion() % 10, dt,
+             sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10,
+             MujocoVersion() % 10, m->opt.timestep,
              m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator]
                                                               : "?",
              m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
   fmt::print("rule: a contact is resolved by >= {} steps of its estimated duration\n",
              kStepsPerContact);
+}
 
-  int coarse = 0;
-  fmt::print("\n{} contactlaw tag(s)\n", cm.tags().size());
-  for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
-    const PairTag& tag = cm.tags()[t];
-    const LawParams& law = cm.pairs()[tag.pairs.front()].params;
-    fmt::print("\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
-               tag.geom2, tag.pairs.size(), LawName(law.kind));
-    if (law.kind == LawKind::kKelvinVoigt) {
-      fmt::print("  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
-                 law.linear_stiffness,
-                 law.damping ? fmt::format("{} N s/m", *law.damping)
-                             : std::string("from e and the effective mass at each contact"));
-    } else {
-      fmt::print("  restitution {}{}, stiffness K {:.6g} N/m^{}, exponent n {}\n",
-                 ReportedRestitution(law.kind, law.restitution),
-                 law.kind == LawKind::kHertz ? " (elastic)" : "", law.stiffness, law.exponent,
-                 law.exponent);
-    }
-    fmt::print("  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
-               law.allow_tension ? ", allow_tension" : "");
-
-    // the pair of this tag whose contact is shortest decides the timestep
-    const TagEstimate shortest = EstimateTag(sim->contacts(), t, impact_velocity);
-    const int worst = shortest.pair;
-    const ContactEstimate& estimate = shortest.estimate;
-    const GeomPair& pair = cm.pairs()[worst];
-    fmt::print("  {}geoms {} - {}: effective mass {} kg, gap {}\n",
-               tag.pairs.size() > 1 ? "shortest contact: " : "",
-               ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
-               estimate.effective_mass,
-               estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
-    fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity,
-               impact_velocity ? "--impact-velocity"
-                                    : "estimated: closing speed, gravity over the gap, "
-                                      "driven bodies' top speed");
-    if (!std::isfinite(estimate.contact_duration)) {
-      fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
-                 "neither can move); give --impact-velocity\n");
-      continue;
-    }
-    const double steps = estimate.contact_duration / dt;
-    const bool ok = steps >= kStepsPerContact;
-    coarse += !ok;
-    fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
-               law.kind == LawKind::kKelvinVoigt ? "k d" : "K d^n", estimate.max_depth,
-               estimate.contact_duration);
-    fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
-               ok ? "ok" : "TOO COARSE", estimate.timestep());
+// Tag t resolved, its estimated contact and the timestep it needs; true when
+// the timestep is too coarse for the estimate.
+bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
+  const mjModel* m = sim->model();
+  const ContactModel& cm = sim->contact_model();
+  const double dt = m->opt.timestep;
+  const PairTag& tag = cm.tags()[t];
+  const LawParams& law = cm.pairs()[tag.pairs.front()].params;
+  fmt::print("\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
+             tag.geom2, tag.pairs.size(), LawName(law.kind));
+  if (Law(law.kind).family == LawFamily::kLinear) {
+    fmt::print("  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
+               law.linear_stiffness,
+               law.damping ? fmt::format("{} N s/m", *law.damping)
+                           : std::string("from e and the effective mass at each contact"));
+  } else {
+    fmt::print("  restitution {}{}, stiffness K {:.6g} N/m^{}, exponent n {}\n",
+               ReportedRestitution(law.kind, law.restitution),
+               IsElastic(law.kind) ? " (elastic)" : "", law.stiffness, law.exponent,
+               law.exponent);
   }
+  fmt::print("  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
+             law.allow_tension ? ", allow_tension" : "");
 
+  // the pair of this tag whose contact is shortest decides the timestep
+  const TagEstimate shortest = EstimateTag(sim->contacts(), t, impact_velocity);
+  const int worst = shortest.pair;
+  const ContactEstimate& estimate = shortest.estimate;
+  const GeomPair& pair = cm.pairs()[worst];
+  fmt::print("  {}geoms {} - {}: effective mass {} kg, gap {}\n",
+             tag.pairs.size() > 1 ? "shortest contact: " : "",
+             ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
+             estimate.effective_mass,
+             estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
+  fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity,
+             impact_velocity ? "--impact-velocity"
+                             : "estimated: closing speed, gravity over the gap, "
+                               "driven bodies' top speed");
+  if (!std::isfinite(estimate.contact_duration)) {
+    fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
+               "neither can move); give --impact-velocity\n");
+    return false;  // nothing to hold the timestep to
+  }
+  const double steps = estimate.contact_duration / dt;
+  const bool ok = steps >= kStepsPerContact;
+  fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
+             Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
+             estimate.contact_duration);
+  fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
+             ok ? "ok" : "TOO COARSE", estimate.timestep());
+  return !ok;
+}
+
+void PrintDrives(const Simulation& sim) {
+  const mjModel* m = sim.model();
+  const ContactModel& cm = sim.contact_model();
   fmt::print("\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
   for (const Drive& drive : cm.drives()) {
     fmt::print("contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
@@ -96,6 +89,30 @@ int CheckCommand(const CheckArgs& args) {
                drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.amplitude,
                drive.omega, drive.phase, std::abs(drive.amplitude * drive.omega));
   }
+}
+
+}  // namespace
+
+int CheckCommand(const CheckArgs& args) {
+  SimulationOptions options;
+  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
+  if (args.restitution) {
+    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
+  }
+  if (args.timestep) options.timestep = ParsePositive("--timestep", *args.timestep, "s");
+  std::optional<double> impact_velocity;
+  if (args.impact_velocity) {
+    impact_velocity = ParsePositive("--impact-velocity", *args.impact_velocity, "m/s");
+  }
+  const Scene scene(args.scene);
+  std::unique_ptr<Simulation> sim = scene.Make(options);
+  mj_forward(sim->model(), sim->data());
+  PrintSettings(*sim);
+  int coarse = 0;
+  const int tags = static_cast<int>(sim->contact_model().tags().size());
+  fmt::print("\n{} contactlaw tag(s)\n", tags);
+  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity);
+  PrintDrives(*sim);
   if (coarse) {
     fmt::print("\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);
   }

@@ -10,92 +10,89 @@
 #include "cli/sweep.h"
 
 namespace contactlaws::cli {
+namespace {
 
-int CompareCommand(const SweepArgs& args) {
-  const CommonOptions common = ParseCommon(args);
-  const SimulationOptions& options = common.simulation;
-  const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
-  const int jobs = Jobs(args.jobs);
-  std::vector<double> restitutions;
-  if (args.restitution) restitutions = ParseRestitutionList("--restitution", *args.restitution);
-
-  // Hertz once; every other law at each restitution (the scene's if none given)
+// An elastic law once; every other law at each restitution (the scene's if
+// none given).
+std::vector<RunSpec> CompareSpecs(const std::vector<LawKind>& laws,
+                                  const std::vector<double>& restitutions) {
   std::vector<RunSpec> specs;
-  for (LawKind law : laws) {
-    if (law == LawKind::kHertz) {
+  for (const LawKind law : laws) {
+    if (IsElastic(law)) {
       specs.push_back({law, 1.0});
     } else if (restitutions.empty()) {
       specs.push_back({law, std::nullopt});
     } else {
-      for (double e : restitutions) specs.push_back({law, e});
+      for (const double e : restitutions) specs.push_back({law, e});
     }
   }
-  const Scene scene(args.scene);
-  const std::vector<std::vector<TimestepAdvice>> advices =
-      Prepare(scene, options, specs, common.auto_timestep.has_value());
+  return specs;
+}
 
-  CreateDirectory(args.output_dir);
-  CsvFile trajectories(args.output_dir + "/trajectories.csv");
-  CsvFile impacts(args.output_dir + "/impacts.csv");
-  CsvFile summary(args.output_dir + "/summary.csv");
-  {
-    std::vector<std::string> columns = {"law", "restitution"};
-    for (std::string& c : scene.Make(OptionsFor(options, specs.front()))->Columns()) {
-      columns.push_back(std::move(c));
-    }
-    trajectories.Header(columns);
+// The three files of compare, written run by run in order.
+class CompareFiles {
+ public:
+  CompareFiles(const std::string& dir, std::vector<std::string> trajectory_columns)
+      : trajectories_(CreateDirectory(dir) + "/trajectories.csv"),
+        impacts_(dir + "/impacts.csv"),
+        summary_(dir + "/summary.csv") {
+    trajectory_columns.insert(trajectory_columns.begin(), {"law", "restitution"});
+    trajectories_.Header(trajectory_columns);
+    impacts_.Header(ImpactColumns());
+    summary_.Header({"law", "restitution", "impacts", "restitution_post", "max_depth",
+                     "max_force", "contact_duration", "time_to_rest", "dissipated_energy",
+                     "status", "reason"});
   }
-  impacts.Header(ImpactColumns());
-  summary.Header({"law", "restitution", "impacts", "restitution_post", "max_depth", "max_force",
-                  "contact_duration", "time_to_rest", "dissipated_energy", "status", "reason"});
 
-  struct Row {
-    RunSpec spec;
-    RunOutput::Status status;
-    double restitution;
-    RunSummary s;
-    double dissipated;
-  };
-  std::vector<Row> rows;
-  AdvanceOptions advance;
-  advance.duration = common.duration;
-  advance.sample_rate = common.sample_rate;
-  advance.auto_timestep = common.auto_timestep;
-  const int status = Sweep(
-      scene, options, specs, advices, advance, Record::kEverything, jobs, args.quiet,
-      [&](int k, RunOutput& out) {
-        const RunSpec& spec = specs[k];
-        const std::string law(LawName(spec.law));
-        if (out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed) {
-          // a failed run's rows up to its divergence are valid; an
-          // interrupted run's are not written at all
-          trajectories.Write(out.trajectory);
-          impacts.Write(out.impacts);
-        }
-        const RunSummary& s = out.summary;
-        if (out.status == RunOutput::Status::kOk) {
-          summary.Fields({law, Field(out.restitution), Field(s.impacts),
-                          Field(s.restitution_post), Field(s.max_depth), Field(s.max_force),
-                          Field(s.contact_duration), Field(s.time_to_rest),
-                          Field(out.dissipated), "ok", ""});
-        } else {
-          // a failed run's numbers are not to be trusted: only its status
-          summary.Fields({law, Field(out.restitution), "", "", "", "", "", "", "",
-                          StatusName(out.status), out.reason});
-        }
-        rows.push_back({spec, out.status, out.restitution, s, out.dissipated});
-        trajectories.Flush();
-        impacts.Flush();
-        summary.Flush();
-      });
-  trajectories.Commit();
-  impacts.Commit();
-  summary.Commit();
+  void Write(const RunSpec& spec, const RunOutput& out) {
+    const std::string law(LawName(spec.law));
+    if (out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed) {
+      // a failed run's rows up to its divergence are valid; an interrupted
+      // run's are not written at all
+      trajectories_.Write(out.trajectory);
+      impacts_.Write(out.impacts);
+    }
+    const RunSummary& s = out.summary;
+    if (out.status == RunOutput::Status::kOk) {
+      summary_.Fields({law, Field(out.restitution), Field(s.impacts), Field(s.restitution_post),
+                       Field(s.max_depth), Field(s.max_force), Field(s.contact_duration),
+                       Field(s.time_to_rest), Field(out.dissipated), "ok", ""});
+    } else {
+      // a failed run's numbers are not to be trusted: only its status
+      summary_.Fields({law, Field(out.restitution), "", "", "", "", "", "", "",
+                       StatusName(out.status), out.reason});
+    }
+    trajectories_.Flush();
+    impacts_.Flush();
+    summary_.Flush();
+  }
 
+  void Commit() {
+    trajectories_.Commit();
+    impacts_.Commit();
+    summary_.Commit();
+  }
+
+ private:
+  CsvFile trajectories_;
+  CsvFile impacts_;
+  CsvFile summary_;
+};
+
+// One run's line of the printed table.
+struct TableRow {
+  RunSpec spec;
+  RunOutput::Status status;
+  double restitution;
+  RunSummary s;
+  double dissipated;
+};
+
+void PrintTable(const std::vector<TableRow>& rows) {
   fmt::print("{:<20} {:>11} {:>8} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
              "restitution", "impacts", "first e_post", "max depth (m)", "max force (N)",
              "duration (s)", "at rest (s)", "dissipated (J)");
-  for (const Row& r : rows) {
+  for (const TableRow& r : rows) {
     if (r.status != RunOutput::Status::kOk) {
       fmt::print("{:<20} {:>11} {}\n", LawName(r.spec.law), Field(r.restitution),
                  StatusName(r.status));
@@ -107,6 +104,37 @@ int CompareCommand(const SweepArgs& args) {
                Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
                r.dissipated);
   }
+}
+
+}  // namespace
+
+int CompareCommand(const SweepArgs& args) {
+  const CommonOptions common = ParseCommon(args);
+  const SimulationOptions& options = common.simulation;
+  const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
+  const int jobs = Jobs(args.jobs);
+  std::vector<double> restitutions;
+  if (args.restitution) restitutions = ParseRestitutionList("--restitution", *args.restitution);
+  const std::vector<RunSpec> specs = CompareSpecs(laws, restitutions);
+  const Scene scene(args.scene);
+  const std::vector<std::vector<TimestepAdvice>> advices =
+      Prepare(scene, options, specs, common.auto_timestep.has_value());
+
+  CompareFiles files(args.output_dir, scene.Make(OptionsFor(options, specs.front()))->Columns());
+  AdvanceOptions advance;
+  advance.duration = common.duration;
+  advance.sample_rate = common.sample_rate;
+  advance.auto_timestep = common.auto_timestep;
+  std::vector<TableRow> rows;
+  const int status = Sweep(scene, options, specs, advices, advance, Record::kEverything, jobs,
+                           args.quiet, [&](int k, RunOutput& out) {
+                             files.Write(specs[k], out);
+                             rows.push_back({specs[k], out.status, out.restitution, out.summary,
+                                             out.dissipated});
+                           });
+  files.Commit();
+
+  PrintTable(rows);
   fmt::print("wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n", args.output_dir);
   return status;
 }

@@ -85,59 +85,101 @@ void ReportOtherMujocoWarnings() {
   }
 }
 
+// Every command's arguments, and the subcommand that takes them.
+struct Commands {
+  RunArgs run;
+  SweepArgs compare;
+  SweepArgs restitution;
+  CheckArgs check;
+  LawsArgs laws;
+  CLI::App* run_cmd = nullptr;
+  CLI::App* compare_cmd = nullptr;
+  CLI::App* restitution_cmd = nullptr;
+  CLI::App* check_cmd = nullptr;
+  CLI::App* laws_cmd = nullptr;
+};
+
+void AddRun(CLI::App* app, Commands* c) {
+  c->run_cmd = app->add_subcommand("run", "simulate one tagged scene");
+  AddCommon(c->run_cmd, &c->run, true);
+  c->run_cmd->add_option("--law", c->run.law,
+                         fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(c->run_cmd, "--restitution", &c->run.restitution,
+            "override every tag's restitution e, in [0, 1]");
+  c->run_cmd->add_option("--output", c->run.output,
+                         "trajectory CSV ('-' for stdout); none if absent");
+  c->run_cmd->add_option("--impacts", c->run.impacts,
+                         "impact log CSV, one row per contact episode");
+}
+
+void AddSweeps(CLI::App* app, Commands* c) {
+  c->compare_cmd = app->add_subcommand(
+      "compare", "every law x restitution on a scene: trajectories, impacts and summary CSV");
+  AddSweep(c->compare_cmd, &c->compare,
+           "E1,E2,... or start:stop:step, each in [0, 1] (default: the scene's)");
+  c->compare_cmd->add_option("--output-dir", c->compare.output_dir,
+                             "writes trajectories.csv, impacts.csv, summary.csv")
+      ->capture_default_str();
+
+  c->restitution_cmd = app->add_subcommand(
+      "restitution", "the first impact of every law x restitution: e_post (paper Fig. 7)");
+  AddSweep(c->restitution_cmd, &c->restitution,
+           "E1,E2,... or start:stop:step, each in [0, 1] (default 0.1:1.0:0.1)");
+  c->restitution_cmd->add_option("--output", c->restitution.output, "CSV, '-' for stdout")
+      ->capture_default_str();
+}
+
+void AddCheckAndLaws(CLI::App* app, Commands* c) {
+  c->check_cmd = app->add_subcommand(
+      "check", "the scene's tags resolved, contact estimates and the timestep they need");
+  c->check_cmd->add_option("scene", c->check.scene, "MJCF scene with contactlaw tags")
+      ->required();
+  c->check_cmd->add_option("--law", c->check.law,
+                           fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(c->check_cmd, "--restitution", &c->check.restitution,
+            "override every tag's restitution");
+  AddNumber(c->check_cmd, "--timestep", &c->check.timestep, "s (default: the scene's)");
+  AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
+            "m/s (default: estimated from the scene's initial state)");
+
+  c->laws_cmd = app->add_subcommand("laws", "list the laws: formula, parameters, units, citation");
+  c->laws_cmd
+      ->add_option("--format", c->laws.format,
+                   "text, or csv: each law's hysteresis coefficient a(e) and the restitution "
+                   "it rebounds with, per restitution")
+      ->capture_default_str();
+  c->laws_cmd->add_option("--restitution", c->laws.restitution,
+                          "with --format csv: E1,E2,... or start:stop:step (default "
+                          "0.9,0.7,0.5,0.3,0.1)");
+}
+
+// Runs the command that was parsed; its exit status.
+int Dispatch(const Commands& c) {
+  try {
+    if (c.run_cmd->parsed()) return RunCommand(c.run);
+    if (c.compare_cmd->parsed()) return CompareCommand(c.compare);
+    if (c.restitution_cmd->parsed()) return RestitutionCommand(c.restitution);
+    if (c.check_cmd->parsed()) return CheckCommand(c.check);
+    if (c.laws_cmd->parsed()) return LawsCommand(c.laws);
+  } catch (const Error& e) {
+    fmt::print(stderr, "contactlaws: {}\n", e.what());
+    return kExitRefused;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "contactlaws: internal error: {}\n", e.what());
+  }
+  return 1;
+}
+
 int Main(int argc, char** argv) {
   CLI::App app{"contactlaws: continuous contact force laws (Flores et al. 2011) in MuJoCo 2.2",
                "contactlaws"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every command");
-
-  RunArgs run;
-  CLI::App* run_cmd = app.add_subcommand("run", "simulate one tagged scene");
-  AddCommon(run_cmd, &run, true);
-  run_cmd->add_option("--law", run.law, fmt::format("override every tag's law: {}", LawNameList()));
-  AddNumber(run_cmd, "--restitution", &run.restitution,
-            "override every tag's restitution e, in [0, 1]");
-  run_cmd->add_option("--output", run.output, "trajectory CSV ('-' for stdout); none if absent");
-  run_cmd->add_option("--impacts", run.impacts, "impact log CSV, one row per contact episode");
-
-  SweepArgs compare;
-  CLI::App* compare_cmd = app.add_subcommand(
-      "compare", "every law x restitution on a scene: trajectories, impacts and summary CSV");
-  AddSweep(compare_cmd, &compare,
-           "E1,E2,... or start:stop:step, each in [0, 1] (default: the scene's)");
-  compare_cmd->add_option("--output-dir", compare.output_dir,
-                          "writes trajectories.csv, impacts.csv, summary.csv")
-      ->capture_default_str();
-
-  SweepArgs restitution;
-  restitution.duration = "2";
-  CLI::App* restitution_cmd = app.add_subcommand(
-      "restitution", "the first impact of every law x restitution: e_post (paper Fig. 7)");
-  AddSweep(restitution_cmd, &restitution,
-           "E1,E2,... or start:stop:step, each in [0, 1] (default 0.1:1.0:0.1)");
-  restitution_cmd->add_option("--output", restitution.output, "CSV, '-' for stdout")
-      ->capture_default_str();
-
-  CheckArgs check;
-  CLI::App* check_cmd = app.add_subcommand(
-      "check", "the scene's tags resolved, contact estimates and the timestep they need");
-  check_cmd->add_option("scene", check.scene, "MJCF scene with contactlaw tags")->required();
-  check_cmd->add_option("--law", check.law, fmt::format("override every tag's law: {}", LawNameList()));
-  AddNumber(check_cmd, "--restitution", &check.restitution, "override every tag's restitution");
-  AddNumber(check_cmd, "--timestep", &check.timestep, "s (default: the scene's)");
-  AddNumber(check_cmd, "--impact-velocity", &check.impact_velocity,
-            "m/s (default: estimated from the scene's initial state)");
-
-  LawsArgs laws;
-  CLI::App* laws_cmd =
-      app.add_subcommand("laws", "list the laws: formula, parameters, units, citation");
-  laws_cmd->add_option("--format", laws.format,
-                       "text, or csv: each law's hysteresis coefficient a(e) and the "
-                       "restitution it rebounds with, per restitution")
-      ->capture_default_str();
-  laws_cmd->add_option("--restitution", laws.restitution,
-                       "with --format csv: E1,E2,... or start:stop:step (default "
-                       "0.9,0.7,0.5,0.3,0.1)");
+  Commands commands;
+  commands.restitution.duration = "2";
+  AddRun(&app, &commands);
+  AddSweeps(&app, &commands);
+  AddCheckAndLaws(&app, &commands);
 
   try {
     app.parse(argc, argv);
@@ -154,20 +196,7 @@ int Main(int argc, char** argv) {
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
   InstallStopHandler();
-  int status = 1;
-  try {
-    if (run_cmd->parsed()) status = RunCommand(run);
-    if (compare_cmd->parsed()) status = CompareCommand(compare);
-    if (restitution_cmd->parsed()) status = RestitutionCommand(restitution);
-    if (check_cmd->parsed()) status = CheckCommand(check);
-    if (laws_cmd->parsed()) status = LawsCommand(laws);
-  } catch (const Error& e) {
-    fmt::print(stderr, "contactlaws: {}\n", e.what());
-    status = kExitRefused;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "contactlaws: internal error: {}\n", e.what());
-    status = 1;
-  }
+  const int status = Dispatch(commands);
   ReportOtherMujocoWarnings();
   return status;
 }

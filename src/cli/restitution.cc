@@ -15,8 +15,58 @@ namespace {
 // The restitution sweep of the paper's Fig. 7.
 constexpr char kDefaultSweep[] = "0.1:1.0:0.1";
 
-}  // namespace
+// A run's first episode, as far as it is known: a run that finished has one
+// (or none), and it has ended (closed) or not.
+struct FirstEpisode {
+  RunSpec spec;
+  std::optional<Impact> first;  // a finished run's first episode
+  bool closed = false;
+};
 
+FirstEpisode FirstEpisodeOf(const RunSpec& spec, const RunOutput& run) {
+  FirstEpisode episode{spec, std::nullopt, false};
+  if (run.status == RunOutput::Status::kOk && run.first) {
+    episode.first = run.first;
+    episode.closed = !run.first->open;
+  }
+  return episode;
+}
+
+// The CSV row: empty fields for what is not known.
+std::vector<std::string> CsvFields(const FirstEpisode& e) {
+  const std::optional<Impact>& first = e.first;
+  auto if_known = [&](double v) { return first ? Field(v) : std::string(); };
+  auto if_closed = [&](double v) { return e.closed ? Field(v) : std::string(); };
+  return {std::string(LawName(e.spec.law)),
+          Field(*e.spec.restitution),
+          first ? if_closed(first->restitution_post()) : "",
+          first ? if_known(first->impact_velocity) : "",
+          first ? if_known(first->max_depth) : "",
+          first ? if_known(first->max_force) : "",
+          first ? if_closed(first->time_separation - first->time_contact) : ""};
+}
+
+void PrintTable(const std::vector<FirstEpisode>& rows, const std::string& output) {
+  fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", "law", "restitution",
+             "e_post", "exact e_post", "max depth (m)", "max force (N)", "duration (s)");
+  for (const FirstEpisode& r : rows) {
+    std::optional<double> post, duration;
+    if (r.closed) {
+      post = r.first->restitution_post();
+      duration = r.first->time_separation - r.first->time_contact;
+    }
+    const std::optional<double> exact = EffectiveRestitution(r.spec.law, *r.spec.restitution);
+    fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", LawName(r.spec.law),
+               Field(*r.spec.restitution), Cell(post, "{:.6f}"), Cell(exact, "{:.6f}"),
+               r.first ? fmt::format("{:.6g}", r.first->max_depth) : "-",
+               r.first ? fmt::format("{:.6g}", r.first->max_force) : "-",
+               Cell(duration, "{:.6g}"));
+  }
+  fmt::print("exact e_post: the closed form a (1 + e) = ln((1 + a) / (1 - a e)), "
+             "gravity neglected\nwrote {}\n", output);
+}
+
+}  // namespace
 
 int RestitutionCommand(const SweepArgs& args) {
   const CommonOptions common = ParseCommon(args);
@@ -26,8 +76,8 @@ int RestitutionCommand(const SweepArgs& args) {
   const std::vector<double> restitutions =
       ParseRestitutionList("--restitution", args.restitution.value_or(kDefaultSweep));
   std::vector<RunSpec> specs;
-  for (LawKind law : laws) {
-    for (double e : restitutions) specs.push_back({law, e});
+  for (const LawKind law : laws) {
+    for (const double e : restitutions) specs.push_back({law, e});
   }
   const Scene scene(args.scene);
   const std::vector<std::vector<TimestepAdvice>> advices =
@@ -36,11 +86,7 @@ int RestitutionCommand(const SweepArgs& args) {
   CsvFile out(args.output);
   out.Header({"law", "restitution", "restitution_post", "impact_velocity", "max_depth",
               "max_force", "contact_duration"});
-  struct Row {
-    RunSpec spec;
-    std::optional<Impact> first;
-  };
-  std::vector<Row> rows;
+  std::vector<FirstEpisode> rows;
   int incomplete = 0;
   AdvanceOptions advance;
   advance.duration = common.duration;
@@ -49,53 +95,24 @@ int RestitutionCommand(const SweepArgs& args) {
   int status = Sweep(
       scene, options, specs, advices, advance, Record::kSummary, jobs, args.quiet,
       [&](int k, RunOutput& run) {
-        const RunSpec& spec = specs[k];
-        const std::optional<Impact>& first = run.first;
-        const bool closed = run.status == RunOutput::Status::kOk && first && !first->open;
-        if (run.status == RunOutput::Status::kOk && !closed) {
+        const FirstEpisode episode = FirstEpisodeOf(specs[k], run);
+        if (run.status == RunOutput::Status::kOk && !episode.closed) {
           ++incomplete;
-          Warn(scene.path(), fmt::format("{}: {} within --duration={} s", Describe(spec),
-                                         first ? "the first contact did not end" : "no contact",
+          Warn(scene.path(), fmt::format("{}: {} within --duration={} s", Describe(specs[k]),
+                                         run.first ? "the first contact did not end"
+                                                   : "no contact",
                                          common.duration));
         }
+        // an interrupted run leaves no row; a failed one an empty row
         if (run.status != RunOutput::Status::kOk && run.status != RunOutput::Status::kFailed) {
-          return;  // interrupted: no row
+          return;
         }
-        const bool known = run.status == RunOutput::Status::kOk && first;
-        auto if_known = [&](double v) { return known ? Field(v) : std::string(); };
-        auto if_closed = [&](double v) { return closed ? Field(v) : std::string(); };
-        out.Fields({std::string(LawName(spec.law)), Field(*spec.restitution),
-                    first ? if_closed(first->restitution_post()) : "",
-                    first ? if_known(first->impact_velocity) : "",
-                    first ? if_known(first->max_depth) : "",
-                    first ? if_known(first->max_force) : "",
-                    first ? if_closed(first->time_separation - first->time_contact) : ""});
-        rows.push_back({spec, known ? first : std::nullopt});
+        out.Fields(CsvFields(episode));
+        rows.push_back(episode);
       });
   out.Commit();
   if (status == 0 && incomplete) status = kExitIncomplete;
-
-  if (args.output != "-") {
-    fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", "law", "restitution",
-               "e_post", "exact e_post", "max depth (m)", "max force (N)", "duration (s)");
-    for (const Row& r : rows) {
-      std::optional<double> post, duration, exact;
-      if (r.first && !r.first->open) {
-        post = r.first->restitution_post();
-        duration = r.first->time_separation - r.first->time_contact;
-      }
-      if (r.spec.law != LawKind::kKelvinVoigt && *r.spec.restitution > 0) {
-        exact = ExactRebound(HysteresisCoefficient(r.spec.law, *r.spec.restitution));
-      }
-      fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", LawName(r.spec.law),
-                 Field(*r.spec.restitution), Cell(post, "{:.6f}"), Cell(exact, "{:.6f}"),
-                 r.first ? fmt::format("{:.6g}", r.first->max_depth) : "-",
-                 r.first ? fmt::format("{:.6g}", r.first->max_force) : "-",
-                 Cell(duration, "{:.6g}"));
-    }
-    fmt::print("exact e_post: the closed form a (1 + e) = ln((1 + a) / (1 - a e)), "
-               "gravity neglected\nwrote {}\n", args.output);
-  }
+  if (args.output != "-") PrintTable(rows, args.output);
   return status;
 }
 

@@ -71,10 +71,13 @@ std::optional<double> EffectiveRestitution(LawKind kind, double restitution) {
   return ExactRebound(HysteresisCoefficient(kind, restitution));
 }
 
-double ReportedRestitution(LawKind kind, double restitution) {
+bool IsElastic(LawKind kind) {
   const LawInfo& law = Law(kind);
-  const bool elastic = law.family == LawFamily::kHysteresis && !law.hysteresis;
-  return elastic ? 1.0 : restitution;
+  return law.family == LawFamily::kHysteresis && !law.hysteresis;
+}
+
+double ReportedRestitution(LawKind kind, double restitution) {
+  return IsElastic(kind) ? 1.0 : restitution;
 }
 
 std::optional<ParamError> ValidateLawParams(const LawParams& p) {

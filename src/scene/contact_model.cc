@@ -134,7 +134,7 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
   base.kind = overrides.law ? *overrides.law : *spec.law;
   const std::optional<double> restitution =
       overrides.restitution ? overrides.restitution : spec.restitution;
-  if (!restitution && base.kind != LawKind::kHertz) {
+  if (!restitution && !IsElastic(base.kind)) {
     resolve.Fail(fmt::format("missing key restitution (law={} needs it)", LawName(base.kind)));
   }
   base.restitution = restitution.value_or(1.0);

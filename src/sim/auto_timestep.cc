@@ -42,7 +42,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     const double mass = PairEffectiveMass(cm, p);
     effective_mass_.push_back(mass);
     // t_c is proportional to v^((1 - n) / (1 + n)) (Hertz family; KV: v^0)
-    const double n = pair.params.kind == LawKind::kKelvinVoigt ? 1.0 : pair.params.exponent;
+    const double n = Law(pair.params.kind).family == LawFamily::kLinear ? 1.0 : pair.params.exponent;
     duration_at_unit_speed_.push_back(ElasticContactDuration(pair.params, mass, 1.0));
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
     double accel = 0;
@@ -61,10 +61,62 @@ double AutoTimestep::FineStep(int pair, double v) const {
   const double speed = std::max(v, law.min_impact_velocity);
   const double duration =
       duration_at_unit_speed_[pair] * std::pow(speed, duration_speed_exponent_[pair]);
-  const double steps = law.kind == LawKind::kKelvinVoigt
+  const double steps = Law(law.kind).family == LawFamily::kLinear
                            ? options_.kelvin_voigt_steps_per_contact
                            : options_.steps_per_contact;
   return duration / steps;
+}
+
+double AutoTimestep::ApproachStep(int p, bool* fine) const {
+  const ContactModel& cm = contacts_.model();
+  const mjModel* m = cm.model();
+  const mjData* d = contacts_.data();
+  const GeomPair& pair = cm.pairs()[p];
+  const int g[2] = {pair.geom[0], pair.geom[1]};
+  const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
+  mjtNum normal[3];  // from geom[0] towards geom[1]
+  double gap;
+  double spin = 0;  // what rotation adds to the closing speed
+  if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
+    const mjtNum* mat = d->geom_xmat + 9 * g[0];
+    normal[0] = mat[2];
+    normal[1] = mat[5];
+    normal[2] = mat[8];
+    mjtNum offset[3];
+    mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
+    gap = mju_dot3(offset, normal) - rb[1];
+    spin = mju_norm3(d->cvel + 6 * pair.body[1]) * rb[1];
+  } else if (rb[0] > 0 && rb[1] > 0) {
+    mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
+    const double distance = mju_normalize3(normal);
+    gap = distance - rb[0] - rb[1];
+    for (int b = 0; b < 2; ++b) {
+      if (!cm.FindDrive(pair.body[b])) spin += mju_norm3(d->cvel + 6 * pair.body[b]) * rb[b];
+    }
+  } else {
+    // no bounding sphere (planes, height fields): always near
+    *fine = true;
+    return FineStep(p, 0.0);
+  }
+  mjtNum v[2][3], relative[3];
+  for (int b = 0; b < 2; ++b) {
+    contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
+  }
+  mju_sub3(relative, v[0], v[1]);
+  const double closing = mju_dot3(relative, normal) + spin;
+  const double accel = top_acceleration_[p] + GravityClosingAcceleration(cm, pair, normal);
+  const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
+  const double allowed =
+      gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
+  if (allowed > pair_fine) return allowed;
+  // near: fine steps, and the one that reaches the touch ends there, so
+  // that a force that jumps at d = 0+ acts from the start of a step
+  // (a touch within a step would act for a fraction of it: an error of
+  // the first order in the step). A touch within a hundredth of a fine
+  // step is left to that step: it would not advance the time.
+  *fine = true;
+  const double touch = gap > 0 ? TimeToClose(gap, closing, accel) : 0.0;
+  return touch > 0.01 * pair_fine && touch < pair_fine ? touch : pair_fine;
 }
 
 double AutoTimestep::Next(double until) {
@@ -94,55 +146,7 @@ double AutoTimestep::Next(double until) {
     mj_comPos(m, d);
     mj_comVel(m, d);
     for (int p = 0; p < npair; ++p) {
-      if (in_contact_[p]) continue;
-      const GeomPair& pair = cm.pairs()[p];
-      const int g[2] = {pair.geom[0], pair.geom[1]};
-      const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
-      mjtNum normal[3];  // from geom[0] towards geom[1]
-      double gap;
-      double spin = 0;  // what rotation adds to the closing speed
-      if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
-        const mjtNum* mat = d->geom_xmat + 9 * g[0];
-        normal[0] = mat[2];
-        normal[1] = mat[5];
-        normal[2] = mat[8];
-        mjtNum offset[3];
-        mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-        gap = mju_dot3(offset, normal) - rb[1];
-        spin = mju_norm3(d->cvel + 6 * pair.body[1]) * rb[1];
-      } else if (rb[0] > 0 && rb[1] > 0) {
-        mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-        const double distance = mju_normalize3(normal);
-        gap = distance - rb[0] - rb[1];
-        for (int b = 0; b < 2; ++b) {
-          if (!cm.FindDrive(pair.body[b])) spin += mju_norm3(d->cvel + 6 * pair.body[b]) * rb[b];
-        }
-      } else {
-        // no bounding sphere (planes, height fields): always near
-        step = std::min(step, FineStep(p, 0.0));
-        fine = true;
-        continue;
-      }
-      mjtNum v[2][3], relative[3];
-      for (int b = 0; b < 2; ++b) contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
-      mju_sub3(relative, v[0], v[1]);
-      const double closing = mju_dot3(relative, normal) + spin;
-      const double accel = top_acceleration_[p] + GravityClosingAcceleration(cm, pair, normal);
-      const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
-      const double allowed =
-          gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
-      if (allowed > pair_fine) {
-        step = std::min(step, allowed);
-        continue;
-      }
-      // near: fine steps, and the one that reaches the touch ends there, so
-      // that a force that jumps at d = 0+ acts from the start of a step
-      // (a touch within a step would act for a fraction of it: an error of
-      // the first order in the step). A touch within a hundredth of a fine
-      // step is left to that step: it would not advance the time.
-      fine = true;
-      const double touch = gap > 0 ? TimeToClose(gap, closing, accel) : 0.0;
-      step = std::min(step, touch > 0.01 * pair_fine && touch < pair_fine ? touch : pair_fine);
+      if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
     }
   }
 
