@@ -11,9 +11,11 @@ into RESULTS_DIR:
     fig6_first_contact.png       fig6/trajectories.csv, fig6/impacts.csv
         paper Fig. 6: depth, depth rate, force and force-depth loop of the
         first contact, Flores, e = 1.0, 0.8, 0.6, 0.4, 0.2
-    fig7_restitution.png         fig7.csv
+    fig7_restitution.png         fig7.csv, laws.csv
         paper Fig. 7: post- against pre-impact restitution, five laws, with
-        the closed-form rebound of Hunt-Crossley, Lankarani-Nikravesh, Flores
+        the closed-form rebound of each dissipative law of the hysteresis
+        family (laws.csv: `contactlaws laws --format csv`, the program's own
+        formulas, not copies of them)
     fig8_table_hertz.png         fig8/trajectories.csv
         paper Fig. 8: ball on the driven table, Hertz
     fig9_table_dissipative.png   fig9/trajectories.csv
@@ -76,6 +78,8 @@ COMMANDS = {
             " --sample-rate 100000 --output-dir {out}/fig6",
     "fig7.csv": f"{_CL} restitution {_BALL} --laws all"
                 " --restitution 0.05:1.0:0.05 --output {out}/fig7.csv",
+    "laws.csv": f"{_CL} laws --format csv --restitution 0.01:1.0:0.002"
+                " > {out}/laws.csv",
     "fig8": f"{_CL} compare {_TABLE} --laws hertz --duration 10"
             " --output-dir {out}/fig8",
     "fig9": f"{_CL} compare {_TABLE}"
@@ -87,12 +91,12 @@ COMMANDS = {
 INPUTS = [
     "fig5/trajectories.csv",
     "fig6/trajectories.csv", "fig6/impacts.csv",
-    "fig7.csv",
+    "fig7.csv", "laws.csv",
     "fig8/trajectories.csv",
     "fig9/trajectories.csv",
     "table-e0.6/trajectories.csv", "table-e0.6/impacts.csv",
 ]
-TEXT_COLUMNS = {"law", "pair", "geom1", "geom2"}
+TEXT_COLUMNS = {"law", "pair", "geom1", "geom2", "family"}
 
 
 # --------------------------------------------------------------------------
@@ -208,34 +212,27 @@ def plot_ball_and_table(ax, runs, table_run):
     ax.grid(alpha=0.3)
 
 
-def closed_form_post_restitution(a):
-    """e_post solving a (1 + e_post) = ln((1 + a) / (1 - a e_post)).
+def closed_forms(results):
+    """Each dissipative law's closed-form rebound, from the program.
 
-    Vectorised bisection on e_post in (0, min(1, 1/a)); the series
-    1 - 2a/3 + 4a^2/9 for a < 1e-4 (e_post = 1 at a = 0).
+    laws.csv (`contactlaws laws --format csv`) gives, per law and e, the
+    hysteresis coefficient a(e) and the rebound e_post that solves
+    a (1 + e_post) = ln((1 + a) / (1 - a e_post)); empty where the law has
+    no closed form (kelvin-voigt) or e is outside its range. Elastic laws
+    (a = 0 everywhere) are left out. Returns {law: (e, e_post)}.
     """
-    a = np.asarray(a, dtype=float)
-    small = a < 1e-4
-    ab = np.where(small, 1.0, a)  # placeholder keeps the logs finite
-    lo = np.zeros_like(ab)
-    hi = np.minimum(1.0, 1.0 / ab)
-    for _ in range(80):
-        mid = 0.5 * (lo + hi)
-        # for large a the root is within rounding of 1/a: ln(+inf) is fine
-        with np.errstate(divide="ignore"):
-            f = np.log((1 + ab) / (1 - ab * mid)) - ab * (1 + mid)
-        # f < 0 below the root, f > 0 above it
-        lo = np.where(f < 0, mid, lo)
-        hi = np.where(f < 0, hi, mid)
-    series = 1 - 2 * a / 3 + 4 * a ** 2 / 9
-    return np.where(small, series, 0.5 * (lo + hi))
-
-
-CLOSED_FORM_A = {
-    "hunt-crossley": lambda e: 3 * (1 - e) / 2,
-    "lankarani-nikravesh": lambda e: 3 * (1 - e ** 2) / 4,
-    "flores": lambda e: 8 * (1 - e) / (5 * e),
-}
+    table = read_csv(results / "laws.csv",
+                     ["law", "restitution", "hysteresis_coefficient",
+                      "effective_restitution"])
+    forms = {}
+    for law in dict.fromkeys(table["law"]):
+        rows = select(table, law)
+        known = ~np.isnan(rows["effective_restitution"])
+        if not known.any() or not np.nanmax(rows["hysteresis_coefficient"]) > 0:
+            continue
+        forms[law] = (rows["restitution"][known],
+                      rows["effective_restitution"][known])
+    return forms
 
 
 # --------------------------------------------------------------------------
@@ -320,7 +317,7 @@ def fig6_first_contact(results):
 def fig7_restitution(results):
     data = read_csv(results / "fig7.csv",
                     ["law", "restitution", "restitution_post"])
-    e_grid = np.linspace(0.01, 1.0, 500)
+    forms = closed_forms(results)
     fig, ax = plt.subplots(figsize=(10, 6))
     ax.plot([0, 1], [0, 1], "k--", lw=1)
     for law in LAWS:
@@ -328,12 +325,11 @@ def fig7_restitution(results):
         ax.plot(run["restitution"], run["restitution_post"], ls="none",
                 marker=MARKERS[law], ms=6, mfc="none", mew=1.3,
                 color=law_colour(law))
-        if law in CLOSED_FORM_A:
-            e_post = closed_form_post_restitution(CLOSED_FORM_A[law](e_grid))
-            ax.plot(e_grid, e_post, color=law_colour(law), lw=1)
+        if law in forms:
+            ax.plot(*forms[law], color=law_colour(law), lw=1)
     law_handles = [
         Line2D([], [], color=law_colour(law), marker=MARKERS[law], mfc="none",
-               mew=1.3, lw=1 if law in CLOSED_FORM_A else 0,
+               mew=1.3, lw=1 if law in forms else 0,
                label=law_name(law))
         for law in LAWS
     ]

@@ -4,6 +4,7 @@
 #   results/fig5/      bouncing ball, Flores, e = 0.9, 10 s          (Figs. 5 and 11)
 #   results/fig6/      first contact, Flores, e = 1.0 ... 0.2        (Fig. 6)
 #   results/fig7.csv   first-impact e_post, five laws, e = 0.05 ... 1 (Fig. 7)
+#   results/laws.csv   each law's a(e) and closed-form rebound (contactlaws laws)
 #   results/fig8/      ball on the driven table, Hertz               (Fig. 8)
 #   results/fig9/      table, HC, LN, Flores at e = 0.9, 0.6, 0.3     (Fig. 9)
 #   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10)
@@ -34,6 +35,8 @@ echo "== Fig. 6: the first contact, Flores, e = 1.0, 0.8, 0.6, 0.4, 0.2 (every s
 echo
 echo "== Fig. 7: post- against pre-impact restitution, the five laws =="
 "$cl" restitution "$ball" --laws all --restitution 0.05:1.0:0.05 --output "$out/fig7.csv"
+# the closed-form rebound of each law, from the program's own formulas
+"$cl" laws --format csv --restitution 0.01:1.0:0.002 > "$out/laws.csv"
 echo
 echo "== Fig. 8: the ball on the driven table, Hertz =="
 "$cl" compare "$table" --laws hertz --duration 10 --output-dir "$out/fig8"
