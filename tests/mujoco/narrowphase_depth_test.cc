@@ -20,9 +20,7 @@
 // fail the day MuJoCo changes. NarrowphaseSurvey.PrintsTable prints the
 // per-pair summary; NARROWPHASE_SURVEY=full prints every configuration.
 //
-// Build and run (links only MuJoCo and GoogleTest):
-//   g++ -O2 -std=c++17 narrowphase_depth_test.cc -lmujoco -lgtest -lgtest_main -pthread
-//   ./a.out
+// Links only MuJoCo and GoogleTest: build/tests/narrowphase_depth_test.
 
 #include <algorithm>
 #include <array>
