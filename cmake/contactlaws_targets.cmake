@@ -8,10 +8,19 @@ if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_compile_options(contactlaws_warnings INTERFACE -Wall -Wextra -Wpedantic)
 endif()
 
-# contactlaws_add_layer(NAME SOURCES...): one layer of the library, an object
-# library that sees include/ and src/.
-function(contactlaws_add_layer name)
-  add_library(${name} OBJECT ${ARGN})
+# contactlaws_add_layer(LAYER [WITHOUT_MUJOCO] [DEPENDS TARGETS...]): the
+# sources of src/LAYER as the object library contactlaws_LAYER, which sees
+# include/ and src/ and links DEPENDS publicly. WITHOUT_MUJOCO: refuse a
+# MuJoCo, fmt or Eigen header reached from the layer (contactlaws_check_layer).
+function(contactlaws_add_layer layer)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "WITHOUT_MUJOCO" "" "DEPENDS")
+  set(name contactlaws_${layer})
+  file(GLOB sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/src/${layer}/*.cc")
+  add_library(${name} OBJECT ${sources})
+  target_link_libraries(${name} PUBLIC ${arg_DEPENDS})
+  if(arg_WITHOUT_MUJOCO)
+    contactlaws_check_layer(src/${layer})
+  endif()
   target_compile_features(${name} PUBLIC cxx_std_17)
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>

@@ -98,26 +98,29 @@ bad_tags=(
   "geom1=ball geom2=ball law=hertz stiffness=1e8"
   "geom1=ball geom2=floor law=hertz stiffness=1e8 damping=-1"
 )
-k=0
-for data in "${bad_tags[@]}"; do
-  k=$((k + 1))
-  scene="scenes/bad_tag_$k.xml"
-  sed "s|data=\"geom1=ball[^\"]*\"|data=\"$data\"|" "$ball" >"$out/$scene"
-  case_ "bad_tag_${k}_run" run "$scene"
-  case_ "bad_tag_${k}_check" check "$scene"
-done
 bad_drives=(
   "body=table motion=square axis=z amplitude=0.01 omega=10"
   "body=tabel motion=sine axis=z amplitude=0.01 omega=10"
   "body=table motion=sine axis=0,0,0 amplitude=0.01 omega=10"
   "body=table motion=sine axis=z omega=10"
 )
-k=0
-for data in "${bad_drives[@]}"; do
-  k=$((k + 1))
-  scene="scenes/bad_drive_$k.xml"
-  sed "s|name=\"contactdrive:\([^\"]*\)\" *data=\"[^\"]*\"|name=\"contactdrive:\1\" data=\"$data\"|" \
-    "$table" >"$out/$scene"
-  case_ "bad_drive_${k}_run" run "$scene"
-done
+
+# bad_scenes KIND SCENE PREFIX COMMANDS DATA...: SCENE with the data="..."
+# that follows PREFIX (a sed pattern on the same line) replaced by each DATA,
+# run by each of COMMANDS
+bad_scenes() {
+  local kind="$1" source="$2" prefix="$3" commands="$4"
+  shift 4
+  local k=0 data scene command
+  for data in "$@"; do
+    k=$((k + 1))
+    scene="scenes/bad_${kind}_$k.xml"
+    sed "s|\($prefix\)data=\"[^\"]*\"|\1data=\"$data\"|" "$source" >"$out/$scene"
+    for command in $commands; do
+      case_ "bad_${kind}_${k}_${command}" "$command" "$scene"
+    done
+  done
+}
+bad_scenes tag "$ball" ' *' "run check" "${bad_tags[@]}"
+bad_scenes drive "$table" 'name="contactdrive:[^"]*" *' "run" "${bad_drives[@]}"
 echo "behaviour_snapshot: $(ls "$out" | wc -l) entries in $out"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/options.h"
+#include "cli/sweep.h"
 
 namespace contactlaws::cli {
 
@@ -22,15 +23,6 @@ struct RunArgs : CommonArgs {
   std::optional<std::string> restitution;
   std::optional<std::string> output;
   std::optional<std::string> impacts;
-};
-
-struct SweepArgs : CommonArgs {
-  std::string laws = "all";
-  std::optional<std::string> restitution;  // list or range
-  std::string output_dir = "results";      // compare
-  std::string output = "-";                // restitution
-  bool quiet = false;
-  std::optional<std::string> jobs;         // default: the number of cores
 };
 
 struct CheckArgs {

@@ -109,25 +109,21 @@ void PrintTable(const std::vector<TableRow>& rows) {
 }  // namespace
 
 int CompareCommand(const SweepArgs& args) {
-  const CommonOptions common = ParseCommon(args);
-  const SimulationOptions& options = common.simulation;
-  const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
-  const int jobs = Jobs(args.jobs);
-  std::vector<double> restitutions;
-  if (args.restitution) restitutions = ParseRestitutionList("--restitution", *args.restitution);
-  const std::vector<RunSpec> specs = CompareSpecs(laws, restitutions);
-  const Scene scene(args.scene);
+  const SweepInputs in = ReadSweepInputs(args, nullptr);
+  const SimulationOptions& options = in.common.simulation;
+  const std::vector<RunSpec> specs = CompareSpecs(in.laws, in.restitutions);
   const std::vector<std::vector<TimestepAdvice>> advices =
-      Prepare(scene, options, specs, common.auto_timestep.has_value());
+      Prepare(*in.scene, options, specs, in.common.auto_timestep.has_value());
 
-  CompareFiles files(args.output_dir, scene.Make(OptionsFor(options, specs.front()))->Columns());
+  CompareFiles files(args.output_dir,
+                     in.scene->Make(OptionsFor(options, specs.front()))->Columns());
   AdvanceOptions advance;
-  advance.duration = common.duration;
-  advance.sample_rate = common.sample_rate;
-  advance.auto_timestep = common.auto_timestep;
+  advance.duration = in.common.duration;
+  advance.sample_rate = in.common.sample_rate;
+  advance.auto_timestep = in.common.auto_timestep;
   std::vector<TableRow> rows;
-  const int status = Sweep(scene, options, specs, advices, advance, Record::kEverything, jobs,
-                           args.quiet, [&](int k, RunOutput& out) {
+  const int status = Sweep(*in.scene, options, specs, advices, advance, Record::kEverything,
+                           in.jobs, args.quiet, [&](int k, RunOutput& out) {
                              files.Write(specs[k], out);
                              rows.push_back({specs[k], out.status, out.restitution, out.summary,
                                              out.dissipated});

@@ -69,19 +69,15 @@ void PrintTable(const std::vector<FirstEpisode>& rows, const std::string& output
 }  // namespace
 
 int RestitutionCommand(const SweepArgs& args) {
-  const CommonOptions common = ParseCommon(args);
-  const SimulationOptions& options = common.simulation;
-  const std::vector<LawKind> laws = ParseLawList("--laws", args.laws);
-  const int jobs = Jobs(args.jobs);
-  const std::vector<double> restitutions =
-      ParseRestitutionList("--restitution", args.restitution.value_or(kDefaultSweep));
+  const SweepInputs in = ReadSweepInputs(args, kDefaultSweep);
+  const SimulationOptions& options = in.common.simulation;
+  const Scene& scene = *in.scene;
   std::vector<RunSpec> specs;
-  for (const LawKind law : laws) {
-    for (const double e : restitutions) specs.push_back({law, e});
+  for (const LawKind law : in.laws) {
+    for (const double e : in.restitutions) specs.push_back({law, e});
   }
-  const Scene scene(args.scene);
   const std::vector<std::vector<TimestepAdvice>> advices =
-      Prepare(scene, options, specs, common.auto_timestep.has_value());
+      Prepare(scene, options, specs, in.common.auto_timestep.has_value());
 
   CsvFile out(args.output);
   out.Header({"law", "restitution", "restitution_post", "impact_velocity", "max_depth",
@@ -89,11 +85,11 @@ int RestitutionCommand(const SweepArgs& args) {
   std::vector<FirstEpisode> rows;
   int incomplete = 0;
   AdvanceOptions advance;
-  advance.duration = common.duration;
+  advance.duration = in.common.duration;
   advance.until_first_episode = true;
-  advance.auto_timestep = common.auto_timestep;
+  advance.auto_timestep = in.common.auto_timestep;
   int status = Sweep(
-      scene, options, specs, advices, advance, Record::kSummary, jobs, args.quiet,
+      scene, options, specs, advices, advance, Record::kSummary, in.jobs, args.quiet,
       [&](int k, RunOutput& run) {
         const FirstEpisode episode = FirstEpisodeOf(specs[k], run);
         if (run.status == RunOutput::Status::kOk && !episode.closed) {
@@ -101,7 +97,7 @@ int RestitutionCommand(const SweepArgs& args) {
           Warn(scene.path(), fmt::format("{}: {} within --duration={} s", Describe(specs[k]),
                                          run.first ? "the first contact did not end"
                                                    : "no contact",
-                                         common.duration));
+                                         in.common.duration));
         }
         // an interrupted run leaves no row; a failed one an empty row
         if (run.status != RunOutput::Status::kOk && run.status != RunOutput::Status::kFailed) {

@@ -110,6 +110,19 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
 
 }  // namespace
 
+SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restitutions) {
+  SweepInputs in;
+  in.common = ParseCommon(args);
+  in.laws = ParseLawList("--laws", args.laws);
+  in.jobs = Jobs(args.jobs);
+  if (args.restitution || default_restitutions) {
+    in.restitutions =
+        ParseRestitutionList("--restitution", args.restitution.value_or(default_restitutions));
+  }
+  in.scene = std::make_unique<Scene>(args.scene);
+  return in;
+}
+
 std::string Describe(const RunSpec& spec) {
   return spec.restitution ? fmt::format("{} e={}", LawName(spec.law), *spec.restitution)
                           : std::string(LawName(spec.law));

@@ -8,6 +8,7 @@
 #define CONTACTLAWS_CLI_SWEEP_H_
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,30 @@ struct RunSpec {
   LawKind law = LawKind::kHertz;
   std::optional<double> restitution;  // nullopt: the scene's
 };
+
+// The options of compare and restitution as given.
+struct SweepArgs : CommonArgs {
+  std::string laws = "all";
+  std::optional<std::string> restitution;  // list or range
+  std::string output_dir = "results";      // compare
+  std::string output = "-";                // restitution
+  bool quiet = false;
+  std::optional<std::string> jobs;         // default: the number of cores
+};
+
+// What compare and restitution read the same way, in this order (so that the
+// first bad option is the one refused): the common options, --laws, --jobs,
+// --restitution, the scene.
+struct SweepInputs {
+  CommonOptions common;
+  std::vector<LawKind> laws;
+  int jobs = 1;
+  std::vector<double> restitutions;  // empty: none given, and no default
+  std::unique_ptr<Scene> scene;
+};
+
+// default_restitutions: the list when --restitution is absent (nullptr: none).
+SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restitutions);
 
 // "flores e=0.5", or the law alone for the scene's restitution.
 std::string Describe(const RunSpec& spec);

@@ -30,10 +30,7 @@ using testing::Lines;
 using testing::ReadFile;
 using testing::Result;
 using testing::RunCli;
-using testing::Tag;
-using testing::TagScene;
 using testing::TinyScene;
-using testing::WriteScene;
 
 TEST(CliTest, RefusalsExitTwoWithOneLine) {
   const struct {

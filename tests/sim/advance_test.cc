@@ -21,12 +21,9 @@ namespace {
 
 using testing::Drop;
 using testing::IntegrateDrop;
+using testing::kPaperSweep;
 using testing::Reference;
 using testing::SweepFirstImpact;
-
-// The restitutions of the paper's Fig. 7, as `--restitution 0.1:1.0:0.1`
-// gives them.
-constexpr double kPaperSweep[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
 
 TEST(SweepTest, HertzFamilyMatchesTheClosedForm) {
   // Gravity off, 4.2 m/s, h = 1e-5, Euler: measured errors up to 5.7e-5 (the

@@ -21,7 +21,6 @@ namespace {
 
 using testing::Drop;
 using testing::IntegrateDrop;
-using testing::Reference;
 using testing::SweepFirstImpact;
 
 TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSteps) {

@@ -19,6 +19,10 @@
 
 namespace contactlaws::testing {
 
+// The restitutions of the paper's Fig. 7, as `--restitution 0.1:1.0:0.1`
+// gives them.
+inline constexpr double kPaperSweep[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+
 
 // The sweep as `contactlaws restitution` runs it: a scene, each (law, e) to
 // the end of its first contact episode.
