@@ -92,8 +92,13 @@ class ContactData {
   const ContactModel& model() const { return model_; }
   mjData* data() const { return d_; }
 
-  // Every contact episode so far, in order of first touch.
-  const std::vector<Impact>& impacts() const { return episodes_.impacts(); }
+  // Every collision so far, one per pair from its first point touching to
+  // its last point leaving (CollisionLog), in order of first touch.
+  const std::vector<Impact>& impacts() const { return collisions_.impacts(); }
+
+  // Every contact episode of every contact point so far, in order of first
+  // touch: a point is followed by where it sits on the two bodies.
+  const std::vector<Impact>& point_impacts() const { return episodes_.impacts(); }
 
   // One contact point as the hook last saw it.
   using Evaluation = PointEvaluation;
@@ -128,8 +133,9 @@ class ContactData {
   }
 
  private:
-  // The law at contact point i of pair p (narrowphase output con).
-  PointEvaluation Evaluate(int p, const mjContact& con, int i);
+  // The law at a contact point of pair p (narrowphase output con); taken:
+  // the pair's open episodes already matched in this evaluation.
+  PointEvaluation Evaluate(int p, const mjContact& con, uint64_t* taken);
   // Once a step: sets divergence_ when the step diverged.
   void CheckDivergence();
   // Notices an mjData stepped without BeforeStep (plain mj_step): warns once.
@@ -179,6 +185,7 @@ class ContactData {
   std::optional<Divergence> divergence_;
 
   EpisodeLog episodes_;
+  CollisionLog collisions_;
   DissipationLedger ledger_;
 };
 

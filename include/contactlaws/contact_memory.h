@@ -18,8 +18,10 @@ namespace contactlaws {
 struct PointEvaluation {
   int pair = -1;     // ContactModel::pairs() index
   int tag = -1;      // ContactModel::tags() index of the pair
-  int slot = -1;     // absolute slot index (pair.first_slot + point)
-  bool touch = false;  // no open episode: this evaluation is its first touch
+  // The open episode of this physical point (EpisodeLog index), found by where
+  // the point sits on the two bodies; -1: none, this evaluation is its touch.
+  int episode = -1;
+  bool touch = false;  // episode < 0
   double depth = 0;
   double depth_rate = 0;
   double impact_velocity = 0;  // the law's v0 (floored)
@@ -30,6 +32,9 @@ struct PointEvaluation {
   double dissipated_power = 0;
   double pos[3] = {0, 0, 0};     // contact point, world frame
   double normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
+  // the contact point in the frames of the pair's two bodies (body[0],
+  // body[1]): what identifies it from one step to the next
+  double local[2][3] = {{0, 0, 0}, {0, 0, 0}};
 };
 
 // One contact episode of one contact point: first touch to separation.
@@ -37,6 +42,7 @@ struct Impact {
   int tag = -1;             // ContactModel::tags() index
   int pair = -1;            // ContactModel::pairs() index
   int index = 0;            // 1 for the tag's first episode, 2 for its second ...
+  int points = 1;           // most points in contact at once (a collision; 1 for a point)
   double time_contact = 0;  // s, extrapolated to d = 0
   // d' of the last state before first touch, m/s (> 0): the approach no
   // contact force has slowed yet (a fixed step finds a contact a fraction of
@@ -58,17 +64,28 @@ double TouchTime(const PointEvaluation& e, double t);
 // Sum of the dissipated power of points, W.
 double DissipatedPower(const std::vector<PointEvaluation>& points);
 
-// The episodes of every contact point, committed once per accepted step.
+// The episodes of every contact point, committed once per accepted step. A
+// point is the same physical point from one step to the next when it sits
+// where an open episode's point sat on either of the pair's two bodies
+// (MatchOpenEpisode), whatever order the narrowphase lists it in.
 class EpisodeLog {
  public:
-  // slots: contact points the model can have; tags: its tag count.
-  EpisodeLog(int slots, int tags);
+  // points_per_pair: the most points each pair can have at once (its size is
+  // the pair count); tags: the tag count.
+  EpisodeLog(const std::vector<int>& points_per_pair, int tags);
 
   // Forgets every episode.
   void Reset();
 
-  // The index in impacts() of slot's open episode, or -1.
-  int OpenEpisode(int slot) const { return slot_impact_[slot]; }
+  // The open episode of pair whose point sat nearest to local (the point in
+  // the pair's two body frames), within tolerance (m) in either body's frame,
+  // and not yet taken: *taken has a bit per open episode of the pair (in
+  // OpenEpisodes order), set here for the one returned. -1 when none.
+  int MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
+                       uint64_t* taken) const;
+
+  // The open episodes of pair (indices in impacts()).
+  const std::vector<int>& OpenEpisodes(int pair) const { return pair_open_[pair]; }
 
   // Opens an episode for each touch point and advances the open ones with
   // the points evaluated at the step's start state, time t.
@@ -80,28 +97,60 @@ class EpisodeLog {
   template <typename SeparationSpeed>
   void CloseVanished(SeparationSpeed&& separation_speed);
 
+  // The episodes the last CloseVanished closed (indices in impacts()).
+  const std::vector<int>& closed() const { return closed_; }
+
   // Every episode so far, in order of first touch.
   const std::vector<Impact>& impacts() const { return impacts_; }
 
  private:
-  // What closing an episode needs beyond Impact.
+  // What matching and closing an episode need beyond Impact.
   struct Track {
-    int slot = -1;
     int64_t last_commit = -1;  // the commit that last saw it in contact
     double last_time = 0;
     double last_depth = 0;
     double last_rate = 0;
     double last_pos[3] = {0, 0, 0};
     double last_normal[3] = {0, 0, 0};
+    double local[2][3] = {{0, 0, 0}, {0, 0, 0}};  // where it sat on the bodies
   };
+  void Open(double t, const PointEvaluation& e);
   void Close(int index, double separation_velocity);
 
-  std::vector<int> slot_impact_;  // slot -> index of its open impact, or -1
+  std::vector<std::vector<int>> pair_open_;  // pair -> its open episodes
   std::vector<int> open_;         // indices of open impacts
+  std::vector<int> closed_;       // closed by the last CloseVanished
   std::vector<int> tag_count_;    // episodes per tag
   std::vector<Impact> impacts_;
   std::vector<Track> tracks_;     // parallel to impacts_
   int64_t commits_ = 0;
+};
+
+// The collisions of every pair: from its first point touching to its last
+// point leaving, built from the episodes of its points. A collision's impact
+// velocity is the largest touch velocity among the points that open it (all
+// that touch in its first step); its separation velocity is that of its
+// point that leaves last (the largest, if several leave in one step). Its
+// max_force is the largest sum of its points' forces at one evaluation, its
+// max_depth the deepest point, points the most points in contact at once.
+class CollisionLog {
+ public:
+  // pairs, tags: the pair and tag counts.
+  CollisionLog(int pairs, int tags);
+
+  void Reset();
+
+  // After episodes' Commit and CloseVanished with the same points, time t.
+  void Commit(double t, const std::vector<PointEvaluation>& points, const EpisodeLog& episodes);
+
+  // Every collision so far, in order of first touch.
+  const std::vector<Impact>& impacts() const { return impacts_; }
+
+ private:
+  std::vector<int> open_;       // pair -> its open collision, or -1
+  std::vector<uint8_t> seen_;   // pair -> in contact at this commit (scratch)
+  std::vector<int> tag_count_;  // collisions per tag
+  std::vector<Impact> impacts_;
 };
 
 // The energy the laws dissipated: the trapezoid of their power over the
@@ -145,6 +194,7 @@ struct Divergence {
 
 template <typename SeparationSpeed>
 void EpisodeLog::CloseVanished(SeparationSpeed&& separation_speed) {
+  closed_.clear();
   for (size_t k = 0; k < open_.size();) {
     const int index = open_[k];
     const Track& track = tracks_[index];

@@ -44,13 +44,24 @@ struct GeomPair {
   std::array<int, 2> body = {-1, -1};
   std::array<int, 2> named = {-1, -1};  // geom1, geom2 in the tag's order
   int tag = -1;          // index into ContactModel::tags()
-  int first_slot = 0;    // this pair's contact points: slots [first_slot, first_slot + slots)
   int slots = 1;         // most contact points the narrowphase returns for it
   LawParams params;      // resolved (stiffness from materials included)
   // A depth beyond this is divergence, not contact: kDivergenceDepthFraction
   // of the smaller geom's size (GeomSize), m; infinite for two planes.
   double depth_limit = 0;
+  // Two evaluations of the pair are the same physical contact point when
+  // they sit within this distance of each other on either body (m):
+  // kContactIdentityFraction of the smaller geom's size.
+  double identity_tolerance = 0;
 };
+
+// A contact point is matched from one step to the next within this fraction
+// of the smaller geom's size (GeomSize): the points of one pair lie at least
+// twice that size apart (a box's corners: its smallest full edge), so a
+// quarter of it tells them apart with room to spare, and a point may move
+// that far on its bodies between two steps (a ball rolling at 10 m/s on a
+// 0.1 m radius, 1 ms steps: 1 cm of 2.5 cm).
+inline constexpr double kContactIdentityFraction = 0.25;
 
 // The depth at which a run is stopped as diverged, as a fraction of the
 // smaller geom's size. The laws come from Hertz's small-deformation theory
@@ -99,6 +110,7 @@ class ContactModel {
   const std::vector<PairTag>& tags() const { return tags_; }
   const std::vector<GeomPair>& pairs() const { return pairs_; }
   const std::vector<Drive>& drives() const { return drives_; }
+  // The most contact points of all pairs at once.
   int slot_count() const { return slot_count_; }
 
   // The tagged pair of two geoms, in either order; -1 when untagged. O(1).

@@ -3,6 +3,7 @@
 #include "contactlaws/contact_memory.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace contactlaws {
 
@@ -19,35 +20,74 @@ double DissipatedPower(const std::vector<PointEvaluation>& points) {
 
 // ---------------------------------------------------------------------------
 
-EpisodeLog::EpisodeLog(int slots, int tags) : slot_impact_(slots, -1), tag_count_(tags, 0) {}
+EpisodeLog::EpisodeLog(const std::vector<int>& points_per_pair, int tags)
+    : pair_open_(points_per_pair.size()), tag_count_(tags, 0) {
+  // no allocation while stepping: room for every pair's points
+  size_t points = 0;
+  for (size_t p = 0; p < points_per_pair.size(); ++p) {
+    pair_open_[p].reserve(points_per_pair[p]);
+    points += points_per_pair[p];
+  }
+  open_.reserve(points);
+  closed_.reserve(points);
+}
 
 void EpisodeLog::Reset() {
-  std::fill(slot_impact_.begin(), slot_impact_.end(), -1);
+  for (std::vector<int>& open : pair_open_) open.clear();
   std::fill(tag_count_.begin(), tag_count_.end(), 0);
   open_.clear();
+  closed_.clear();
   impacts_.clear();
   tracks_.clear();
   commits_ = 0;
 }
 
+int EpisodeLog::MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
+                                 uint64_t* taken) const {
+  const std::vector<int>& open = pair_open_[pair];
+  int best = -1;
+  double best_distance = tolerance;
+  for (size_t k = 0; k < open.size() && k < 64; ++k) {
+    if (*taken & (uint64_t{1} << k)) continue;
+    // the nearer of the two bodies' frames: a corner is fixed on its box
+    // however the box slides, a rolling point moves little on either
+    const Track& track = tracks_[open[k]];
+    for (const int b : {0, 1}) {
+      const double dx = local[b][0] - track.local[b][0];
+      const double dy = local[b][1] - track.local[b][1];
+      const double dz = local[b][2] - track.local[b][2];
+      const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (distance <= best_distance) {
+        best_distance = distance;
+        best = static_cast<int>(k);
+      }
+    }
+  }
+  if (best < 0) return -1;
+  *taken |= uint64_t{1} << best;
+  return open[best];
+}
+
+void EpisodeLog::Open(double t, const PointEvaluation& e) {
+  Impact impact;
+  impact.pair = e.pair;
+  impact.tag = e.tag;
+  impact.index = ++tag_count_[impact.tag];
+  impact.impact_velocity = e.touch_velocity;
+  impact.time_contact = TouchTime(e, t);
+  const int index = static_cast<int>(impacts_.size());
+  impacts_.push_back(impact);
+  tracks_.emplace_back();
+  open_.push_back(index);
+  pair_open_[e.pair].push_back(index);
+}
+
 void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
   ++commits_;
   for (const PointEvaluation& e : points) {
-    int& index = slot_impact_[e.slot];
-    // a new point opens its episode
-    if (index < 0) {
-      Impact impact;
-      impact.pair = e.pair;
-      impact.tag = e.tag;
-      impact.index = ++tag_count_[impact.tag];
-      impact.impact_velocity = e.touch_velocity;
-      impact.time_contact = TouchTime(e, t);
-      index = static_cast<int>(impacts_.size());
-      impacts_.push_back(impact);
-      tracks_.push_back(Track{e.slot});
-      open_.push_back(index);
-    }
-    // an open one advances
+    // a new point opens its episode, an open one advances
+    if (e.episode < 0) Open(t, e);
+    const int index = e.episode < 0 ? static_cast<int>(impacts_.size()) - 1 : e.episode;
     Impact& impact = impacts_[index];
     Track& track = tracks_[index];
     impact.max_depth = std::max(impact.max_depth, e.depth);
@@ -58,6 +98,7 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     track.last_rate = e.depth_rate;
     std::copy(e.pos, e.pos + 3, track.last_pos);
     std::copy(e.normal, e.normal + 3, track.last_normal);
+    for (const int b : {0, 1}) std::copy(e.local[b], e.local[b] + 3, track.local[b]);
   }
 }
 
@@ -69,7 +110,75 @@ void EpisodeLog::Close(int index, double separation_velocity) {
   const double mean_speed = 0.5 * (-track.last_rate + impact.separation_velocity);
   impact.time_separation =
       mean_speed > 0 ? track.last_time + track.last_depth / mean_speed : track.last_time;
-  slot_impact_[track.slot] = -1;
+  std::vector<int>& open = pair_open_[impact.pair];
+  open.erase(std::find(open.begin(), open.end(), index));
+  closed_.push_back(index);
+}
+
+// ---------------------------------------------------------------------------
+
+CollisionLog::CollisionLog(int pairs, int tags)
+    : open_(pairs, -1), seen_(pairs, 0), tag_count_(tags, 0) {}
+
+void CollisionLog::Reset() {
+  std::fill(open_.begin(), open_.end(), -1);
+  std::fill(tag_count_.begin(), tag_count_.end(), 0);
+  impacts_.clear();
+}
+
+void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
+                          const EpisodeLog& episodes) {
+  // the points come pair by pair (the hook evaluates the pairs in order)
+  for (size_t first = 0; first < points.size();) {
+    const int pair = points[first].pair;
+    if (open_[pair] < 0) {
+      Impact collision;
+      collision.pair = pair;
+      collision.tag = points[first].tag;
+      collision.index = ++tag_count_[collision.tag];
+      collision.time_contact = t;
+      collision.points = 0;
+      open_[pair] = static_cast<int>(impacts_.size());
+      impacts_.push_back(collision);
+    }
+    Impact& collision = impacts_[open_[pair]];
+    const bool opening = collision.points == 0;
+    double force = 0;
+    size_t end = first;
+    for (; end < points.size() && points[end].pair == pair; ++end) {
+      const PointEvaluation& e = points[end];
+      force += e.force;
+      collision.max_depth = std::max(collision.max_depth, e.depth);
+      // the points that open it: the earliest touch, the fastest approach
+      if (opening && e.touch) {
+        collision.time_contact = std::min(collision.time_contact, TouchTime(e, t));
+        collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
+      }
+    }
+    collision.max_force = std::max(collision.max_force, force);
+    collision.points = std::max(collision.points, static_cast<int>(end - first));
+    seen_[pair] = 1;
+    first = end;
+  }
+  // a pair with no point left: its collision ends with its last points
+  for (size_t pair = 0; pair < open_.size(); ++pair) {
+    if (open_[pair] >= 0 && !seen_[pair]) {
+      Impact& collision = impacts_[open_[pair]];
+      collision.open = false;
+      collision.time_separation = -INFINITY;
+      collision.separation_velocity = -INFINITY;
+      for (const int index : episodes.closed()) {
+        const Impact& point = episodes.impacts()[index];
+        if (point.pair != static_cast<int>(pair)) continue;
+        collision.time_separation = std::max(collision.time_separation, point.time_separation);
+        collision.separation_velocity =
+            std::max(collision.separation_velocity, point.separation_velocity);
+      }
+      // (its last points closed in this commit: the episodes' own close)
+      open_[pair] = -1;
+    }
+    seen_[pair] = 0;
+  }
 }
 
 // ---------------------------------------------------------------------------

@@ -18,6 +18,13 @@ namespace {
 // resets the data when it fires.
 constexpr int kBadStateWarnings[3] = {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC};
 
+// The most points each pair can have at once.
+std::vector<int> PointsPerPair(const ContactModel& model) {
+  std::vector<int> points;
+  for (const GeomPair& pair : model.pairs()) points.push_back(pair.slots);
+  return points;
+}
+
 bool AllFinite(const mjtNum* x, int n) {
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(x[i])) return false;
@@ -31,7 +38,8 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
     : model_(model),
       m_(model.model()),
       d_(d),
-      episodes_(model.slot_count(), static_cast<int>(model.tags().size())) {
+      episodes_(PointsPerPair(model), static_cast<int>(model.tags().size())),
+      collisions_(static_cast<int>(model.pairs().size()), static_cast<int>(model.tags().size())) {
   contacts_.resize(mjMAXCONPAIR);
   const size_t points = std::min<size_t>(model.slot_count(), 4 * model.pairs().size());
   latest_.reserve(points);
@@ -79,6 +87,7 @@ void ContactData::Reset() {
   captured_.clear();
   capture_armed_ = has_capture_ = false;
   episodes_.Reset();
+  collisions_.Reset();
   ledger_.Reset();
   has_previous_ = has_current_ = false;
   divergence_.reset();
@@ -138,10 +147,11 @@ void ContactData::ApplyForces() {
     // from geom[0] to geom[1], pos midway between the surfaces
     mjfCollision collide = mjCOLLISIONFUNC[m_->geom_type[g0]][m_->geom_type[g1]];
     const int count = std::min(collide(m_, d_, contacts_.data(), g0, g1, 0), pair.slots);
+    uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) continue;
-      const PointEvaluation e = Evaluate(p, con, i);
+      const PointEvaluation e = Evaluate(p, con, &taken);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
@@ -161,14 +171,21 @@ void ContactData::ApplyForces() {
   }
 }
 
-PointEvaluation ContactData::Evaluate(int p, const mjContact& con, int i) {
+PointEvaluation ContactData::Evaluate(int p, const mjContact& con, uint64_t* taken) {
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
   PointEvaluation e;
   e.pair = p;
   e.tag = pair.tag;
-  e.slot = pair.first_slot + i;
   e.depth = -con.dist;
+
+  // which physical point: where it sits on the two bodies
+  for (int b = 0; b < 2; ++b) {
+    mjtNum offset[3];
+    mju_sub3(offset, con.pos, d_->xpos + 3 * pair.body[b]);
+    mju_mulMatTVec(e.local[b], d_->xmat + 9 * pair.body[b], offset, 3, 3);
+  }
+  e.episode = episodes_.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
 
   // depth rate: approach speed of geom[0] towards geom[1] along the normal
   mjtNum v0[3], v1[3], relative[3];
@@ -181,7 +198,7 @@ PointEvaluation ContactData::Evaluate(int p, const mjContact& con, int i) {
   if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
     state.effective_mass = EffectiveMass(m_, d_, pair, con.pos, normal);
   }
-  const int open = episodes_.OpenEpisode(e.slot);
+  const int open = e.episode;
   e.touch = open < 0;
   if (e.touch) {
     // v0: the rate at the step before first touch, which no force has slowed
@@ -279,6 +296,7 @@ void ContactData::AfterStep() {
                                         current_qvel_.data(), current_time_)
                         : -last_rate;
   });
+  collisions_.Commit(captured_time_, captured_, episodes_);
 }
 
 TagReading ContactData::Reading(int tag) const {

@@ -288,9 +288,10 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       pair.named = {g1, g2};
       pair.tag = tag_index;
       pair.params = base;
-      pair.first_slot = slot_count_;
       pair.slots = MaxContacts(m->geom_type[g1], m->geom_type[g2]);
-      pair.depth_limit = kDivergenceDepthFraction * std::min(GeomSize(m, g1), GeomSize(m, g2));
+      const double size = std::min(GeomSize(m, g1), GeomSize(m, g2));
+      pair.depth_limit = kDivergenceDepthFraction * size;
+      pair.identity_tolerance = kContactIdentityFraction * size;
       // stiffness from materials, per pair: radii differ
       if (spec.youngs1 && Law(base.kind).family == LawFamily::kHysteresis) {
         pair.params.stiffness = MaterialStiffness(m, g1, g2, spec, pair_name, resolve);

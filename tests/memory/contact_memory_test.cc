@@ -16,13 +16,15 @@ namespace {
 // bookkeeping must reproduce them to rounding.
 constexpr double kRoundoff = 1e-15;
 
-PointEvaluation Point(int slot, int tag, double depth, double rate, double force,
-                      bool touch = false) {
+// A point of pair (its tag) at depth, rate, force; episode: the open episode
+// it continues, -1 for a touch.
+PointEvaluation Point(int pair, int tag, double depth, double rate, double force,
+                      int episode = -1) {
   PointEvaluation e;
-  e.pair = slot;  // one point per pair here
+  e.pair = pair;
   e.tag = tag;
-  e.slot = slot;
-  e.touch = touch;
+  e.episode = episode;
+  e.touch = episode < 0;
   e.depth = depth;
   e.depth_rate = rate;
   e.force = force;
@@ -32,22 +34,22 @@ PointEvaluation Point(int slot, int tag, double depth, double rate, double force
 }
 
 TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
-  EpisodeLog log(/*slots=*/2, /*tags=*/1);
+  EpisodeLog log(/*points_per_pair=*/{1, 1}, /*tags=*/1);
   // first seen at t = 1 at depth 1e-3, rate 1 m/s, having touched at 3 m/s:
   // the depth was reached at the mean rate 2 m/s, so 0.5 ms earlier
-  PointEvaluation touch = Point(0, 0, 1e-3, 1.0, 10.0, true);
+  PointEvaluation touch = Point(0, 0, 1e-3, 1.0, 10.0);
   touch.touch_velocity = 3.0;
   log.Commit(1.0, {touch});
   ASSERT_EQ(log.impacts().size(), 1u);
-  EXPECT_EQ(log.OpenEpisode(0), 0);
-  EXPECT_EQ(log.OpenEpisode(1), -1);
+  EXPECT_EQ(log.OpenEpisodes(0), std::vector<int>{0});
+  EXPECT_TRUE(log.OpenEpisodes(1).empty());
   EXPECT_EQ(log.impacts()[0].impact_velocity, 3.0);
   EXPECT_NEAR(log.impacts()[0].time_contact, 1.0 - 0.5e-3, kRoundoff);
   EXPECT_EQ(log.impacts()[0].index, 1);
 
   // deeper, then shallower: the maxima stay
-  log.Commit(2.0, {Point(0, 0, 4e-3, 0.5, 40.0)});
-  log.Commit(3.0, {Point(0, 0, 2e-3, -2.0, 20.0)});
+  log.Commit(2.0, {Point(0, 0, 4e-3, 0.5, 40.0, 0)});
+  log.Commit(3.0, {Point(0, 0, 2e-3, -2.0, 20.0, 0)});
   log.CloseVanished([](int, const double*, const double*, double) -> double {
     ADD_FAILURE() << "nothing vanished";
     return 0;
@@ -75,39 +77,116 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
   EXPECT_EQ(impact.separation_velocity, 2.0);
   EXPECT_NEAR(impact.time_separation, 3.0 + 1e-3, kRoundoff);
   EXPECT_NEAR(impact.restitution_post(), 2.0 / 3.0, kRoundoff);
-  EXPECT_EQ(log.OpenEpisode(0), -1);
+  EXPECT_TRUE(log.OpenEpisodes(0).empty());
+  EXPECT_EQ(log.closed(), std::vector<int>{0});
 }
 
 TEST(EpisodeLogTest, EpisodesAreCountedPerTagAndClosedOneByOne) {
-  EpisodeLog log(/*slots=*/3, /*tags=*/2);
-  log.Commit(0.0, {Point(0, 0, 1e-3, 1, 1, true), Point(1, 1, 1e-3, 1, 1, true),
-                   Point(2, 1, 1e-3, 1, 1, true)});
+  EpisodeLog log(/*points_per_pair=*/{1, 1, 1}, /*tags=*/2);
+  log.Commit(0.0, {Point(0, 0, 1e-3, 1, 1), Point(1, 1, 1e-3, 1, 1), Point(2, 1, 1e-3, 1, 1)});
   EXPECT_EQ(log.impacts()[0].index, 1);
   EXPECT_EQ(log.impacts()[1].index, 1);
   EXPECT_EQ(log.impacts()[2].index, 2);
-  // slot 1 leaves; 0 and 2 stay
-  log.Commit(1.0, {Point(0, 0, 1e-3, 0, 1), Point(2, 1, 1e-3, 0, 1)});
+  // pair 1 leaves; 0 and 2 stay
+  log.Commit(1.0, {Point(0, 0, 1e-3, 0, 1, 0), Point(2, 1, 1e-3, 0, 1, 2)});
   log.CloseVanished([](int, const double*, const double*, double) { return 1.0; });
   EXPECT_TRUE(log.impacts()[0].open);
   EXPECT_FALSE(log.impacts()[1].open);
   EXPECT_TRUE(log.impacts()[2].open);
-  // slot 1 touches again: a new episode, the tag's third
-  log.Commit(2.0, {Point(0, 0, 1e-3, 0, 1), Point(1, 1, 1e-3, 1, 1, true),
-                   Point(2, 1, 1e-3, 0, 1)});
+  // pair 1 touches again: a new episode, the tag's third
+  log.Commit(2.0, {Point(0, 0, 1e-3, 0, 1, 0), Point(1, 1, 1e-3, 1, 1), Point(2, 1, 1e-3, 0, 1, 2)});
   ASSERT_EQ(log.impacts().size(), 4u);
   EXPECT_EQ(log.impacts()[3].index, 3);
-  EXPECT_EQ(log.OpenEpisode(1), 3);
+  EXPECT_EQ(log.OpenEpisodes(1), std::vector<int>{3});
 
   log.Reset();
   EXPECT_TRUE(log.impacts().empty());
-  EXPECT_EQ(log.OpenEpisode(0), -1);
-  log.Commit(3.0, {Point(1, 1, 1e-3, 1, 1, true)});
+  EXPECT_TRUE(log.OpenEpisodes(0).empty());
+  log.Commit(3.0, {Point(1, 1, 1e-3, 1, 1)});
   EXPECT_EQ(log.impacts()[0].index, 1);
+}
+
+// A point at (x, 0, 0) on body 0 and (x + shift, 0, 0) on body 1.
+PointEvaluation At(double x, double shift, int episode = -1) {
+  PointEvaluation e = Point(0, 0, 1e-3, 0, 1, episode);
+  e.local[0][0] = x;
+  e.local[1][0] = x + shift;
+  return e;
+}
+
+// Two corners of a box on the floor, listed in either order, sliding: each
+// evaluation finds its own corner's episode, by where it sits on the box.
+TEST(EpisodeLogTest, PointsAreMatchedByWhereTheySitOnTheBodies) {
+  constexpr double kTolerance = 0.01;  // m
+  EpisodeLog log(/*points_per_pair=*/{4}, /*tags=*/1);
+  log.Commit(0.0, {At(-0.1, 0), At(0.1, 0)});
+  ASSERT_EQ(log.OpenEpisodes(0), (std::vector<int>{0, 1}));
+
+  // listed the other way round, slid 0.5 m along the floor: fixed on body 0
+  uint64_t taken = 0;
+  const PointEvaluation right = At(0.1, 0.5);
+  const PointEvaluation left = At(-0.1, 0.5);
+  EXPECT_EQ(log.MatchOpenEpisode(0, right.local, kTolerance, &taken), 1);
+  EXPECT_EQ(log.MatchOpenEpisode(0, left.local, kTolerance, &taken), 0);
+  // each episode is taken once: a third point at the same corner is new
+  EXPECT_EQ(log.MatchOpenEpisode(0, right.local, kTolerance, &taken), -1);
+  // beyond the tolerance on both bodies: a new point
+  taken = 0;
+  const PointEvaluation middle = At(0.0, 0.5);
+  EXPECT_EQ(log.MatchOpenEpisode(0, middle.local, kTolerance, &taken), -1);
+  // within it: the nearer episode
+  const PointEvaluation near_right = At(0.095, 0.5);
+  EXPECT_EQ(log.MatchOpenEpisode(0, near_right.local, kTolerance, &taken), 1);
+}
+
+TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
+  EpisodeLog episodes(/*points_per_pair=*/{4}, /*tags=*/1);
+  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  auto commit = [&](double t, const std::vector<PointEvaluation>& points, double leaving) {
+    episodes.Commit(t, points);
+    episodes.CloseVanished([&](int, const double*, const double*, double) { return leaving; });
+    collisions.Commit(t, points, episodes);
+  };
+  // a tilted box: one corner touches at 2 m/s, then a second at 1 m/s
+  PointEvaluation a = At(-0.1, 0);
+  a.touch_velocity = 2.0;
+  a.depth_rate = 2.0;
+  a.force = 5.0;
+  commit(1.0, {a}, 0);
+  ASSERT_EQ(collisions.impacts().size(), 1u);
+  EXPECT_EQ(collisions.impacts()[0].impact_velocity, 2.0);
+  EXPECT_NEAR(collisions.impacts()[0].time_contact, 1.0 - 1e-3 / 2.0, kRoundoff);
+  a.episode = 0;
+  a.touch = false;
+  PointEvaluation b = At(0.1, 0);
+  b.touch_velocity = 1.0;
+  b.force = 7.0;
+  b.depth = 3e-3;
+  commit(2.0, {a, b}, 0);
+  // the first corner leaves at 0.5 m/s, the second later at 0.8 m/s
+  b.episode = 1;
+  b.touch = false;
+  commit(3.0, {b}, 0.5);
+  EXPECT_TRUE(collisions.impacts()[0].open);
+  commit(4.0, {}, 0.8);
+  ASSERT_EQ(collisions.impacts().size(), 1u);
+  const Impact& c = collisions.impacts()[0];
+  EXPECT_FALSE(c.open);
+  EXPECT_EQ(c.points, 2);
+  EXPECT_EQ(c.max_force, 12.0);  // both corners at once
+  EXPECT_EQ(c.max_depth, 3e-3);
+  EXPECT_EQ(c.impact_velocity, 2.0);      // the first touch
+  EXPECT_EQ(c.separation_velocity, 0.8);  // the last to leave
+  EXPECT_EQ(c.time_separation, episodes.impacts()[1].time_separation);
+  EXPECT_EQ(c.index, 1);
+  // the next touch of the pair is its second collision
+  commit(5.0, {At(0, 0)}, 0);
+  EXPECT_EQ(collisions.impacts().at(1).index, 2);
 }
 
 TEST(DissipationLedgerTest, TrapezoidOfThePower) {
   DissipationLedger ledger;
-  PointEvaluation p = Point(0, 0, 1e-3, 1, 1);
+  PointEvaluation p = Point(0, 0, 1e-3, 1, 1, /*episode=*/0);  // not a touch
   p.dissipated_power = 4.0;  // W
   // the first commit only starts the integral
   ledger.Commit(0.0, {p});
@@ -128,7 +207,7 @@ TEST(DissipationLedgerTest, ATouchDissipatesFromItsTouchNotFromTheLastCommit) {
   ledger.Commit(0.0, {});
   // a point touched at 0.75 (depth 0.25 m at mean rate 1 m/s, seen at t = 1)
   // with 6 W at the touch and 2 W at t = 1: 0.5 (6 + 2) 0.25 = 1 J
-  PointEvaluation touch = Point(0, 0, 0.25, 1.0, 1, true);
+  PointEvaluation touch = Point(0, 0, 0.25, 1.0, 1);
   touch.touch_velocity = 1.0;
   touch.touch_power = 6.0;
   touch.dissipated_power = 2.0;
