@@ -23,6 +23,7 @@ struct RunArgs : CommonArgs {
   std::optional<std::string> restitution;
   std::optional<std::string> output;
   std::optional<std::string> impacts;
+  bool impacts_per_point = false;  // the impact log per contact point
 };
 
 struct CheckArgs {

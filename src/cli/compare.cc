@@ -89,8 +89,8 @@ struct TableRow {
 };
 
 void PrintTable(const std::vector<TableRow>& rows) {
-  fmt::print("{:<20} {:>11} {:>8} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
-             "restitution", "impacts", "first e_post", "max depth (m)", "max force (N)",
+  fmt::print("{:<20} {:>11} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
+             "restitution", "collisions", "first e_post", "max depth (m)", "max force (N)",
              "duration (s)", "at rest (s)", "dissipated (J)");
   for (const TableRow& r : rows) {
     if (r.status != RunOutput::Status::kOk) {
@@ -98,7 +98,7 @@ void PrintTable(const std::vector<TableRow>& rows) {
                  StatusName(r.status));
       continue;
     }
-    fmt::print("{:<20} {:>11} {:>8} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n",
+    fmt::print("{:<20} {:>11} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n",
                LawName(r.spec.law), Field(r.restitution), r.s.impacts,
                Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
                Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
@@ -117,13 +117,16 @@ int CompareCommand(const SweepArgs& args) {
 
   CompareFiles files(args.output_dir,
                      in.scene->Make(OptionsFor(options, specs.front()))->Columns());
-  AdvanceOptions advance;
-  advance.duration = in.common.duration;
-  advance.sample_rate = in.common.sample_rate;
-  advance.auto_timestep = in.common.auto_timestep;
+  SweepOptions sweep;
+  sweep.advance.duration = in.common.duration;
+  sweep.advance.sample_rate = in.common.sample_rate;
+  sweep.advance.auto_timestep = in.common.auto_timestep;
+  sweep.record = true;
+  sweep.impact_rows = args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions;
+  sweep.jobs = in.jobs;
+  sweep.quiet = args.quiet;
   std::vector<TableRow> rows;
-  const int status = Sweep(*in.scene, options, specs, advices, advance, Record::kEverything,
-                           in.jobs, args.quiet, [&](int k, RunOutput& out) {
+  const int status = Sweep(*in.scene, options, specs, advices, sweep, [&](int k, RunOutput& out) {
                              files.Write(specs[k], out);
                              rows.push_back({specs[k], out.status, out.restitution, out.summary,
                                              out.dissipated});

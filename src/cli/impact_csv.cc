@@ -6,8 +6,12 @@
 
 namespace contactlaws::cli {
 
+const std::vector<Impact>& ImpactsOf(const ContactData& contacts, ImpactRows rows) {
+  return rows == ImpactRows::kPoints ? contacts.point_impacts() : contacts.impacts();
+}
+
 std::vector<std::string> ImpactColumns() {
-  return {"law", "restitution", "pair", "geom1", "geom2", "index", "time_contact",
+  return {"law", "restitution", "pair", "geom1", "geom2", "index", "points", "time_contact",
           "time_separation", "impact_velocity", "separation_velocity", "restitution_post",
           "max_depth", "max_force"};
 }
@@ -28,6 +32,7 @@ std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impac
           ObjectName(sim.model(), mjOBJ_GEOM, pair.named[0]),
           ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]),
           Field(impact.index),
+          Field(impact.points),
           Field(impact.time_contact),
           if_closed(impact.time_separation),
           Field(impact.impact_velocity),

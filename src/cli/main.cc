@@ -109,7 +109,9 @@ void AddRun(CLI::App* app, Commands* c) {
   c->run_cmd->add_option("--output", c->run.output,
                          "trajectory CSV ('-' for stdout); none if absent");
   c->run_cmd->add_option("--impacts", c->run.impacts,
-                         "impact log CSV, one row per contact episode");
+                         "impact log CSV, one row per collision of a pair");
+  c->run_cmd->add_flag("--impacts-per-point", c->run.impacts_per_point,
+                       "the impact log with a row per contact episode of each contact point");
 }
 
 void AddSweeps(CLI::App* app, Commands* c) {
@@ -120,6 +122,8 @@ void AddSweeps(CLI::App* app, Commands* c) {
   c->compare_cmd->add_option("--output-dir", c->compare.output_dir,
                              "writes trajectories.csv, impacts.csv, summary.csv")
       ->capture_default_str();
+  c->compare_cmd->add_flag("--impacts-per-point", c->compare.impacts_per_point,
+                           "impacts.csv with a row per contact episode of each contact point");
 
   c->restitution_cmd = app->add_subcommand(
       "restitution", "the first impact of every law x restitution: e_post (paper Fig. 7)");

@@ -84,13 +84,14 @@ int RestitutionCommand(const SweepArgs& args) {
               "max_force", "contact_duration"});
   std::vector<FirstEpisode> rows;
   int incomplete = 0;
-  AdvanceOptions advance;
-  advance.duration = in.common.duration;
-  advance.until_first_episode = true;
-  advance.auto_timestep = in.common.auto_timestep;
+  SweepOptions sweep;
+  sweep.advance.duration = in.common.duration;
+  sweep.advance.until_first_episode = true;
+  sweep.advance.auto_timestep = in.common.auto_timestep;
+  sweep.jobs = in.jobs;
+  sweep.quiet = args.quiet;
   int status = Sweep(
-      scene, options, specs, advices, advance, Record::kSummary, in.jobs, args.quiet,
-      [&](int k, RunOutput& run) {
+      scene, options, specs, advices, sweep, [&](int k, RunOutput& run) {
         const FirstEpisode episode = FirstEpisodeOf(specs[k], run);
         if (run.status == RunOutput::Status::kOk && !episode.closed) {
           ++incomplete;

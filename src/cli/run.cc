@@ -17,8 +17,8 @@ namespace {
 
 void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
   const ContactModel& cm = sim.contact_model();
-  fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14}\n", "pair", "law", "restitution",
-             "impacts", "first e_post", "max force (N)");
+  fmt::print(out, "{:<20} {:<20} {:>11} {:>10} {:>14} {:>14}\n", "pair", "law", "restitution",
+             "collisions", "first e_post", "max force (N)");
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
     const PairTag& tag = cm.tags()[t];
     std::vector<Impact> impacts;
@@ -26,7 +26,7 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
       if (impact.tag == t) impacts.push_back(impact);
     }
     const RunSummary s = Summarize(impacts, end_time);
-    fmt::print(out, "{:<20} {:<20} {:>11} {:>8} {:>14} {:>14.6g}\n", tag.label,
+    fmt::print(out, "{:<20} {:<20} {:>11} {:>10} {:>14} {:>14.6g}\n", tag.label,
                LawName(tag.law), IsElastic(tag.law) ? "-" : Field(tag.restitution),
                s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);
   }
@@ -76,7 +76,8 @@ int RunCommand(const RunArgs& args) {
   if (trajectory) trajectory->Commit();
   if (impacts) {
     impacts->Header(ImpactColumns());
-    for (const Impact& impact : sim->contacts().impacts()) {
+    const ImpactRows rows = args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions;
+    for (const Impact& impact : ImpactsOf(sim->contacts(), rows)) {
       impacts->Fields(ImpactFields(*sim, impact));
     }
     impacts->Commit();

@@ -58,8 +58,7 @@ RunOutput NotRun(const RunSpec& spec) {
 // One run of a sweep, on any thread. Refused input and divergence make a
 // failed run, not an exception: the sweep goes on.
 RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
-                  const std::vector<TimestepAdvice>& advice, const AdvanceOptions& advance,
-                  Record record) {
+                  const std::vector<TimestepAdvice>& advice, const SweepOptions& sweep) {
   RunOutput out;
   out.restitution = spec.restitution.value_or(0.0);
   try {
@@ -68,7 +67,7 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     const std::vector<std::string> prefix = {std::string(LawName(spec.law)),
                                              Field(out.restitution)};
     std::function<void(const std::vector<double>&)> on_row;
-    if (record == Record::kEverything) {
+    if (sweep.record) {
       on_row = [&](const std::vector<double>& row) {
         if (!AppendRow(&out.trajectory, prefix, row)) {
           throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
@@ -76,7 +75,7 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
         }
       };
     }
-    const AdvanceResult result = Advance(sim.get(), advance, on_row);
+    const AdvanceResult result = Advance(sim.get(), sweep.advance, on_row);
     double end_time = sim->time();
     if (result.status == AdvanceResult::Status::kDiverged) {
       out.status = RunOutput::Status::kFailed;
@@ -88,8 +87,8 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
       return out;
     }
     out.warnings = RunWarnings(*sim, result);
-    if (record == Record::kEverything) {
-      for (const Impact& impact : sim->contacts().impacts()) {
+    if (sweep.record) {
+      for (const Impact& impact : ImpactsOf(sim->contacts(), sweep.impact_rows)) {
         AppendFields(&out.impacts, ImpactFields(*sim, impact));
       }
     }
@@ -174,15 +173,14 @@ const char* StatusName(RunOutput::Status status) {
 
 int Sweep(const Scene& scene, const SimulationOptions& options,
           const std::vector<RunSpec>& specs,
-          const std::vector<std::vector<TimestepAdvice>>& advices,
-          const AdvanceOptions& advance, Record record, int jobs, bool quiet,
+          const std::vector<std::vector<TimestepAdvice>>& advices, const SweepOptions& sweep,
           const std::function<void(int, RunOutput&)>& deliver) {
-  Progress progress(static_cast<int>(specs.size()), quiet);
+  Progress progress(static_cast<int>(specs.size()), sweep.quiet);
   int failed = 0;
   bool interrupted = false;
   RunInOrder<RunOutput>(
-      static_cast<int>(specs.size()), jobs,
-      [&](int k) { return Execute(scene, options, specs[k], advices[k], advance, record); },
+      static_cast<int>(specs.size()), sweep.jobs,
+      [&](int k) { return Execute(scene, options, specs[k], advices[k], sweep); },
       [&](int k, RunOutput& out) {
         progress.Done();  // what deliver or the warnings print starts a line
         for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);

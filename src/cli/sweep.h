@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/impact_csv.h"
 #include "cli/options.h"
 #include "contactlaws/contactlaws.h"
 
@@ -32,6 +33,7 @@ struct SweepArgs : CommonArgs {
   std::string output = "-";                // restitution
   bool quiet = false;
   std::optional<std::string> jobs;         // default: the number of cores
+  bool impacts_per_point = false;          // compare
 };
 
 // What compare and restitution read the same way, in this order (so that the
@@ -82,17 +84,23 @@ struct RunOutput {
 // "ok", "failed", "interrupted", "not run".
 const char* StatusName(RunOutput::Status status);
 
-// What a run records: compare keeps its trajectory and impact log, restitution
-// only the summary.
-enum class Record { kSummary, kEverything };
+// How the runs of a sweep go and what they record.
+struct SweepOptions {
+  AdvanceOptions advance;
+  // compare keeps each run's trajectory and impact log, restitution only
+  // its summary
+  bool record = false;
+  ImpactRows impact_rows = ImpactRows::kCollisions;
+  int jobs = 1;
+  bool quiet = false;  // no progress line
+};
 
 // Runs every spec (jobs at a time) and hands each output to deliver, in
 // order. Returns the exit status: 0, kExitIncomplete when a run failed,
 // kExitInterrupted after a stop request.
 int Sweep(const Scene& scene, const SimulationOptions& options,
           const std::vector<RunSpec>& specs,
-          const std::vector<std::vector<TimestepAdvice>>& advices,
-          const AdvanceOptions& advance, Record record, int jobs, bool quiet,
+          const std::vector<std::vector<TimestepAdvice>>& advices, const SweepOptions& sweep,
           const std::function<void(int, RunOutput&)>& deliver);
 
 // Creates dir (and its parents); throws Error naming it when it cannot.

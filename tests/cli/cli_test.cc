@@ -104,9 +104,9 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
 
   const std::string log = ReadFile(impacts);
   EXPECT_EQ(log.substr(0, log.find('\n')),
-            "law,restitution,pair,geom1,geom2,index,time_contact,time_separation,"
+            "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
             "impact_velocity,separation_velocity,restitution_post,max_depth,max_force");
-  EXPECT_EQ(log.find("\nhunt-crossley,0.8,ball-floor,ball,floor,1,0.42"), log.find('\n'));
+  EXPECT_EQ(log.find("\nhunt-crossley,0.8,ball-floor,ball,floor,1,1,0.42"), log.find('\n'));
 }
 
 TEST(CliTest, LawsListsEveryLaw) {
@@ -145,6 +145,48 @@ TEST(CliTest, LawsAsCsvGiveEachLawsCoefficientAndRebound) {
             "contactlaws: --restitution=0x1 has '0x1', which is not a finite number\n");
 }
 
+// A flat box landing on its four corners: one row per collision of the pair,
+// with its four points and their total force; --impacts-per-point gives each
+// corner's own row.
+TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
+  const std::string scene = testing::WriteScene("flat_box", R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="box" pos="0 0 0.1"><freejoint/>
+      <geom name="box" type="box" size="0.1 0.06 0.03" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:box-floor"
+    data="geom1=box geom2=floor law=hunt-crossley restitution=0.5 stiffness=1e7"/></custom>
+</mujoco>)");
+  const std::string dir = ::testing::TempDir();
+  const Result r = RunCli("run " + scene + " --duration 0.3 --impacts " + dir + "/box.csv");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Result p = RunCli("run " + scene + " --duration 0.3 --impacts-per-point --impacts " +
+                          dir + "/box_points.csv");
+  ASSERT_EQ(p.status, 0) << p.output;
+  const std::vector<std::string> collisions = Lines(ReadFile(dir + "/box.csv"));
+  const std::vector<std::string> points = Lines(ReadFile(dir + "/box_points.csv"));
+  ASSERT_GE(collisions.size(), 3u) << "the box lands and bounces";
+  // law,restitution,pair,geom1,geom2,index,points,...,max_force: each
+  // collision on four corners, each corner a row of its own
+  auto field = [](const std::string& row, int k) {
+    std::string::size_type at = 0;
+    for (int i = 0; i < k; ++i) at = row.find(',', at) + 1;
+    return row.substr(at, row.find(',', at) - at);
+  };
+  EXPECT_EQ(points.size() - 1, 4 * (collisions.size() - 1));
+  for (size_t i = 1; i < collisions.size(); ++i) EXPECT_EQ(field(collisions[i], 6), "4");
+  for (size_t i = 1; i < points.size(); ++i) EXPECT_EQ(field(points[i], 6), "1");
+  // the first collision's largest force is the four corners' together: each
+  // corner carries a quarter (the box lands flat), to the rounding of the sum
+  const double pair_force = std::stod(field(collisions[1], 13));
+  for (size_t i = 1; i <= 4; ++i) {
+    EXPECT_NEAR(std::stod(field(points[i], 13)), pair_force / 4, 1e-9 * pair_force) << points[i];
+  }
+  EXPECT_NE(r.output.find("collisions"), std::string::npos) << r.output;
+}
+
 TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   const std::string dir = ::testing::TempDir() + "/cli_compare";
   const Result r = RunCli("compare " + TinyScene() +
@@ -166,9 +208,9 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   const std::vector<std::string> impacts = Lines(ReadFile(dir + "/impacts.csv"));
   ASSERT_GE(impacts.size(), 4u);
   EXPECT_EQ(impacts[0],
-            "law,restitution,pair,geom1,geom2,index,time_contact,time_separation,"
+            "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
             "impact_velocity,separation_velocity,restitution_post,max_depth,max_force");
-  EXPECT_EQ(impacts[1].rfind("hertz,1,ball-floor,ball,floor,1,0.04", 0), 0u) << impacts[1];
+  EXPECT_EQ(impacts[1].rfind("hertz,1,ball-floor,ball,floor,1,1,0.04", 0), 0u) << impacts[1];
 
   const std::vector<std::string> summary = Lines(ReadFile(dir + "/summary.csv"));
   ASSERT_EQ(summary.size(), 4u);
