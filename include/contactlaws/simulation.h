@@ -8,7 +8,9 @@
 #define CONTACTLAWS_SIMULATION_H_
 
 #include <memory>
+#include <cstdint>
 #include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -43,10 +45,23 @@ struct MujocoWarning {
 // the integrator's. RK4 at 1e-5 s keeps the paper's drop within 1e-5 of it.
 inline constexpr double kEnergyGrowthTolerance = 1e-2;
 
+// The groups of trajectory columns (Simulation::Columns), each on or off.
+struct ColumnGroups {
+  bool bodies = true;  // every moving body: position, velocity; orientation, spin
+  bool joints = true;  // every hinge and slide joint: coordinate and rate
+  bool pairs = true;   // every tag: depth, depth rate, force
+  bool energy = true;  // the energy ledger
+};
+
+// "bodies,joints,pairs,energy" (any of them, no repeats) as ColumnGroups;
+// nullopt, with the word at fault in *bad, for anything else.
+std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad);
+
 struct SimulationOptions {
   Overrides overrides;
   std::optional<double> timestep;   // s, > 0; default: the scene's
   std::optional<int> integrator;    // mjtIntegrator; default: the scene's
+  ColumnGroups columns;             // of the trajectory
 };
 
 class Simulation {
@@ -73,10 +88,17 @@ class Simulation {
   const ContactData& contacts() const { return *contacts_; }
   const std::string& source() const { return source_; }
 
-  // Trajectory columns: time; for every body with joints, then every driven
-  // body, <body>.x .y .z .vx .vy .vz (frame origin, world frame); for every
-  // tag <label>.depth .depth_rate .force; energy.kinetic .potential .elastic
-  // .dissipated .total.
+  // Trajectory columns, by group (SimulationOptions::columns):
+  //   time;
+  //   bodies: for every moving body (not welded to the world: jointed or the
+  //     child of one) and every driven body, <body>.x .y .z .vx .vy .vz
+  //     (frame origin, world frame, m and m/s); for a body with a free or ball
+  //     joint also .qw .qx .qy .qz (orientation, world frame) and .wx .wy .wz
+  //     (angular velocity, world frame, rad/s);
+  //   joints: for every hinge and slide joint <joint>.q .v (rad and rad/s, or
+  //     m and m/s);
+  //   pairs: for every tag <label>.depth .depth_rate .force;
+  //   energy: energy.kinetic .potential .elastic .dissipated .total.
   std::vector<std::string> Columns() const;
 
   // The values of Columns() at the current state. Runs mj_forward so that
@@ -94,12 +116,18 @@ class Simulation {
   std::vector<MujocoWarning> Warnings() const;
 
  private:
+  // The bodies and joints whose columns the trajectory has.
+  void RecordBodiesAndJoints();
+
   UniqueModel model_;
   std::string source_;
   std::unique_ptr<ContactModel> contact_model_;
   UniqueData data_;
   std::unique_ptr<ContactData> contacts_;
+  ColumnGroups columns_;
   std::vector<int> recorded_bodies_;
+  std::vector<uint8_t> oriented_;  // per recorded body: it has a free or ball joint
+  std::vector<int> recorded_joints_;  // hinge and slide joints
 };
 
 // An MJCF scene, parsed once; every simulation gets its own copy of the model.

@@ -62,6 +62,17 @@ int ParseIntegrator(std::string_view name) {
   Refuse("--integrator", name, "must be euler, rk4 or implicit");
 }
 
+ColumnGroups ParseColumns(std::string_view text) {
+  std::string bad;
+  const std::optional<ColumnGroups> groups = ParseColumnGroups(text, &bad);
+  if (groups) return *groups;
+  const bool known = bad == "bodies" || bad == "joints" || bad == "pairs" || bad == "energy";
+  Refuse("--columns", text,
+         known ? fmt::format("names {} twice", bad)
+               : fmt::format("has '{}', which is not a group (bodies, joints, pairs, energy)",
+                             bad));
+}
+
 CommonOptions ParseCommon(const CommonArgs& args) {
   CommonOptions options;
   options.duration = ParsePositive("--duration", args.duration, "s");
@@ -85,6 +96,7 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     }
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
+  if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
   return options;
 }
 

@@ -24,6 +24,7 @@ struct CommonArgs {
   std::optional<std::string> max_timestep;  // with auto
   std::optional<std::string> integrator;
   std::string sample_rate = "1000";
+  std::optional<std::string> columns;  // trajectory column groups
 };
 
 // What SimulationOptions leave out of the common options: the run's length
@@ -44,6 +45,9 @@ double ParseOption(std::string_view option, std::string_view text);
 
 // A number > 0, or Refuse: "OPTION=VALUE must be a number > 0 (UNIT)".
 double ParsePositive(std::string_view option, std::string_view text, std::string_view unit);
+
+// "bodies,joints,pairs,energy" or any of them: the trajectory's column groups.
+ColumnGroups ParseColumns(std::string_view text);
 
 // Validates the common options (overrides left empty; no timestep for auto).
 CommonOptions ParseCommon(const CommonArgs& args);

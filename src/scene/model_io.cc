@@ -54,7 +54,11 @@ UniqueModel LoadModelString(std::string_view xml, const std::string& name) {
 std::string ObjectName(const mjModel* m, mjtObj type, int id) {
   const char* name = mj_id2name(m, type, id);
   if (name && name[0]) return name;
-  return fmt::format("{}{}", type == mjOBJ_BODY ? "body" : "geom", id);
+  return fmt::format("{}{}", type == mjOBJ_BODY    ? "body"
+                            : type == mjOBJ_JOINT ? "joint"
+                            : type == mjOBJ_GEOM  ? "geom"
+                                                  : "object",
+                     id);
 }
 
 int MujocoVersion() { return mj_version(); }

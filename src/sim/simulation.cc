@@ -2,7 +2,10 @@
 
 #include "contactlaws/simulation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -20,10 +23,8 @@ Simulation::Simulation(UniqueModel model, std::string source,
   if (!data_) throw Error(fmt::format("{}: MuJoCo could not allocate mjData", source_));
   contacts_ = std::make_unique<ContactData>(*contact_model_, data_.get());
 
-  for (int b = 1; b < model_->nbody; ++b) {
-    if (model_->body_jntnum[b] > 0) recorded_bodies_.push_back(b);
-  }
-  for (const Drive& drive : contact_model_->drives()) recorded_bodies_.push_back(drive.body);
+  columns_ = options.columns;
+  RecordBodiesAndJoints();
   Reset();
 }
 
@@ -39,21 +40,46 @@ void Simulation::Reset() {
   }
 }
 
+void Simulation::RecordBodiesAndJoints() {
+  const mjModel* m = model_.get();
+  for (int b = 1; b < m->nbody; ++b) {
+    if (m->body_weldid[b] == 0) continue;
+    recorded_bodies_.push_back(b);
+    bool oriented = false;
+    for (int j = m->body_jntadr[b]; j < m->body_jntadr[b] + m->body_jntnum[b]; ++j) {
+      oriented = oriented || m->jnt_type[j] == mjJNT_FREE || m->jnt_type[j] == mjJNT_BALL;
+    }
+    oriented_.push_back(oriented);
+  }
+  for (const Drive& drive : contact_model_->drives()) {
+    recorded_bodies_.push_back(drive.body);
+    oriented_.push_back(false);
+  }
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_SLIDE) {
+      recorded_joints_.push_back(j);
+    }
+  }
+}
+
 std::vector<std::string> Simulation::Columns() const {
+  const mjModel* m = model_.get();
   std::vector<std::string> columns = {"time"};
-  for (int b : recorded_bodies_) {
-    for (const char* q : {"x", "y", "z", "vx", "vy", "vz"}) {
-      columns.push_back(fmt::format("{}.{}", ObjectName(model_.get(), mjOBJ_BODY, b), q));
-    }
+  auto add = [&](const std::string& name, std::initializer_list<const char*> quantities) {
+    for (const char* q : quantities) columns.push_back(fmt::format("{}.{}", name, q));
+  };
+  for (size_t i = 0; columns_.bodies && i < recorded_bodies_.size(); ++i) {
+    const std::string body = ObjectName(m, mjOBJ_BODY, recorded_bodies_[i]);
+    add(body, {"x", "y", "z", "vx", "vy", "vz"});
+    if (oriented_[i]) add(body, {"qw", "qx", "qy", "qz", "wx", "wy", "wz"});
   }
-  for (const PairTag& tag : contact_model_->tags()) {
-    for (const char* q : {"depth", "depth_rate", "force"}) {
-      columns.push_back(fmt::format("{}.{}", tag.label, q));
-    }
+  for (size_t i = 0; columns_.joints && i < recorded_joints_.size(); ++i) {
+    add(ObjectName(m, mjOBJ_JOINT, recorded_joints_[i]), {"q", "v"});
   }
-  for (const char* q : {"kinetic", "potential", "elastic", "dissipated", "total"}) {
-    columns.push_back(fmt::format("energy.{}", q));
+  for (size_t t = 0; columns_.pairs && t < contact_model_->tags().size(); ++t) {
+    add(contact_model_->tags()[t].label, {"depth", "depth_rate", "force"});
   }
+  if (columns_.energy) add("energy", {"kinetic", "potential", "elastic", "dissipated", "total"});
   return columns;
 }
 
@@ -100,22 +126,54 @@ void Simulation::Sample(std::vector<double>* row) {
   row->clear();
   // d->time accumulates timesteps: show it to the nanosecond
   row->push_back(std::round(d->time * 1e9) / 1e9);
-  for (int b : recorded_bodies_) {
+  for (size_t i = 0; columns_.bodies && i < recorded_bodies_.size(); ++i) {
+    const int b = recorded_bodies_[i];
     mjtNum vel[3];
     contacts_->PointVelocity(b, d->xpos + 3 * b, vel);
-    for (int k = 0; k < 3; ++k) row->push_back(d->xpos[3 * b + k]);
-    for (int k = 0; k < 3; ++k) row->push_back(vel[k]);
+    row->insert(row->end(), d->xpos + 3 * b, d->xpos + 3 * b + 3);
+    row->insert(row->end(), vel, vel + 3);
+    // cvel: (angular, linear) in the world frame
+    if (oriented_[i]) {
+      row->insert(row->end(), d->xquat + 4 * b, d->xquat + 4 * b + 4);
+      row->insert(row->end(), d->cvel + 6 * b, d->cvel + 6 * b + 3);
+    }
   }
-  for (int t = 0; t < static_cast<int>(contact_model_->tags().size()); ++t) {
+  for (size_t i = 0; columns_.joints && i < recorded_joints_.size(); ++i) {
+    const int j = recorded_joints_[i];
+    row->push_back(d->qpos[m->jnt_qposadr[j]]);
+    row->push_back(d->qvel[m->jnt_dofadr[j]]);
+  }
+  for (int t = 0; columns_.pairs && t < static_cast<int>(contact_model_->tags().size()); ++t) {
     const TagReading r = contacts_->Reading(t);
-    row->push_back(r.depth);
-    row->push_back(r.depth_rate);
-    row->push_back(r.force);
+    row->insert(row->end(), {r.depth, r.depth_rate, r.force});
   }
-  const EnergyLedger e = Energy();
-  for (double v : {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()}) {
-    row->push_back(v);
+  if (columns_.energy) {
+    const EnergyLedger e = Energy();
+    row->insert(row->end(), {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
   }
+}
+
+std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad) {
+  ColumnGroups groups{false, false, false, false};
+  const std::pair<const char*, bool ColumnGroups::*> names[] = {
+      {"bodies", &ColumnGroups::bodies},
+      {"joints", &ColumnGroups::joints},
+      {"pairs", &ColumnGroups::pairs},
+      {"energy", &ColumnGroups::energy}};
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    const std::string_view word = text.substr(start, end - start);
+    auto found = std::find_if(std::begin(names), std::end(names),
+                              [&](const auto& n) { return word == n.first; });
+    if (found == std::end(names) || groups.*found->second) {
+      *bad = std::string(word);
+      return std::nullopt;
+    }
+    groups.*found->second = true;
+    start = end + 1;
+  }
+  return groups;
 }
 
 bool Simulation::Undriven() const {

@@ -94,9 +94,10 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
 
   const std::string csv = ReadFile(trajectory);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,ball-floor.depth,"
-            "ball-floor.depth_rate,ball-floor.force,energy.kinetic,energy.potential,"
-            "energy.elastic,energy.dissipated,energy.total");
+            "time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,ball.qw,ball.qx,ball.qy,"
+            "ball.qz,ball.wx,ball.wy,ball.wz,ball-floor.depth,ball-floor.depth_rate,"
+            "ball-floor.force,energy.kinetic,energy.potential,energy.elastic,"
+            "energy.dissipated,energy.total");
   // 0 to 0.5 s at 100 rows per second: 51 rows and the header
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 52);
   EXPECT_NE(csv.find("\n0.5,"), std::string::npos);
@@ -187,6 +188,20 @@ TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
   EXPECT_NE(r.output.find("collisions"), std::string::npos) << r.output;
 }
 
+// --columns picks the trajectory's groups; a bad group is named.
+TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
+  const Result r = RunCli("run " + kBall + " --duration 0.002 --columns pairs,energy --output -");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.substr(0, r.output.find('\n')),
+            "time,ball-floor.depth,ball-floor.depth_rate,ball-floor.force,energy.kinetic,"
+            "energy.potential,energy.elastic,energy.dissipated,energy.total");
+  EXPECT_EQ(RunCli("run " + kBall + " --columns bodies,joint").output,
+            "contactlaws: --columns=bodies,joint has 'joint', which is not a group (bodies, "
+            "joints, pairs, energy)\n");
+  EXPECT_EQ(RunCli("run " + kBall + " --columns energy,energy").output,
+            "contactlaws: --columns=energy,energy names energy twice\n");
+}
+
 TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   const std::string dir = ::testing::TempDir() + "/cli_compare";
   const Result r = RunCli("compare " + TinyScene() +
@@ -198,9 +213,10 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   const std::vector<std::string> trajectories = Lines(ReadFile(dir + "/trajectories.csv"));
   ASSERT_EQ(trajectories.size(), 1u + 3 * 11);
   EXPECT_EQ(trajectories[0],
-            "law,restitution,time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,"
-            "ball-floor.depth,ball-floor.depth_rate,ball-floor.force,energy.kinetic,"
-            "energy.potential,energy.elastic,energy.dissipated,energy.total");
+            "law,restitution,time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,ball.qw,"
+            "ball.qx,ball.qy,ball.qz,ball.wx,ball.wy,ball.wz,ball-floor.depth,"
+            "ball-floor.depth_rate,ball-floor.force,energy.kinetic,energy.potential,"
+            "energy.elastic,energy.dissipated,energy.total");
   EXPECT_EQ(trajectories[1].rfind("hertz,1,0,", 0), 0u) << trajectories[1];
   EXPECT_EQ(trajectories[12].rfind("flores,0.5,0,", 0), 0u) << trajectories[12];
   EXPECT_EQ(trajectories[33].rfind("flores,0.9,0.1,", 0), 0u) << trajectories[33];
