@@ -18,6 +18,13 @@ packages=(
   libclang-rt-14-dev  # clang's sanitizer and libFuzzer runtimes
   python3-matplotlib
   python3-numpy
+  libmujoco-samples   # mujoco-simulate: contactlaws simulate, and its test
+  xvfb                # a virtual X server: mujoco-simulate's test runs under xvfb-run
+  xauth               # xvfb-run needs it
+  libegl-dev          # contactlaws render: an OpenGL context without a display (EGL)
+  libegl-mesa0        # Mesa's EGL: the surfaceless platform, software rendering (llvmpipe)
+  libpng-dev          # contactlaws render DIR/: the PNG files, and the render test reads them
+  ffmpeg              # contactlaws render FILE.mp4|FILE.gif, and ffprobe for its test
 )
 
 missing=()

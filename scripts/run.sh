@@ -10,6 +10,7 @@
 #   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10)
 #   results/*.png      the figures (scripts/figures.py)
 #   results/reproduction.txt  the numbers docs/paper-reproduction.md quotes
+#   results/ball.gif, results/ball_table.gif  the two scenes drawn (contactlaws render)
 # Each directory holds trajectories.csv, impacts.csv and summary.csv.
 set -euo pipefail
 
@@ -54,5 +55,12 @@ echo "== Figures =="
 echo
 echo "== The numbers of docs/paper-reproduction.md =="
 /usr/bin/python3 scripts/reproduction.py "$out" | tee "$out/reproduction.txt"
+echo
+echo "== The two scenes drawn (offscreen, no display needed) =="
+# force arrows at 2e-5 m/N: the ball's 1.2e4 N impact peak is 0.24 m long
+"$cl" render "$ball" --duration 3 --fps 20 --width 320 --height 240 --timestep auto \
+  --force-scale 2e-5 --output "$out/ball.gif"
+"$cl" render "$table" --law hunt-crossley --restitution 0.6 --duration 4 --fps 20 \
+  --width 320 --height 240 --timestep auto --force-scale 2e-5 --output "$out/ball_table.gif"
 echo
 echo "Results in ${repo}/${out}/"

@@ -22,5 +22,6 @@
 #include "contactlaws/simulation.h"
 #include "contactlaws/summary.h"
 #include "contactlaws/timestep_advice.h"
+#include "contactlaws/visible_contacts.h"
 
 #endif  // CONTACTLAWS_CONTACTLAWS_H_

@@ -34,7 +34,29 @@ struct CheckArgs {
   std::optional<std::string> impact_velocity;
 };
 
+// contactlaws simulate: mujoco-simulate with the plugin preloaded.
+struct SimulateArgs {
+  std::string scene;
+  std::optional<std::string> law;
+  std::optional<std::string> restitution;
+};
+
+// contactlaws render: the run drawn offscreen into a video or PNG files.
+struct RenderArgs : CommonArgs {
+  std::optional<std::string> law;
+  std::optional<std::string> restitution;
+  std::string output;
+  std::string fps = "30";
+  std::string width = "640";
+  std::string height = "480";
+  std::string slowmo = "1";
+  std::optional<std::string> camera;
+  std::optional<std::string> force_scale;
+};
+
 int RunCommand(const RunArgs& args);
+int SimulateCommand(const SimulateArgs& args);
+int RenderCommand(const RenderArgs& args);
 int CompareCommand(const SweepArgs& args);
 int RestitutionCommand(const SweepArgs& args);
 int CheckCommand(const CheckArgs& args);

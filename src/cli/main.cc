@@ -6,6 +6,8 @@
 //   contactlaws restitution SCENE  the first impact per law and e (paper Fig. 7)
 //   contactlaws check SCENE        the resolved tags, contact estimates, timestep
 //   contactlaws laws               every law: formula, parameters, citation
+//   contactlaws simulate SCENE     mujoco-simulate with the plugin preloaded
+//   contactlaws render SCENE       the run drawn offscreen: MP4, GIF or PNG files
 // Exit status: 0 done; 2 refused input (one line on stderr naming the file,
 // tag, key and value); 3 a run did not give what was asked; 1 anything else.
 
@@ -94,11 +96,15 @@ struct Commands {
   SweepArgs restitution;
   CheckArgs check;
   LawsArgs laws;
+  SimulateArgs simulate;
+  RenderArgs render;
   CLI::App* run_cmd = nullptr;
   CLI::App* compare_cmd = nullptr;
   CLI::App* restitution_cmd = nullptr;
   CLI::App* check_cmd = nullptr;
   CLI::App* laws_cmd = nullptr;
+  CLI::App* simulate_cmd = nullptr;
+  CLI::App* render_cmd = nullptr;
 };
 
 void AddRun(CLI::App* app, Commands* c) {
@@ -159,6 +165,37 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
                           "0.9,0.7,0.5,0.3,0.1)");
 }
 
+void AddOverrides(CLI::App* cmd, std::optional<std::string>* law,
+                  std::optional<std::string>* restitution) {
+  cmd->add_option("--law", *law, fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(cmd, "--restitution", restitution, "override every tag's restitution e, in [0, 1]");
+}
+
+void AddViewers(CLI::App* app, Commands* c) {
+  c->simulate_cmd = app->add_subcommand(
+      "simulate", "MuJoCo's viewer (mujoco-simulate) with the laws acting: the plugin preloaded");
+  c->simulate_cmd->add_option("scene", c->simulate.scene, "MJCF scene with contactlaw tags")
+      ->required();
+  AddOverrides(c->simulate_cmd, &c->simulate.law, &c->simulate.restitution);
+
+  CLI::App* cmd = c->render_cmd = app->add_subcommand(
+      "render", "the run drawn offscreen (no window): a video, a GIF or PNG files");
+  RenderArgs& r = c->render;
+  AddCommon(cmd, &r, false);
+  AddOverrides(cmd, &r.law, &r.restitution);
+  cmd->add_option("--output", r.output, "FILE.mp4, FILE.gif, or DIR/ (one PNG per frame)")
+      ->required();
+  AddNumber(cmd, "--fps", &r.fps, "frames per second of video")->capture_default_str();
+  cmd->add_option("--width", r.width, "pixels")->capture_default_str();
+  cmd->add_option("--height", r.height, "pixels")->capture_default_str();
+  AddNumber(cmd, "--slowmo", &r.slowmo,
+            "K: one simulated second lasts K seconds of video (a contact lasts a millisecond)")
+      ->capture_default_str();
+  cmd->add_option("--camera", r.camera, "a camera of the scene (default: MuJoCo's free camera)");
+  AddNumber(cmd, "--force-scale", &r.force_scale,
+            "force arrows, m/N (default: MuJoCo's, visual/map force / mean body mass)");
+}
+
 // Runs the command that was parsed; its exit status.
 int Dispatch(const Commands& c) {
   try {
@@ -167,6 +204,8 @@ int Dispatch(const Commands& c) {
     if (c.restitution_cmd->parsed()) return RestitutionCommand(c.restitution);
     if (c.check_cmd->parsed()) return CheckCommand(c.check);
     if (c.laws_cmd->parsed()) return LawsCommand(c.laws);
+    if (c.simulate_cmd->parsed()) return SimulateCommand(c.simulate);
+    if (c.render_cmd->parsed()) return RenderCommand(c.render);
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     return kExitRefused;
@@ -186,6 +225,7 @@ int Main(int argc, char** argv) {
   AddRun(&app, &commands);
   AddSweeps(&app, &commands);
   AddCheckAndLaws(&app, &commands);
+  AddViewers(&app, &commands);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,125 @@
+// Copyright contactlaws authors.
+//
+// contactlaws render SCENE --output FILE.mp4 | FILE.gif | DIR/: the run drawn
+// offscreen by MuJoCo's renderer, one frame at each simulated time
+// k / (fps * slowmo), k = 0, 1, ... up to the duration: Advance's sample
+// grid, so the frames are the states run's trajectory rows would hold (a
+// fixed step samples at the first step within half a step of the frame
+// time; the auto step is cut at the frame times).
+
+#include <signal.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/programs.h"
+#include "cli/report.h"
+#include "render/frame_renderer.h"
+#include "render/frame_sink.h"
+#include "scene/number.h"
+
+namespace contactlaws::cli {
+namespace {
+
+// Frames of at least this size, at most this: MuJoCo's overlay needs room,
+// and a frame beyond 8192 is beyond what Mesa's llvmpipe renders.
+constexpr long kMinPixels = 16;
+constexpr long kMaxPixels = 8192;
+
+int ParsePixels(std::string_view option, const std::string& text) {
+  const std::optional<long> pixels = ParseWholeNumber(text, kMinPixels, kMaxPixels);
+  if (!pixels) {
+    Refuse(option, text,
+           fmt::format("must be a whole number in [{}, {}] (pixels)", kMinPixels, kMaxPixels));
+  }
+  return static_cast<int>(*pixels);
+}
+
+struct RenderPlan {
+  CommonOptions common;
+  render::OutputFormat format = render::OutputFormat::kMp4;
+  render::FrameOptions frame;
+  double fps = 0;
+  double slowmo = 0;
+};
+
+RenderPlan Plan(const RenderArgs& args) {
+  RenderPlan plan;
+  plan.common = ParseCommon(args);
+  Overrides& overrides = plan.common.simulation.overrides;
+  if (args.law) overrides.law = ParseLaw("--law", *args.law);
+  if (args.restitution) overrides.restitution = ParseRestitution("--restitution", *args.restitution);
+  plan.fps = ParsePositive("--fps", args.fps, "frames per second of video");
+  plan.slowmo = ParsePositive("--slowmo", args.slowmo, "video seconds per simulated second");
+  plan.frame.width = ParsePixels("--width", args.width);
+  plan.frame.height = ParsePixels("--height", args.height);
+  plan.frame.camera = args.camera;
+  if (args.force_scale) plan.frame.force_scale = ParsePositive("--force-scale", *args.force_scale, "m/N");
+  plan.format = render::OutputFormatOf(args.output);
+  if (plan.format == render::OutputFormat::kMp4) {
+    // H.264 in yuv420p halves the chroma both ways
+    if (plan.frame.width % 2) Refuse("--width", args.width, "must be even for .mp4 (yuv420p)");
+    if (plan.frame.height % 2) Refuse("--height", args.height, "must be even for .mp4 (yuv420p)");
+  }
+  return plan;
+}
+
+}  // namespace
+
+int RenderCommand(const RenderArgs& args) {
+  const RenderPlan plan = Plan(args);
+  const std::string ffmpeg = plan.format == render::OutputFormat::kPngDirectory
+                                 ? ""
+                                 : RequireProgram("render --output " + args.output, "ffmpeg",
+                                                  "ffmpeg");
+  UniqueModel model = LoadModelFile(args.scene);
+  render::FrameRenderer::Prepare(model.get(), plan.frame);
+  if (plan.frame.camera) render::FindCamera(model.get(), args.scene, *plan.frame.camera);
+  const Scene scene(args.scene, std::move(model));
+  std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
+  for (const TimestepAdvice& a : AdviseTimestep(sim.get())) {
+    if (a.coarse && !plan.common.auto_timestep) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+  }
+
+  signal(SIGPIPE, SIG_IGN);  // an ffmpeg that stops is an error of fwrite, not a signal
+  std::unique_ptr<render::FrameSink> sink = render::MakeFrameSink(
+      plan.format, args.output, ffmpeg, plan.frame.width, plan.frame.height, plan.fps);
+  render::FrameRenderer renderer(*sim, plan.frame);
+  std::vector<unsigned char> rgb;
+  long frames = 0;
+  std::chrono::duration<double> drawing{0};
+  AdvanceOptions advance;
+  advance.duration = plan.common.duration;
+  advance.sample_rate = plan.fps * plan.slowmo;
+  advance.auto_timestep = plan.common.auto_timestep;
+  const auto start = std::chrono::steady_clock::now();
+  const AdvanceResult result = Advance(sim.get(), advance, [&](const std::vector<double>&) {
+    const auto before = std::chrono::steady_clock::now();
+    renderer.Draw(sim.get(), &rgb);
+    drawing += std::chrono::steady_clock::now() - before;
+    sink->Write(rgb);
+    ++frames;
+  });
+  const std::chrono::duration<double> total = std::chrono::steady_clock::now() - start;
+  if (result.status == AdvanceResult::Status::kInterrupted) {
+    fmt::print(stderr, "contactlaws: interrupted at t = {:.6g} s: no file written\n", sim->time());
+    return kExitInterrupted;
+  }
+  for (const std::string& w : RunWarnings(*sim, result)) Warn(scene.path(), w);
+  sink->Commit();  // what was drawn until a divergence is valid, and written
+  fmt::print("{}: {} frames of {}x{} at {} fps, {}x slow motion: {:.1f} ms per frame drawn, "
+             "{:.2f} s in all\n", args.output, frames, plan.frame.width, plan.frame.height,
+             plan.fps, plan.slowmo, frames ? 1e3 * drawing.count() / frames : 0.0, total.count());
+  if (result.divergence) {
+    fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
+               DivergenceMessage(*sim, *result.divergence, AdviseTimestep(sim.get())));
+    return kExitIncomplete;
+  }
+  return 0;
+}
+
+}  // namespace contactlaws::cli

@@ -1,0 +1,52 @@
+// Copyright contactlaws authors.
+//
+// contactlaws simulate SCENE [--law L] [--restitution E]: MuJoCo's own viewer,
+// mujoco-simulate, with libcontactlaws_plugin.so preloaded and the overrides
+// in its environment. The scene's tags and the overrides are checked first,
+// as run checks them, so a refusal is the same line and no window opens.
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/programs.h"
+
+namespace contactlaws::cli {
+namespace {
+
+// Sets (or, for nullopt, removes) an environment variable of the viewer.
+void SetVariable(const char* name, const std::optional<std::string>& value) {
+  if (value) {
+    setenv(name, value->c_str(), 1);
+  } else {
+    unsetenv(name);
+  }
+}
+
+}  // namespace
+
+int SimulateCommand(const SimulateArgs& args) {
+  SimulationOptions options;
+  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
+  if (args.restitution) {
+    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
+  }
+  Scene(args.scene).Make(options);  // refuses what run refuses, before any window
+  const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
+  const std::string plugin = FindPlugin();
+
+  // the plugin first, before whatever the user preloads
+  const char* preloaded = std::getenv("LD_PRELOAD");
+  SetVariable("LD_PRELOAD", preloaded && *preloaded ? plugin + ":" + preloaded : plugin);
+  SetVariable("CONTACTLAWS_LAW", args.law);
+  SetVariable("CONTACTLAWS_RESTITUTION", args.restitution);
+  const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};
+  execv(viewer.c_str(), const_cast<char* const*>(argv));
+  throw Error(fmt::format("simulate: could not start {}", viewer));
+}
+
+}  // namespace contactlaws::cli

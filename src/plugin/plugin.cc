@@ -1,0 +1,152 @@
+// Copyright contactlaws authors.
+
+#include "plugin/plugin.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "contactlaws/law.h"
+#include "scene/number.h"
+#include "scene/tags.h"
+
+namespace contactlaws::plugin {
+namespace {
+
+// "contactlaws: plugin: FILE: LABEL (GEOM1, GEOM2: LAW, e = E); ...": the
+// tagged pairs as resolved (overrides included), and the driven bodies.
+std::string ActivationLine(const std::string& source, const ContactModel& laws) {
+  std::string line = fmt::format("contactlaws: plugin: {}:", source);
+  const char* separator = " ";
+  for (const PairTag& tag : laws.tags()) {
+    line += fmt::format("{}{} ({}, {}: {}", separator, tag.label, tag.geom1, tag.geom2,
+                        LawName(tag.law));
+    if (!IsElastic(tag.law)) line += fmt::format(", e = {}", tag.restitution);
+    line += ")";
+    separator = "; ";
+  }
+  for (const Drive& drive : laws.drives()) {
+    line += fmt::format("{}driven body {}", separator, drive.label);
+    separator = "; ";
+  }
+  return line;
+}
+
+}  // namespace
+
+EnvironmentOverrides ReadEnvironmentOverrides() {
+  EnvironmentOverrides result;
+  if (const char* law = std::getenv(kLawVariable)) {
+    result.overrides.law = ParseLawName(law);
+    if (!result.overrides.law) {
+      result.refusal = fmt::format("{}={} is not a law ({})", kLawVariable, law, LawNameList());
+      return result;
+    }
+  }
+  if (const char* text = std::getenv(kRestitutionVariable)) {
+    const std::optional<double> e = ParseNumber(text);
+    if (!e) {
+      result.refusal = fmt::format("{}={} is not a finite number", kRestitutionVariable, text);
+    } else if (!(*e >= 0 && *e <= 1)) {
+      result.refusal = fmt::format("{}={} must be in [0, 1]", kRestitutionVariable, *e);
+    } else {
+      result.overrides.restitution = *e;
+    }
+  }
+  return result;
+}
+
+bool HasTags(const mjModel* m) {
+  for (int i = 0; i < m->ntext; ++i) {
+    const std::string_view name = m->names + m->name_textadr[i];
+    if (name.rfind(kPairTagPrefix, 0) == 0 || name.rfind(kDriveTagPrefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+Plugin& Plugin::Get() {
+  static Plugin* plugin = new Plugin;
+  return *plugin;
+}
+
+void Plugin::Loaded(const mjModel* m, const char* file) {
+  if (!m) return;
+  std::lock_guard lock(mutex_);
+  ModelEntry& entry = models_[m];
+  entry = ModelEntry{};
+  if (file) entry.source = file;
+}
+
+bool Plugin::OverridesAccepted() {
+  if (!environment_) {
+    environment_ = ReadEnvironmentOverrides();
+    if (environment_->refusal) {
+      std::fprintf(stderr, "contactlaws: %s\n", environment_->refusal->c_str());
+    }
+  }
+  return !environment_->refusal;
+}
+
+Plugin::ModelEntry& Plugin::Resolve(const mjModel* m) {
+  ModelEntry& entry = models_[m];
+  if (entry.resolved) return entry;
+  entry.resolved = true;
+  if (!HasTags(m) || !OverridesAccepted()) return entry;
+  try {
+    entry.laws = std::make_unique<ContactModel>(m, entry.source, environment_->overrides);
+    std::fprintf(stderr, "%s\n", ActivationLine(entry.source, *entry.laws).c_str());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "contactlaws: %s\n", e.what());
+  }
+  return entry;
+}
+
+void Plugin::Made(const mjModel* m, mjData* d) {
+  if (!m || !d) return;
+  std::lock_guard lock(mutex_);
+  const ModelEntry& entry = Resolve(m);
+  if (!entry.laws) return;
+  data_[d] = std::make_unique<ManagedData>(*entry.laws, d);
+}
+
+void Plugin::Deleting(const mjData* d) {
+  std::lock_guard lock(mutex_);
+  data_.erase(d);
+}
+
+void Plugin::DeletingModel(const mjModel* m) {
+  std::lock_guard lock(mutex_);
+  // data of m still alive lose their laws before the laws go
+  for (auto it = data_.begin(); it != data_.end();) {
+    if (it->second->contacts.model().model() == m) {
+      it = data_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  models_.erase(m);
+}
+
+ManagedData* Plugin::Find(const mjData* d) {
+  std::lock_guard lock(mutex_);
+  auto found = data_.find(d);
+  return found == data_.end() ? nullptr : found->second.get();
+}
+
+void Plugin::ReportDivergence(ManagedData* managed) {
+  const std::optional<Divergence>& divergence = managed->contacts.divergence();
+  if (!divergence) {
+    managed->divergence_reported = false;  // forgotten (reset): report the next one
+    return;
+  }
+  if (managed->divergence_reported) return;
+  managed->divergence_reported = true;
+  std::fprintf(stderr, "contactlaws: %s: diverged at t = %.6g s: %s (the state is not to be "
+               "trusted)\n", managed->contacts.model().source().c_str(), divergence->time,
+               divergence->what.c_str());
+}
+
+}  // namespace contactlaws::plugin

@@ -1,0 +1,94 @@
+// Copyright contactlaws authors.
+//
+// The state of libcontactlaws_plugin.so: which mjModel came from which file,
+// the tags of each tagged model, and one ContactData per mjData of a tagged
+// model. wrappers.cc (the LD_PRELOAD entry points) calls it; every map is
+// guarded by one mutex, since a program may load and step on several threads
+// (mujoco-simulate steps on its physics thread and deletes on its render
+// thread).
+//
+// Policy: whatever the plugin refuses (a model's tags, a bad
+// CONTACTLAWS_LAW or CONTACTLAWS_RESTITUTION) is one line on stderr, the
+// line `contactlaws run` prints, and the model is left to MuJoCo's own
+// contact; the program goes on.
+
+#ifndef CONTACTLAWS_PLUGIN_PLUGIN_H_
+#define CONTACTLAWS_PLUGIN_PLUGIN_H_
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_data.h"
+#include "contactlaws/contact_model.h"
+#include "contactlaws/visible_contacts.h"
+
+namespace contactlaws::plugin {
+
+// The environment variables the plugin reads (once, at the first tagged
+// model): the overrides of `contactlaws run --law ... --restitution ...`.
+inline constexpr const char* kLawVariable = "CONTACTLAWS_LAW";
+inline constexpr const char* kRestitutionVariable = "CONTACTLAWS_RESTITUTION";
+
+// The overrides in the environment, or the one-line refusal of a bad value
+// (named as `VARIABLE=VALUE requirement`, as the options are).
+struct EnvironmentOverrides {
+  Overrides overrides;
+  std::optional<std::string> refusal;
+};
+EnvironmentOverrides ReadEnvironmentOverrides();
+
+// True when m has a contactlaw: or contactdrive: text entry.
+bool HasTags(const mjModel* m);
+
+// One mjData of a tagged model, with its laws.
+struct ManagedData {
+  ManagedData(const ContactModel& model, mjData* d) : contacts(model, d) {}
+  ContactData contacts;
+  VisibleContactsOverflow overflow;
+  bool divergence_reported = false;
+};
+
+class Plugin {
+ public:
+  static Plugin& Get();  // never destroyed: a program may step during exit
+
+  // mj_loadXML / mj_loadModel gave m from file.
+  void Loaded(const mjModel* m, const char* file);
+  // mj_makeData(m) gave d: a ContactData when m is tagged and accepted.
+  void Made(const mjModel* m, mjData* d);
+  // before mj_deleteData(d) / mj_deleteModel(m)
+  void Deleting(const mjData* d);
+  void DeletingModel(const mjModel* m);
+
+  // d's laws, or nullptr when MuJoCo alone steps d. Valid until d is deleted.
+  ManagedData* Find(const mjData* d);
+
+  // After a step of managed: the divergence, once, on stderr.
+  void ReportDivergence(ManagedData* managed);
+
+ private:
+  struct ModelEntry {
+    std::string source = "mjModel";  // the file, as the program named it
+    bool resolved = false;           // tags read (the first mj_makeData)
+    std::unique_ptr<ContactModel> laws;  // null: untagged or refused
+  };
+  // The entry of m, its tags read on first use (under mutex_).
+  ModelEntry& Resolve(const mjModel* m);
+  // The overrides of the environment; false (and the refusal printed, once)
+  // when they are refused.
+  bool OverridesAccepted();
+
+  std::mutex mutex_;
+  std::unordered_map<const mjModel*, ModelEntry> models_;
+  std::unordered_map<const mjData*, std::unique_ptr<ManagedData>> data_;
+  std::optional<EnvironmentOverrides> environment_;
+};
+
+}  // namespace contactlaws::plugin
+
+#endif  // CONTACTLAWS_PLUGIN_PLUGIN_H_
