@@ -85,6 +85,7 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     }
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
+  if (args.dissipation) options.simulation.overrides.dissipation = ParseDissipation(*args.dissipation);
   return options;
 }
 
@@ -108,6 +109,12 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
     laws.push_back(*law);
   }
   return laws;
+}
+
+double ParseDissipation(std::string_view text) {
+  const double value = ParseOption("--dissipation", text);
+  if (!(value >= 0)) Refuse("--dissipation", fmt::format("{}", value), "must be >= 0 (s/m)");
+  return value;
 }
 
 double ParseRestitution(std::string_view option, std::string_view text) {

@@ -24,6 +24,7 @@ struct CommonArgs {
   std::optional<std::string> max_timestep;  // with auto
   std::optional<std::string> integrator;
   std::string sample_rate = "1000";
+  std::optional<std::string> dissipation;  // c (s/m) of the laws that read it
 };
 
 // What SimulationOptions leave out of the common options: the run's length
@@ -45,7 +46,8 @@ double ParseOption(std::string_view option, std::string_view text);
 // A number > 0, or Refuse: "OPTION=VALUE must be a number > 0 (UNIT)".
 double ParsePositive(std::string_view option, std::string_view text, std::string_view unit);
 
-// Validates the common options (overrides left empty; no timestep for auto).
+// Validates the common options (overrides but --dissipation left empty; no
+// timestep for auto).
 CommonOptions ParseCommon(const CommonArgs& args);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
@@ -56,6 +58,9 @@ LawKind ParseLaw(std::string_view option, std::string_view name);
 
 // "all" (every law, in table order) or "L1,L2,..." (no repeats).
 std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text);
+
+// --dissipation: a number >= 0 (s/m).
+double ParseDissipation(std::string_view text);
 
 // A restitution in [0, 1].
 double ParseRestitution(std::string_view option, std::string_view text);
