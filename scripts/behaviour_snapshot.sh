@@ -34,15 +34,15 @@ case_() {
 }
 
 # the paper's sweep, fixed and auto, and the jobs
-case_ sweep_fixed restitution "$repo/$ball" --laws all --restitution 0.1:1.0:0.1 --jobs 1 --quiet
-case_ sweep_auto restitution "$repo/$ball" --laws all --restitution 0.1:1.0:0.1 --timestep auto \
+case_ sweep_fixed restitution "$repo/$ball" --laws all --dissipation 0.1 --restitution 0.1:1.0:0.1 --jobs 1 --quiet
+case_ sweep_auto restitution "$repo/$ball" --laws all --dissipation 0.1 --restitution 0.1:1.0:0.1 --timestep auto \
   --jobs 2 --quiet
 for scene in ball table; do
   path="$repo/$ball"
   [ "$scene" = table ] && path="$repo/$table"
-  case_ "compare_${scene}_j1" compare "$path" --laws all --restitution 0.9,0.5 --duration 1 \
+  case_ "compare_${scene}_j1" compare "$path" --laws all --dissipation 0.1 --restitution 0.9,0.5 --duration 1 \
     --output-dir "compare_${scene}_j1" --jobs 1 --quiet
-  case_ "compare_${scene}_j2" compare "$path" --laws all --restitution 0.9,0.5 --duration 1 \
+  case_ "compare_${scene}_j2" compare "$path" --laws all --dissipation 0.1 --restitution 0.9,0.5 --duration 1 \
     --output-dir "compare_${scene}_j2" --jobs 2 --quiet
   case_ "run_${scene}" run "$path" --duration 1 --output "run_${scene}.csv" \
     --impacts "run_${scene}_impacts.csv"

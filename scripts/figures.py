@@ -27,6 +27,9 @@ into RESULTS_DIR:
         over the first 2.5 s and cumulative impact counts over the run
     fig11_energy_ledger.png      fig5/trajectories.csv
         no paper counterpart: energy ledger of the Fig. 5 run
+    fig12_every_law.png          fig7.csv, laws.csv
+        companion to Fig. 7: every law of the table, e_post and |e_post - e|
+        against e (figures_laws.py)
 
 Prints one line per figure written. If an input is missing it exits with
 status 1 and names the file and the command that makes it.
@@ -42,6 +45,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
+
+import figures_laws  # noqa: E402
 
 DPI = 150
 BALL_RADIUS = 0.1  # m
@@ -76,7 +81,7 @@ COMMANDS = {
     "fig6": f"{_CL} compare {_BALL} --laws flores"
             " --restitution 1.0,0.8,0.6,0.4,0.2 --duration 0.44"
             " --sample-rate 100000 --output-dir {out}/fig6",
-    "fig7.csv": f"{_CL} restitution {_BALL} --laws all"
+    "fig7.csv": f"{_CL} restitution {_BALL} --laws all --dissipation 0.1"
                 " --restitution 0.05:1.0:0.05 --output {out}/fig7.csv",
     "laws.csv": f"{_CL} laws --format csv --restitution 0.01:1.0:0.002"
                 " > {out}/laws.csv",
@@ -85,7 +90,8 @@ COMMANDS = {
     "fig9": f"{_CL} compare {_TABLE}"
             " --laws hunt-crossley,lankarani-nikravesh,flores"
             " --restitution 0.9,0.6,0.3 --duration 10 --output-dir {out}/fig9",
-    "table-e0.6": f"{_CL} compare {_TABLE} --laws all --restitution 0.6"
+    "table-e0.6": f"{_CL} compare {_TABLE} --laws {','.join(LAWS)}"
+                  " --restitution 0.6"
                   " --duration 10 --output-dir {out}/table-e0.6",
 }
 INPUTS = [
@@ -481,6 +487,8 @@ FIGURES = [
     fig9_table_dissipative,
     fig10_table_five_laws,
     fig11_energy_ledger,
+    lambda results: figures_laws.fig12_every_law(
+        results, read_csv, closed_forms, LAWS, save),
 ]
 
 

@@ -25,6 +25,9 @@ namespace contactlaws {
 struct Overrides {
   std::optional<LawKind> law;
   std::optional<double> restitution;
+  // c (s/m) of the laws that read it (ReadsDissipation); the others ignore it,
+  // as Hertz ignores the restitution
+  std::optional<double> dissipation;
 };
 
 // One contactlaw tag.

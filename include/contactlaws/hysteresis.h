@@ -13,7 +13,15 @@
 // and integrate the energy in the (x', x^(n+1)) plane):
 //   a (1 + e_post) = ln((1 + a) / (1 - a e_post))
 // whatever K, n, m and v0. ExactRebound() solves it; the tests hold every law
-// to it.
+// to it. Its inverse, ExactCoefficient(), is the a(e) of the law `exact`, the
+// one whose first rebound is e itself (derivation in docs/laws.md; the
+// phase-plane solution is D. W. Marhefka, D. E. Orin, IEEE Trans. Syst. Man
+// Cybern. A 29:566-572, 1999).
+//
+// The constant-dissipation form (Simbody, OpenSim; Drake with n = 1):
+//   F = K d^n (1 + c d'),  c in s/m, a material constant,
+// is the same equation with a = c v0: it rebounds at ExactRebound(c v0), which
+// depends on the impact speed.
 
 #ifndef CONTACTLAWS_HYSTERESIS_H_
 #define CONTACTLAWS_HYSTERESIS_H_
@@ -32,9 +40,21 @@ inline double HysteresisForce(double stiffness, double exponent,
          (1.0 + coefficient * depth_rate / impact_velocity);
 }
 
+// K d^n (1 + c d') for d > 0, 0 otherwise (N); c in s/m; not clamped.
+inline double DissipationForce(double stiffness, double exponent, double dissipation,
+                               double depth, double depth_rate) {
+  return HertzForce(stiffness, exponent, depth) * (1.0 + dissipation * depth_rate);
+}
+
 // The rebound restitution e_post of a law with coefficient a >= 0: the root in
 // (0, 1] of a (1 + e) - ln((1 + a) / (1 - a e)) = 0 (1 for a = 0).
 double ExactRebound(double coefficient);
+
+// The inverse: the coefficient a >= 0 whose rebound is e, for e in (0, 1]:
+// the positive root of a (1 + e) = ln((1 + a) / (1 - a e)), which lies in
+// ((1 - e) / (2e), 1/e); 0 for e >= 1. Near e = 1 (p = 1 - e) it is
+// 3p/2 + 3p^2/2 + 27p^3/20 + ...; as e -> 0 it tends to 1/e.
+double ExactCoefficient(double restitution);
 
 }  // namespace contactlaws
 

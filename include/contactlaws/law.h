@@ -29,7 +29,8 @@ namespace contactlaws {
 
 // A law: the index of its row in the table of laws (Laws(), law_table.cc).
 // The named ids are the rows the code refers to; a law added to the table
-// needs no id of its own (it is found by name, ParseLawName).
+// needs no id of its own (it is found by name, ParseLawName, and Laws() gives
+// each row its index).
 enum class LawKind : int {
   kHertz = 0,               // F = K d^n
   kKelvinVoigt = 1,         // F = k d + c d'
@@ -38,15 +39,19 @@ enum class LawKind : int {
   kFlores = 4,
 };
 
-// The two forms a law can take.
+// The three forms a law can take. What a law reads and how it is evaluated
+// follows from its family (ReadsRestitution, ReadsDissipation, EvaluateLaw).
 enum class LawFamily {
   kHysteresis,  // F = K d^n (1 + a(e) d'/v0) (hysteresis.h); Hertz is a = 0
+  // F = K d^n (1 + c d') (hysteresis.h), c the tag's dissipation (s/m), a
+  // material constant: the form of Simbody, OpenSim and Drake. It reads no e;
+  // its rebound is that of a = c v0, so it depends on the impact speed.
+  kConstantDissipation,
   kLinear,      // F = k d + c d' (kelvin_voigt.h)
 };
 
 // One row of the table of laws.
 struct LawInfo {
-  LawKind kind;
   std::string_view name;        // as written in tags and on the command line
   LawFamily family;
   std::string_view formula;     // one line, for help texts and `laws`
@@ -58,6 +63,7 @@ struct LawInfo {
   // The restitution is in [0, 1], or in (0, 1] when e = 0 is refused (a(e)
   // grows without bound as e -> 0).
   bool restitution_excludes_zero;
+  LawKind kind = LawKind::kHertz;  // its index in the table (set by Laws())
 };
 
 // Every law, in table order (LawKind is the index).
@@ -84,11 +90,12 @@ inline constexpr double kDefaultMinImpactVelocity = 1e-3;
 // (ValidateLawParams). Fields a law does not use are ignored by it.
 struct LawParams {
   LawKind kind = LawKind::kHertz;
-  double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for flores
+  double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for the 1/e laws
   double stiffness = 0.0;         // K, N/m^n, > 0 (hertz family)
   double exponent = 1.5;          // n, dimensionless, [1, 3] (hertz family)
   double linear_stiffness = 0.0;  // k, N/m, > 0 (kelvin-voigt)
   std::optional<double> damping;  // c, N s/m, >= 0 (kelvin-voigt); unset: from e
+  std::optional<double> dissipation;  // c, s/m, >= 0 (constant-dissipation family)
   double min_impact_velocity = kDefaultMinImpactVelocity;  // m/s, > 0
   bool allow_tension = false;     // keep F < 0 instead of clamping to 0
 };
@@ -131,21 +138,30 @@ double ElasticEnergy(const LawParams& params, double depth);
 
 // The dimensionless hysteresis coefficient a of the Hertz family, for which
 // F = K d^n (1 + a d'/v0): 0 for hertz, the law's a(e) otherwise.
-// Not defined for kelvin-voigt (returns 0).
+// Not defined for kelvin-voigt nor for the constant-dissipation family, whose
+// a = c v0 does not come from e (returns 0).
 double HysteresisCoefficient(LawKind kind, double restitution);
 
 // The restitution e_post the law rebounds with from a first impact at
 // restitution e, neglecting gravity during the contact: ExactRebound(a(e)) for
 // the hysteresis family; nullopt for the linear family (its clamped force has
-// no closed form) and for e outside the law's range.
+// no closed form), for the constant-dissipation family (its rebound,
+// ExactRebound(c v0), depends on the impact speed) and for e outside the
+// law's range.
 std::optional<double> EffectiveRestitution(LawKind kind, double restitution);
 
 // True for a law that ignores e and dissipates nothing (Hertz).
 bool IsElastic(LawKind kind);
 
+// Whether the law reads the restitution e (every law but Hertz and the
+// constant-dissipation family), and the dissipation c (that family alone).
+bool ReadsRestitution(LawKind kind);
+bool ReadsDissipation(LawKind kind);
+
 // The restitution the law reports for an input e: 1 for an elastic law
-// (Hertz), which ignores e, else e.
-double ReportedRestitution(LawKind kind, double restitution);
+// (Hertz), which ignores e; none for a law that reads no e and is not elastic
+// (constant dissipation); else e.
+std::optional<double> ReportedRestitution(LawKind kind, double restitution);
 
 }  // namespace contactlaws
 

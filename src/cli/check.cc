@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "cli/impact_csv.h"
+
 namespace contactlaws::cli {
 
 namespace {
@@ -41,10 +43,13 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
                law.damping ? fmt::format("{} N s/m", *law.damping)
                            : std::string("from e and the effective mass at each contact"));
   } else {
-    fmt::print("  restitution {}{}, stiffness K {:.6g} N/m^{}, exponent n {}\n",
-               ReportedRestitution(law.kind, law.restitution),
-               IsElastic(law.kind) ? " (elastic)" : "", law.stiffness, law.exponent,
-               law.exponent);
+    const std::string damping =
+        ReadsDissipation(law.kind)
+            ? fmt::format("dissipation c {} s/m (a = c v0)", *law.dissipation)
+            : fmt::format("restitution {}{}", Field(ReportedRestitution(law.kind, law.restitution)),
+                          IsElastic(law.kind) ? " (elastic)" : "");
+    fmt::print("  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
+               law.exponent, law.exponent);
   }
   fmt::print("  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
              law.allow_tension ? ", allow_tension" : "");
@@ -99,6 +104,7 @@ int CheckCommand(const CheckArgs& args) {
   if (args.restitution) {
     options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
   }
+  if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
   if (args.timestep) options.timestep = ParsePositive("--timestep", *args.timestep, "s");
   std::optional<double> impact_velocity;
   if (args.impact_velocity) {

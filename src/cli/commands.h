@@ -30,6 +30,7 @@ struct CheckArgs {
   std::string scene;
   std::optional<std::string> law;
   std::optional<std::string> restitution;
+  std::optional<std::string> dissipation;
   std::optional<std::string> timestep;
   std::optional<std::string> impact_velocity;
 };

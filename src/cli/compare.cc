@@ -12,14 +12,14 @@
 namespace contactlaws::cli {
 namespace {
 
-// An elastic law once; every other law at each restitution (the scene's if
-// none given).
+// A law that reads no restitution once (an elastic one at e = 1); every other
+// law at each restitution (the scene's if none given).
 std::vector<RunSpec> CompareSpecs(const std::vector<LawKind>& laws,
                                   const std::vector<double>& restitutions) {
   std::vector<RunSpec> specs;
   for (const LawKind law : laws) {
-    if (IsElastic(law)) {
-      specs.push_back({law, 1.0});
+    if (!ReadsRestitution(law)) {
+      specs.push_back({law, IsElastic(law) ? std::optional<double>(1.0) : std::nullopt});
     } else if (restitutions.empty()) {
       specs.push_back({law, std::nullopt});
     } else {
@@ -83,7 +83,7 @@ class CompareFiles {
 struct TableRow {
   RunSpec spec;
   RunOutput::Status status;
-  double restitution;
+  std::optional<double> restitution;
   RunSummary s;
   double dissipated;
 };

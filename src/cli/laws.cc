@@ -10,27 +10,53 @@
 namespace contactlaws::cli {
 namespace {
 
-// The restitutions of `laws --format csv` when none are given.
+// The restitutions of `laws` (text), and of `laws --format csv` when none are
+// given.
 constexpr char kDefaultRestitutions[] = "0.9,0.7,0.5,0.3,0.1";
 
 std::string_view FamilyName(LawFamily family) {
-  return family == LawFamily::kHysteresis ? "hysteresis" : "linear";
+  switch (family) {
+    case LawFamily::kHysteresis: return "hysteresis";
+    case LawFamily::kConstantDissipation: return "constant-dissipation";
+    case LawFamily::kLinear: return "linear";
+  }
+  return "?";
+}
+
+// "e = 0.9: 0.9009, ...": the rebound of the law's a(e), or why it has none.
+std::string EffectiveLine(const LawInfo& law, const std::vector<double>& restitutions) {
+  if (law.family == LawFamily::kLinear) return "no closed form (clamped at F = 0)";
+  if (!ReadsRestitution(law.kind) && !IsElastic(law.kind)) {
+    return "reads no e: ExactRebound(c v0), set by the impact speed";
+  }
+  std::string line;
+  for (const double e : restitutions) {
+    const std::optional<double> effective = EffectiveRestitution(law.kind, e);
+    line += fmt::format("{}{}: {}", line.empty() ? "" : ", ", e,
+                        effective ? fmt::format("{:.4f}", *effective) : "-");
+  }
+  return line;
 }
 
 void PrintText() {
+  const std::vector<double> restitutions =
+      ParseRestitutionList("--restitution", kDefaultRestitutions);
   fmt::print("Convention: depth d > 0 in contact (m), depth rate d' > 0 approaching (m/s),\n"
              "v0 = d' at first touch (m/s, floored by min_impact_velocity, default {} m/s),\n"
              "force F >= 0 pushes apart (N); F = 0 for d <= 0; clamped to F >= 0 unless\n"
-             "allow_tension=true.\n",
+             "allow_tension=true. effective e: the first rebound, gravity neglected, of a\n"
+             "first impact at e (a (1 + e_post) = ln((1 + a)/(1 - a e_post))).\n",
              kDefaultMinImpactVelocity);
   for (const LawInfo& law : Laws()) {
-    fmt::print("\n{}\n  {}\n  parameters: {}\n  reference:  {}\n", law.name, law.formula,
-               law.parameters, law.reference);
+    fmt::print("\n{}\n  {}\n  parameters: {}\n  effective e: {}\n  reference:  {}\n",
+               law.name, law.formula, law.parameters, EffectiveLine(law, restitutions),
+               law.reference);
   }
 }
 
 // One row per law and restitution: a(e) and the rebound it gives (empty
-// where the law has none, or e is outside its range).
+// where the law has none, or e is outside its range; empty for the
+// constant-dissipation family too, whose rebound depends on the impact speed).
 void PrintCsv(const std::vector<double>& restitutions) {
   CsvFile out("-");
   out.Header({"law", "family", "restitution", "hysteresis_coefficient",

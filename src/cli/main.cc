@@ -35,6 +35,10 @@ CLI::Option* AddNumber(CLI::App* cmd, const std::string& name,
   return cmd->add_option(name, *value, help)->type_name("FLOAT");
 }
 
+constexpr char kDissipationHelp[] =
+    "override every tag's dissipation c, s/m >= 0, for the laws that read it "
+    "(hunt-crossley-constant); the others ignore it";
+
 void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
   AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
@@ -46,6 +50,7 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
                   "(default 0.001)");
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
+  AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
   if (sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();
@@ -150,6 +155,7 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
                            fmt::format("override every tag's law: {}", LawNameList()));
   AddNumber(c->check_cmd, "--restitution", &c->check.restitution,
             "override every tag's restitution");
+  AddNumber(c->check_cmd, "--dissipation", &c->check.dissipation, kDissipationHelp);
   AddNumber(c->check_cmd, "--timestep", &c->check.timestep, "s (default: the scene's)");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");

@@ -97,6 +97,9 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
+  if (args.dissipation) {
+    options.simulation.overrides.dissipation = ParseDissipation(*args.dissipation);
+  }
   return options;
 }
 
@@ -120,6 +123,12 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
     laws.push_back(*law);
   }
   return laws;
+}
+
+double ParseDissipation(std::string_view text) {
+  const double value = ParseOption("--dissipation", text);
+  if (!(value >= 0)) Refuse("--dissipation", fmt::format("{}", value), "must be >= 0 (s/m)");
+  return value;
 }
 
 double ParseRestitution(std::string_view option, std::string_view text) {

@@ -25,6 +25,7 @@ struct CommonArgs {
   std::optional<std::string> integrator;
   std::string sample_rate = "1000";
   std::optional<std::string> columns;  // trajectory column groups
+  std::optional<std::string> dissipation;  // c (s/m) of the laws that read it
 };
 
 // What SimulationOptions leave out of the common options: the run's length
@@ -49,7 +50,8 @@ double ParsePositive(std::string_view option, std::string_view text, std::string
 // "bodies,joints,pairs,energy" or any of them: the trajectory's column groups.
 ColumnGroups ParseColumns(std::string_view text);
 
-// Validates the common options (overrides left empty; no timestep for auto).
+// Validates the common options (overrides but --dissipation left empty; no
+// timestep for auto).
 CommonOptions ParseCommon(const CommonArgs& args);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
@@ -60,6 +62,9 @@ LawKind ParseLaw(std::string_view option, std::string_view name);
 
 // "all" (every law, in table order) or "L1,L2,..." (no repeats).
 std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text);
+
+// --dissipation: a number >= 0 (s/m).
+double ParseDissipation(std::string_view text);
 
 // A restitution in [0, 1].
 double ParseRestitution(std::string_view option, std::string_view text);

@@ -27,7 +27,7 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
     }
     const RunSummary s = Summarize(impacts, end_time);
     fmt::print(out, "{:<20} {:<20} {:>11} {:>10} {:>14} {:>14.6g}\n", tag.label,
-               LawName(tag.law), IsElastic(tag.law) ? "-" : Field(tag.restitution),
+               LawName(tag.law), ReadsRestitution(tag.law) ? Field(tag.restitution) : "-",
                s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);
   }
 }

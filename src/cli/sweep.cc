@@ -51,7 +51,7 @@ RunOutput NotRun(const RunSpec& spec) {
   RunOutput out;
   out.status = RunOutput::Status::kNotRun;
   out.reason = "interrupted before it started";
-  out.restitution = spec.restitution.value_or(0.0);
+  out.restitution = spec.restitution;
   return out;
 }
 
@@ -60,7 +60,7 @@ RunOutput NotRun(const RunSpec& spec) {
 RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
                   const std::vector<TimestepAdvice>& advice, const SweepOptions& sweep) {
   RunOutput out;
-  out.restitution = spec.restitution.value_or(0.0);
+  out.restitution = spec.restitution;
   try {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
     out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);

@@ -73,7 +73,7 @@ struct RunOutput {
   Status status = Status::kOk;
   std::string reason;                 // failed, interrupted
   std::vector<std::string> warnings;  // for stderr
-  double restitution = 0;             // as reported (1 for Hertz)
+  std::optional<double> restitution;  // as reported (1 for Hertz, none when not read)
   std::string trajectory;             // CSV lines (compare)
   std::string impacts;                // CSV lines (compare)
   RunSummary summary;

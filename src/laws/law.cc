@@ -76,20 +76,30 @@ bool IsElastic(LawKind kind) {
   return law.family == LawFamily::kHysteresis && !law.hysteresis;
 }
 
-double ReportedRestitution(LawKind kind, double restitution) {
-  return IsElastic(kind) ? 1.0 : restitution;
+bool ReadsRestitution(LawKind kind) {
+  return !IsElastic(kind) && Law(kind).family != LawFamily::kConstantDissipation;
+}
+
+bool ReadsDissipation(LawKind kind) {
+  return Law(kind).family == LawFamily::kConstantDissipation;
+}
+
+std::optional<double> ReportedRestitution(LawKind kind, double restitution) {
+  if (IsElastic(kind)) return 1.0;
+  if (!ReadsRestitution(kind)) return std::nullopt;
+  return restitution;
 }
 
 std::optional<ParamError> ValidateLawParams(const LawParams& p) {
   const LawInfo& law = Law(p.kind);
-  if (!RestitutionInRange(law, p.restitution)) {
+  if (ReadsRestitution(p.kind) && !RestitutionInRange(law, p.restitution)) {
     if (law.restitution_excludes_zero) {
       return ParamError{"restitution", p.restitution,
                         "must be in (0, 1] for " + std::string(law.name)};
     }
     return ParamError{"restitution", p.restitution, "must be in [0, 1]"};
   }
-  if (law.family == LawFamily::kHysteresis) {
+  if (law.family != LawFamily::kLinear) {
     if (!InRange(p.stiffness, 0.0, HUGE_VAL, /*lo_open=*/true)) {
       return ParamError{"stiffness", p.stiffness, "must be > 0 (N/m^n)"};
     }
@@ -102,6 +112,10 @@ std::optional<ParamError> ValidateLawParams(const LawParams& p) {
   if (p.damping && !InRange(*p.damping, 0.0, HUGE_VAL)) {
     return ParamError{"damping", *p.damping, "must be >= 0 (N s/m)"};
   }
+  if (ReadsDissipation(p.kind) && !InRange(p.dissipation.value_or(NAN), 0.0, HUGE_VAL)) {
+    return ParamError{"dissipation", p.dissipation.value_or(NAN),
+                      "must be given, >= 0 (s/m), for " + std::string(law.name)};
+  }
   if (!InRange(p.min_impact_velocity, 0.0, HUGE_VAL, /*lo_open=*/true)) {
     return ParamError{"min_impact_velocity", p.min_impact_velocity, "must be > 0 (m/s)"};
   }
@@ -113,17 +127,26 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
   if (s.depth <= 0.0) return f;
 
   // spring and damper of the law
-  if (Law(p.kind).family == LawFamily::kLinear) {
-    const double c = p.damping ? *p.damping
-                               : KelvinVoigtDamping(p.linear_stiffness, s.effective_mass,
-                                                    p.restitution);
-    f.elastic = p.linear_stiffness * s.depth;
-    f.total = KelvinVoigtForce(p.linear_stiffness, c, s.depth, s.depth_rate);
-  } else {
-    const double a = HysteresisCoefficient(p.kind, p.restitution);
-    f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
-    f.total = HysteresisForce(p.stiffness, p.exponent, a, s.depth, s.depth_rate,
-                              s.impact_velocity);
+  switch (Law(p.kind).family) {
+    case LawFamily::kLinear: {
+      const double c = p.damping ? *p.damping
+                                 : KelvinVoigtDamping(p.linear_stiffness, s.effective_mass,
+                                                      p.restitution);
+      f.elastic = p.linear_stiffness * s.depth;
+      f.total = KelvinVoigtForce(p.linear_stiffness, c, s.depth, s.depth_rate);
+      break;
+    }
+    case LawFamily::kHysteresis: {
+      const double a = HysteresisCoefficient(p.kind, p.restitution);
+      f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
+      f.total = HysteresisForce(p.stiffness, p.exponent, a, s.depth, s.depth_rate,
+                                s.impact_velocity);
+      break;
+    }
+    case LawFamily::kConstantDissipation:
+      f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
+      f.total = DissipationForce(p.stiffness, p.exponent, *p.dissipation, s.depth, s.depth_rate);
+      break;
   }
 
   // a contact pushes, it does not pull

@@ -134,8 +134,23 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
   base.kind = overrides.law ? *overrides.law : *spec.law;
   const std::optional<double> restitution =
       overrides.restitution ? overrides.restitution : spec.restitution;
-  if (!restitution && !IsElastic(base.kind)) {
+  if (!restitution && ReadsRestitution(base.kind)) {
     resolve.Fail(fmt::format("missing key restitution (law={} needs it)", LawName(base.kind)));
+  }
+  // the dissipation of a law that reads it: the override, else the tag's
+  if (ReadsDissipation(base.kind)) {
+    base.dissipation = overrides.dissipation ? overrides.dissipation : spec.dissipation;
+    if (!base.dissipation) {
+      // a law given by an override (--law, --laws) cannot find it in the tag
+      // of another law: say where it can come from
+      resolve.Fail(fmt::format("missing key dissipation (law={} takes: {}){}", LawName(base.kind),
+                               Law(base.kind).parameters,
+                               overrides.law && *overrides.law != *spec.law
+                                   ? fmt::format("; the tag's law={} does not read it: give the "
+                                                 "dissipation override (--dissipation)",
+                                                 LawName(*spec.law))
+                                   : ""));
+    }
   }
   base.restitution = restitution.value_or(1.0);
   base.exponent = spec.exponent.value_or(1.5);
@@ -293,7 +308,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       pair.depth_limit = kDivergenceDepthFraction * size;
       pair.identity_tolerance = kContactIdentityFraction * size;
       // stiffness from materials, per pair: radii differ
-      if (spec.youngs1 && Law(base.kind).family == LawFamily::kHysteresis) {
+      if (spec.youngs1 && Law(base.kind).family != LawFamily::kLinear) {
         pair.params.stiffness = MaterialStiffness(m, g1, g2, spec, pair_name, resolve);
       }
       if (const std::optional<ParamError> e = ValidateLawParams(pair.params)) {

@@ -171,6 +171,9 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
     } else if (k == "damping") {
       spec.damping = ctx.Number(kv);
       if (*spec.damping < 0.0) ctx.FailValue(k, kv.value, "must be >= 0 (N s/m)");
+    } else if (k == "dissipation") {
+      spec.dissipation = ctx.Number(kv);
+      if (*spec.dissipation < 0.0) ctx.FailValue(k, kv.value, "must be >= 0 (s/m)");
     } else if (k == "min_impact_velocity") {
       spec.min_impact_velocity = ctx.Positive(kv, "m/s");
     } else if (k == "allow_tension") {
@@ -196,6 +199,11 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
   if (spec.geom1.empty()) ctx.Fail("missing key geom1");
   if (spec.geom2.empty()) ctx.Fail("missing key geom2");
   if (!spec.law) ctx.Fail("missing key law");
+  // a key only some laws read, on a law that does not: it would be ignored
+  if (spec.dissipation && !ReadsDissipation(*spec.law)) {
+    ctx.Fail(fmt::format("dissipation={} is not read by law={}, which takes: {}",
+                         *spec.dissipation, LawName(*spec.law), Law(*spec.law).parameters));
+  }
   const int materials = spec.youngs1.has_value() + spec.poisson1.has_value() +
                         spec.youngs2.has_value() + spec.poisson2.has_value();
   if (materials != 0 && materials != 4) {

@@ -24,11 +24,11 @@ namespace contactlaws {
 inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
 inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
 
-inline constexpr std::array<std::string_view, 14> kPairKeys = {
+inline constexpr std::array<std::string_view, 15> kPairKeys = {
     "geom1",         "geom2",    "law",      "restitution",
     "stiffness",     "exponent", "linear_stiffness", "damping",
-    "min_impact_velocity", "allow_tension", "youngs1", "poisson1",
-    "youngs2",       "poisson2"};
+    "dissipation",   "min_impact_velocity", "allow_tension", "youngs1",
+    "poisson1",      "youngs2",  "poisson2"};
 
 inline constexpr std::array<std::string_view, 6> kDriveKeys = {
     "body", "motion", "axis", "amplitude", "omega", "phase"};
@@ -45,6 +45,7 @@ struct PairTagSpec {
   std::optional<double> exponent;
   std::optional<double> linear_stiffness;
   std::optional<double> damping;
+  std::optional<double> dissipation;  // s/m, only with a law that reads it
   std::optional<double> min_impact_velocity;
   std::optional<bool> allow_tension;
   // materials: E in Pa (> 0), nu in (-1, 0.5); all four or none

@@ -85,6 +85,7 @@ LawParams PaperParams(LawKind kind) {
   params.stiffness = 1.4e8;
   params.exponent = 1.5;
   params.linear_stiffness = 5e6;
+  params.dissipation = 0.1;  // s/m, read by hunt-crossley-constant only
   return params;
 }
 
@@ -214,6 +215,7 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
         SimulationOptions options;
         options.overrides.law = law;
         options.overrides.restitution = e;
+        options.overrides.dissipation = 0.1;  // s/m, read by hunt-crossley-constant only
         std::unique_ptr<Simulation> sim = scene.Make(options);
         AdvanceOptions advance;
         advance.duration = 2.0;  // s: the first contact ends at ~0.45 s

@@ -61,18 +61,30 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
       {"compare " + kBall + " --laws flores --restitution 0,0.5",
        "contactlaws: " + kBall +
            ": contactlaw:ball-floor: restitution=0 must be in (0, 1] for flores"},
-      {"compare " + kBall + " --duration 0.01 --output-dir /etc/passwd/out",
+      {"compare " + kBall + " --dissipation 0.1 --duration 0.01 --output-dir /etc/passwd/out",
        "contactlaws: /etc/passwd/out: cannot create the output directory"},
       {"compare " + kBall + " --sample-rate 0", "contactlaws: --sample-rate=0 must be a number > 0"},
       {"restitution " + kBall + " --restitution 0:1:0",
        "contactlaws: --restitution=0:1:0 must have a step > 0 (start:stop:step)"},
       {"restitution " + kBall + " --restitution 0.5,1.5",
        "contactlaws: --restitution=0.5,1.5 has 1.5, outside [0, 1]"},
-      {"restitution " + kBall + " --output /nonexistent/dir/e.csv",
+      {"restitution " + kBall + " --dissipation 0.1 --output /nonexistent/dir/e.csv",
        "contactlaws: /nonexistent/dir/e.csv: cannot write"},
       {"check " + kBall + " --impact-velocity -1",
        "contactlaws: --impact-velocity=-1 must be a number > 0 (m/s)"},
       {"check " + kBall + " --law hooke", "contactlaws: --law=hooke is not a law"},
+      // the laws added after the paper: ranges and the dissipation
+      {"run " + kBall + " --law gonthier --restitution 0",
+       "contactlaws: " + kBall +
+           ": contactlaw:ball-floor: restitution=0 must be in (0, 1] for gonthier"},
+      {"run " + kBall + " --dissipation -1", "contactlaws: --dissipation=-1 must be >= 0 (s/m)"},
+      {"restitution " + kBall,
+       "contactlaws: " + kBall +
+           ": contactlaw:ball-floor: missing key dissipation (law=hunt-crossley-constant takes: "
+           "stiffness K (N/m^n) > 0, exponent n in [1, 3], dissipation c (s/m) >= 0); the tag's "
+           "law=flores does not read it: give the dissipation override (--dissipation)"},
+      {"check " + kBall + " --law hunt-crossley-constant",
+       "contactlaws: " + kBall + ": contactlaw:ball-floor: missing key dissipation"},
       {"check /nonexistent.xml", "contactlaws: /nonexistent.xml: "},
   };
   for (const auto& c : cases) {
@@ -118,8 +130,17 @@ TEST(CliTest, LawsListsEveryLaw) {
         "\nhunt-crossley\n  F = K d^n (1 + 3(1-e)/2 * d'/v0)\n",
         "\nlankarani-nikravesh\n  F = K d^n (1 + 3(1-e^2)/4 * d'/v0)\n",
         "\nflores\n  F = K d^n (1 + 8(1-e)/(5e) * d'/v0)\n", "Hunt, F. R. E. Crossley",
-        "restitution e in (0, 1]", "default 0.001 m/s"}) {
+        "restitution e in (0, 1]", "default 0.001 m/s",
+        // the effective restitution at the five points (docs/laws.md's table)
+        "\n  effective e: 0.9: 0.9009, 0.7: 0.7227, 0.5: 0.5936, 0.3: 0.5200, 0.1: 0.4907\n",
+        "\n  effective e: 0.9: 0.9000, 0.7: 0.7000, 0.5: 0.5000, 0.3: 0.3000, 0.1: 0.1000\n",
+        "\nhunt-crossley-constant\n  F = K d^n (1 + c d')\n",
+        "effective e: reads no e: ExactRebound(c v0), set by the impact speed"}) {
     EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  }
+  for (const LawInfo& law : Laws()) {
+    EXPECT_NE(r.output.find("\n" + std::string(law.name) + "\n  F = "), std::string::npos)
+        << law.name;
   }
 }
 
@@ -137,6 +158,13 @@ TEST(CliTest, LawsAsCsvGiveEachLawsCoefficientAndRebound) {
   EXPECT_NE(std::find(rows.begin(), rows.end(), "hertz,hysteresis,1,0,1"), rows.end());
   // no closed form for kelvin-voigt: empty fields
   EXPECT_NE(std::find(rows.begin(), rows.end(), "kelvin-voigt,linear,0.5,,"), rows.end());
+  // nor for hunt-crossley-constant: its rebound depends on the impact speed
+  EXPECT_NE(std::find(rows.begin(), rows.end(),
+                      "hunt-crossley-constant,constant-dissipation,0.5,,"),
+            rows.end());
+  // e = 0 outside gonthier's range: empty fields
+  EXPECT_NE(RunCli("laws --format csv --restitution 0").output.find("\ngonthier,hysteresis,0,,\n"),
+            std::string::npos);
 
   EXPECT_EQ(RunCli("laws --format yaml").output,
             "contactlaws: --format=yaml must be text or csv\n");
@@ -244,17 +272,20 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   EXPECT_EQ(r.output.find("[1/3]"), std::string::npos) << r.output;
 }
 
-TEST(CliTest, RestitutionSweepIsFiftyRows) {
+// Every law of the table at ten restitutions: a row each (hunt-crossley-constant
+// reads no e and runs with the dissipation at each, as hertz runs at each).
+TEST(CliTest, RestitutionSweepCoversEveryLaw) {
   const std::string out = ::testing::TempDir() + "/cli_sweep.csv";
   const Result r = RunCli("restitution " + TinyScene() +
-                          " --laws all --restitution 0.1:1.0:0.1 --output " + out);
+                          " --laws all --dissipation 0.1 --restitution 0.1:1.0:0.1 --output " + out);
   ASSERT_EQ(r.status, 0) << r.output;
   const std::vector<std::string> rows = Lines(ReadFile(out));
-  ASSERT_EQ(rows.size(), 51u);
+  ASSERT_EQ(rows.size(), 1 + 10 * Laws().size());
   EXPECT_EQ(rows[0], "law,restitution,restitution_post,impact_velocity,max_depth,max_force,"
                      "contact_duration");
   EXPECT_EQ(rows[1].rfind("hertz,0.1,", 0), 0u) << rows[1];
   EXPECT_EQ(rows[50].rfind("flores,1,", 0), 0u) << rows[50];
+  EXPECT_EQ(rows.back().rfind("hunt-crossley-constant,1,", 0), 0u) << rows.back();
   for (const std::string& row : rows) {
     EXPECT_EQ(row.find(",,"), std::string::npos) << "every first contact ended: " << row;
   }

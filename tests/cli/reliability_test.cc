@@ -299,10 +299,10 @@ TEST(ReliabilityTest, CtrlCDuringCompareLeavesTheFinishedRunsIntact) {
 TEST(ReliabilityTest, JobsDoNotChangeABite) {
   const std::string dir = ::testing::TempDir() + "/jobs";
   for (const char* jobs : {"1", "3"}) {
-    const Result r = RunCli("compare " + TinyScene() + " --laws all --restitution 0.4,0.8 " +
+    const Result r = RunCli("compare " + TinyScene() + " --laws all --dissipation 0.1 --restitution 0.4,0.8 " +
                             "--duration 0.1 --output-dir " + dir + jobs + " --jobs " + jobs);
     ASSERT_EQ(r.status, 0) << r.output;
-    const Result e = RunCli("restitution " + TinyScene() + " --laws all --restitution " +
+    const Result e = RunCli("restitution " + TinyScene() + " --laws all --dissipation 0.1 --restitution " +
                             "0.2:1:0.2 --output " + dir + jobs + "/e.csv --jobs " + jobs);
     ASSERT_EQ(e.status, 0) << e.output;
   }

@@ -11,9 +11,11 @@
 //      in the <custom> of a fixed scene (plane, spheres, a box, a capsule, geom
 //      groups, a mocap body, an explicit <pair>, an <exclude>), XML-escaped;
 //      the header's second character picks the integrator (e Euler, r RK4,
-//      i implicit), its third the command line's --law override (1 to 5:
-//      AllLaws()[n - 1]; anything else none) and its fourth the --restitution
-//      override (0 to 9: n / 9; anything else none); the scene is loaded, its
+//      i implicit), its third the command line's --law override (1 to 9,
+//      then a to z: AllLaws()[n - 1] when there is one; anything else none),
+//      its fourth the --restitution override (0 to 9: n / 9; anything else
+//      none) and its fifth the --dissipation override (0 to 9: n / 9 s/m;
+//      anything else none); the scene is loaded, its
 //      tags resolved, and when they are valid it is stepped a few times with
 //      its laws
 //   R  the same, but NAME and DATA go in raw: malformed XML, injected elements
@@ -196,11 +198,18 @@ std::string Replace(std::string text, std::string_view field, const std::string&
 void FuzzScene(bool raw, std::string_view header, std::string_view body) {
   const char integrator = header.size() > 1 ? header[1] : 'e';
   contactlaws::Overrides overrides;
-  if (header.size() > 2 && header[2] >= '1' && header[2] <= '5') {
-    overrides.law = contactlaws::AllLaws()[header[2] - '1'];
+  if (header.size() > 2) {
+    const char c = header[2];
+    const int law = c >= '1' && c <= '9' ? c - '1' : c >= 'a' && c <= 'z' ? 9 + (c - 'a') : -1;
+    if (law >= 0 && law < static_cast<int>(contactlaws::AllLaws().size())) {
+      overrides.law = contactlaws::AllLaws()[law];
+    }
   }
   if (header.size() > 3 && header[3] >= '0' && header[3] <= '9') {
     overrides.restitution = (header[3] - '0') / 9.0;
+  }
+  if (header.size() > 4 && header[4] >= '0' && header[4] <= '9') {
+    overrides.dissipation = (header[4] - '0') / 9.0;
   }
   // Raw input can inject any MJCF. A small <size nstack> makes MuJoCo's own
   // mj_step run out of stack (mju_error, then exit) with or without our

@@ -25,6 +25,7 @@ LawParams Hertzian(LawKind kind, double e) {
   p.restitution = e;
   p.stiffness = 1.4e8;
   p.exponent = 1.5;
+  p.dissipation = 0.2;  // s/m, read by the constant-dissipation family only
   return p;
 }
 
@@ -86,9 +87,10 @@ TEST(LawTest, NoForceOutOfContact) {
 }
 
 TEST(LawTest, HertzFamilyContinuousAtFirstTouch) {
-  // F -> 0 as d -> 0+, whatever the approach speed (unlike Kelvin-Voigt)
-  for (LawKind kind : {LawKind::kHertz, LawKind::kHuntCrossley,
-                       LawKind::kLankaraniNikravesh, LawKind::kFlores}) {
+  // F -> 0 as d -> 0+, whatever the approach speed (unlike Kelvin-Voigt):
+  // every law of the table but the linear one
+  for (LawKind kind : AllLaws()) {
+    if (Law(kind).family == LawFamily::kLinear) continue;
     const LawParams p = Hertzian(kind, 0.3);
     EXPECT_LT(Force(p, 1e-12, kV0), 1e-8) << LawName(kind);
     EXPECT_LT(Force(p, 1e-12, -kV0), 1e-8) << LawName(kind);
@@ -101,9 +103,10 @@ TEST(LawTest, HertzFamilyContinuousAtFirstTouch) {
 }
 
 TEST(LawTest, RestitutionOneIsHertz) {
+  // every law with an a(e): a(1) = 0
   const double hertz = Force(Hertzian(LawKind::kHertz, 1.0), kDepth, kRate);
-  for (LawKind kind : {LawKind::kHuntCrossley, LawKind::kLankaraniNikravesh,
-                       LawKind::kFlores}) {
+  for (LawKind kind : AllLaws()) {
+    if (Law(kind).family != LawFamily::kHysteresis || !ReadsRestitution(kind)) continue;
     EXPECT_EQ(HysteresisCoefficient(kind, 1.0), 0.0) << LawName(kind);
     EXPECT_EQ(Force(Hertzian(kind, 1.0), kDepth, kRate), hertz) << LawName(kind);
     EXPECT_EQ(Force(Hertzian(kind, 1.0), kDepth, -kRate), hertz) << LawName(kind);
@@ -182,6 +185,12 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   EXPECT_FALSE(error(kv).has_value());
   kv.damping = -2;
   EXPECT_EQ(error(kv)->key, "damping");
+
+  // a law that reads no e takes any: hunt-crossley-constant
+  p = Hertzian(*ParseLawName("hunt-crossley-constant"), 0.0);
+  EXPECT_FALSE(error(p).has_value());
+  p.dissipation.reset();
+  EXPECT_EQ(error(p)->requirement, "must be given, >= 0 (s/m), for hunt-crossley-constant");
 }
 
 }  // namespace

@@ -25,14 +25,13 @@ class SceneTest : public testing::MujocoTest {
 struct BadScene {
   const char* what;
   const char* custom;   // inside <custom>
-  const char* message;  // expected message after "bad.xml: "
+  std::string message;  // expected message after "bad.xml: "
   const char* extra = "";  // more MJCF inside <mujoco>
 };
 
 const BadScene kBadScenes[] = {
     {"unknown law", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hooke stiffness=1"/>)",
-     "contactlaw:p: law=hooke is not a law (hertz, kelvin-voigt, hunt-crossley, "
-     "lankarani-nikravesh, flores)"},
+     "contactlaw:p: law=hooke is not a law (" + LawNameList() + ")"},
     {"unknown key", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stifness=1"/>)",
      "contactlaw:p: unknown key 'stifness' (did you mean 'stiffness'?)"},
     {"missing geom2", R"(<text name="contactlaw:p" data="geom1=ball law=hertz stiffness=1"/>)",
@@ -57,6 +56,18 @@ const BadScene kBadScenes[] = {
      "contactlaw:p: stiffness=-3 must be > 0 (N/m^n)"},
     {"flores e = 0", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=flores restitution=0 stiffness=1"/>)",
      "contactlaw:p: restitution=0 must be in (0, 1] for flores"},
+    {"gonthier e = 0", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=gonthier restitution=0 stiffness=1"/>)",
+     "contactlaw:p: restitution=0 must be in (0, 1] for gonthier"},
+    {"exact e = 0", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=exact restitution=0 stiffness=1"/>)",
+     "contactlaw:p: restitution=0 must be in (0, 1] for exact"},
+    {"dissipation not read", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hunt-crossley restitution=0.5 dissipation=0.2 stiffness=1"/>)",
+     "contactlaw:p: dissipation=0.2 is not read by law=hunt-crossley, which takes: stiffness K "
+     "(N/m^n) > 0, exponent n in [1, 3], restitution e in [0, 1]"},
+    {"dissipation missing", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hunt-crossley-constant stiffness=1"/>)",
+     "contactlaw:p: missing key dissipation (law=hunt-crossley-constant takes: stiffness K "
+     "(N/m^n) > 0, exponent n in [1, 3], dissipation c (s/m) >= 0)"},
+    {"dissipation negative", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hunt-crossley-constant dissipation=-1 stiffness=1"/>)",
+     "contactlaw:p: dissipation=-1 must be >= 0 (s/m)"},
     {"poisson", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz youngs1=1e9 poisson1=0.5 youngs2=1e9 poisson2=0.3"/>)",
      "contactlaw:p: poisson1=0.5 must be in (-1, 0.5)"},
     {"kelvin-voigt without k", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=kelvin-voigt restitution=0.5 stiffness=1e8 exponent=1.5"/>)",
@@ -128,6 +139,30 @@ TEST_F(SceneTest, OverridesApplyBeforeValidation) {
     EXPECT_STREQ(e.what(),
                  "bouncing_ball.xml: contactlaw:ball-floor: restitution=0 must be in (0, 1] for "
                  "flores");
+  }
+}
+
+// The dissipation override is read by the laws that read it (the tag's is
+// refused on the others), and a law that needs it without it is refused.
+TEST_F(SceneTest, DissipationOverrideGoesToTheLawsThatReadIt) {
+  SimulationOptions options;
+  options.overrides.dissipation = 0.1;  // flores does not read it
+  EXPECT_FALSE(LoadScene("bouncing_ball.xml", options)
+                   .contact_model().pairs().at(0).params.dissipation.has_value());
+  options.overrides.law = ParseLawName("hunt-crossley-constant");
+  const LawParams& p = LoadScene("bouncing_ball.xml", options).contact_model().pairs().at(0).params;
+  EXPECT_EQ(p.dissipation, 0.1);
+  EXPECT_EQ(p.stiffness, 1.4e8);
+  options.overrides.dissipation.reset();
+  try {
+    LoadScene("bouncing_ball.xml", options);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "bouncing_ball.xml: contactlaw:ball-floor: missing key dissipation "
+                 "(law=hunt-crossley-constant takes: stiffness K (N/m^n) > 0, exponent n in "
+                 "[1, 3], dissipation c (s/m) >= 0); the tag's law=flores does not read it: "
+                 "give the dissipation override (--dissipation)");
   }
 }
 

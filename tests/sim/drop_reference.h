@@ -24,29 +24,42 @@ namespace contactlaws::testing {
 inline constexpr double kPaperSweep[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
 
 
-// The sweep as `contactlaws restitution` runs it: a scene, each (law, e) to
-// the end of its first contact episode.
-inline Impact SweepFirstImpact(const Scene& scene, LawKind law, double e,
-                        std::optional<double> timestep = std::nullopt,
-                        std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
-                        long* steps = nullptr) {
-  SimulationOptions options;
-  options.overrides.law = law;
-  options.overrides.restitution = e;
-  options.timestep = timestep;
+// The paper's five laws: the ones the independent integration below writes
+// out. The laws added since are held to the closed form (SweepTest).
+inline const std::vector<LawKind> kPaperLaws = {LawKind::kHertz, LawKind::kKelvinVoigt,
+                                                LawKind::kHuntCrossley,
+                                                LawKind::kLankaraniNikravesh, LawKind::kFlores};
+
+// The sweep as `contactlaws restitution` runs it: a scene with options (the
+// overrides of one run), to the end of its first contact episode.
+inline Impact SweepFirstImpact(const Scene& scene, const SimulationOptions& options,
+                               std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
+                               long* steps = nullptr) {
   std::unique_ptr<Simulation> sim = scene.Make(options);
   AdvanceOptions advance;
   advance.duration = 2.0;
   advance.until_first_episode = true;
   advance.auto_timestep = auto_timestep;
   const AdvanceResult result = Advance(sim.get(), advance, nullptr);
-  if (steps) *steps = auto_timestep ? result.steps : std::lround(sim->time() / *timestep);
+  if (steps) *steps = auto_timestep ? result.steps : std::lround(sim->time() / *options.timestep);
   const std::vector<Impact>& impacts = sim->contacts().impacts();
   if (impacts.empty() || impacts.front().open) {
-    ADD_FAILURE() << LawName(law) << " e = " << e << ": no closed first episode";
+    ADD_FAILURE() << LawName(*options.overrides.law) << ": no closed first episode";
     return Impact{};
   }
   return impacts.front();
+}
+
+// Each (law, e) of the sweep.
+inline Impact SweepFirstImpact(const Scene& scene, LawKind law, double e,
+                               std::optional<double> timestep = std::nullopt,
+                               std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
+                               long* steps = nullptr) {
+  SimulationOptions options;
+  options.overrides.law = law;
+  options.overrides.restitution = e;
+  options.timestep = timestep;
+  return SweepFirstImpact(scene, options, auto_timestep, steps);
 }
 
 // ---------------------------------------------------------------------------
