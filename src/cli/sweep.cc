@@ -109,6 +109,33 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
 
 }  // namespace
 
+namespace {
+
+// --laws all: a law that needs a dissipation nobody gave (neither the scene's
+// tags nor --dissipation) is left out with a warning, not refused; named in
+// --laws, it is refused as any bad input is.
+void LeaveOutLawsMissingADissipation(SweepInputs* in) {
+  if (in->common.simulation.overrides.dissipation) return;
+  std::vector<LawKind> kept;
+  for (const LawKind law : in->laws) {
+    if (ReadsDissipation(law)) {
+      try {
+        RunSpec spec{law, std::nullopt};
+        in->scene->Make(OptionsFor(in->common.simulation, spec));
+      } catch (const Error&) {
+        Warn(in->scene->path(), fmt::format("--laws all leaves out {}: it needs a dissipation "
+                                            "(give --dissipation, s/m)",
+                                            LawName(law)));
+        continue;
+      }
+    }
+    kept.push_back(law);
+  }
+  in->laws = std::move(kept);
+}
+
+}  // namespace
+
 SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restitutions) {
   SweepInputs in;
   in.common = ParseCommon(args);
@@ -119,6 +146,7 @@ SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restituti
         ParseRestitutionList("--restitution", args.restitution.value_or(default_restitutions));
   }
   in.scene = std::make_unique<Scene>(args.scene);
+  if (args.laws == "all") LeaveOutLawsMissingADissipation(&in);
   return in;
 }
 

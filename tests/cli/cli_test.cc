@@ -78,7 +78,7 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
        "contactlaws: " + kBall +
            ": contactlaw:ball-floor: restitution=0 must be in (0, 1] for gonthier"},
       {"run " + kBall + " --dissipation -1", "contactlaws: --dissipation=-1 must be >= 0 (s/m)"},
-      {"restitution " + kBall,
+      {"restitution " + kBall + " --laws hunt-crossley-constant",
        "contactlaws: " + kBall +
            ": contactlaw:ball-floor: missing key dissipation (law=hunt-crossley-constant takes: "
            "stiffness K (N/m^n) > 0, exponent n in [1, 3], dissipation c (s/m) >= 0); the tag's "
@@ -214,6 +214,27 @@ TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
     EXPECT_NEAR(std::stod(field(points[i], 13)), pair_force / 4, 1e-9 * pair_force) << points[i];
   }
   EXPECT_NE(r.output.find("collisions"), std::string::npos) << r.output;
+}
+
+// --laws all runs every law the scene and options can run: one that needs a
+// dissipation nobody gave is left out with one warning; named, it is refused.
+TEST(CliTest, AllLawsLeaveOutALawMissingItsDissipation) {
+  const Result all = RunCli("restitution " + kBall + " --restitution 0.5 --timestep auto --quiet");
+  ASSERT_EQ(all.status, 0) << all.output;
+  EXPECT_NE(all.output.find("warning: " + kBall + ": --laws all leaves out "
+                            "hunt-crossley-constant: it needs a dissipation (give "
+                            "--dissipation, s/m)"),
+            std::string::npos)
+      << all.output;
+  // the warning, the header, a row for every law but the one left out
+  EXPECT_EQ(Lines(all.output).size(), 1 + 1 + AllLaws().size() - 1) << all.output;
+  const Result named = RunCli("restitution " + kBall + " --laws hunt-crossley-constant");
+  EXPECT_EQ(named.status, 2) << named.output;
+  const Result given = RunCli("restitution " + kBall + " --restitution 0.5 --timestep auto "
+                              "--quiet --dissipation 0.1 --output -");
+  ASSERT_EQ(given.status, 0) << given.output;
+  EXPECT_NE(given.output.find("\nhunt-crossley-constant,0.5,"), std::string::npos)
+      << given.output;
 }
 
 // --columns picks the trajectory's groups; a bad group is named.
