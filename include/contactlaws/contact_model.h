@@ -115,6 +115,10 @@ class ContactModel {
   const std::vector<Drive>& drives() const { return drives_; }
   // The most contact points of all pairs at once.
   int slot_count() const { return slot_count_; }
+  // One line per tag and pair type whose depth MuJoCo gives with a known
+  // limit (docs/geometry.md), "SOURCE: contactlaw:TAG: (g1, g2): REASON";
+  // pair types whose depth is wrong are refused instead.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   // The tagged pair of two geoms, in either order; -1 when untagged. O(1).
   int FindPair(int g1, int g2) const;
@@ -128,6 +132,10 @@ class ContactModel {
   // The geom pairs of one tag (appended to pairs_ and tag->pairs).
   void AddPairs(const PairTagSpec& spec, const LawParams& base, const TagResolver& resolve,
                 PairTag* tag);
+  // Refuses the pair when MuJoCo's depth for its geom types is wrong; warns
+  // (once per tag and type, warned_types) when it has a known limit.
+  void CheckDepth(int g1, int g2, const std::string& pair_name, const TagResolver& resolve,
+                  std::vector<int>* warned_types);
 
   const mjModel* model_;
   std::string source_;
@@ -138,6 +146,7 @@ class ContactModel {
   std::vector<uint8_t> geom_tagged_;     // fast reject in FindPair
   std::unordered_map<uint64_t, int> pair_index_;
   int slot_count_ = 0;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace contactlaws

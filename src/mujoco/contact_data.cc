@@ -10,6 +10,7 @@
 
 #include "contactlaws/kinematics.h"
 #include "mujoco/hooks.h"
+#include "mujoco/narrowphase.h"
 
 namespace contactlaws {
 namespace {
@@ -145,8 +146,7 @@ void ContactData::ApplyForces() {
 
     // MuJoCo's narrowphase: dist < 0 is penetration, frame[0..2] the normal
     // from geom[0] to geom[1], pos midway between the surfaces
-    mjfCollision collide = mjCOLLISIONFUNC[m_->geom_type[g0]][m_->geom_type[g1]];
-    const int count = std::min(collide(m_, d_, contacts_.data(), g0, g1, 0), pair.slots);
+    const int count = std::min(Collide(m_, d_, g0, g1, 0, contacts_.data()), pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];

@@ -15,6 +15,7 @@
 #include "contactlaws/model_io.h"
 #include "scene/model_queries.h"
 #include "scene/number.h"
+#include "scene/pair_trust.h"
 #include "scene/tags.h"
 
 namespace contactlaws {
@@ -38,9 +39,12 @@ class TagResolver {
   TagResolver(const mjModel* m, std::string_view source, std::string_view tag)
       : m_(m), source_(source), tag_(tag) {}
 
-  [[noreturn]] void Fail(std::string_view what) const {
-    throw Error(fmt::format("{}: {}{}: {}", source_, kPairTagPrefix, tag_, what));
+  // "SOURCE: contactlaw:TAG: WHAT"
+  std::string Message(std::string_view what) const {
+    return fmt::format("{}: {}{}: {}", source_, kPairTagPrefix, tag_, what);
   }
+
+  [[noreturn]] void Fail(std::string_view what) const { throw Error(Message(what)); }
 
   std::vector<int> Geoms(std::string_view key, const std::string& value,
                          bool* is_group) const {
@@ -268,6 +272,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
   const std::vector<int> set2 = resolve.Geoms("geom2", spec.geom2, &group2);
   const bool explicit_pair = !group1 && !group2;
   const int tag_index = static_cast<int>(tags_.size());
+  std::vector<int> warned_types;
   for (const int g1 : set1) {
     for (const int g2 : set2) {
       if (g1 == g2) {
@@ -281,6 +286,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
         if (explicit_pair) resolve.Fail(fmt::format("{}: {}", pair_name, problem));
         continue;
       }
+      CheckDepth(g1, g2, pair_name, resolve, &warned_types);
       if (IsExplicitPair(m, g1, g2)) {
         // the filter hook never sees <pair>: MuJoCo's constraint would stay
         resolve.Fail(fmt::format(
@@ -326,6 +332,26 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
     resolve.Fail(fmt::format("geom1={} geom2={} cover no pair of geoms that can touch",
                              spec.geom1, spec.geom2));
   }
+}
+
+void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,
+                              const TagResolver& resolve, std::vector<int>* warned_types) {
+  const int t1 = std::min(model_->geom_type[g1], model_->geom_type[g2]);
+  const int t2 = std::max(model_->geom_type[g1], model_->geom_type[g2]);
+  const DepthVerdict verdict = JudgeDepth(t1, t2);
+  // refused in a group too: skipped, the pair would fall back to MuJoCo's
+  // own contact unsaid
+  if (verdict.trust == DepthTrust::kRefused) {
+    resolve.Fail(fmt::format("{}: {}", pair_name, verdict.reason));
+  }
+  // warned once per tag and pair type, naming its first pair
+  const int type = t1 * mjNGEOMTYPES + t2;
+  if (verdict.trust != DepthTrust::kWarned ||
+      std::find(warned_types->begin(), warned_types->end(), type) != warned_types->end()) {
+    return;
+  }
+  warned_types->push_back(type);
+  warnings_.push_back(resolve.Message(fmt::format("{}: {}", pair_name, verdict.reason)));
 }
 
 int ContactModel::FindPair(int g1, int g2) const {

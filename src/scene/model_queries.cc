@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "contactlaws/contact_model.h"
+#include "geometry/box_box.h"
 
 namespace contactlaws {
 namespace {
@@ -29,6 +30,8 @@ int MaxContacts(int type1, int type2) {
       type1 == mjGEOM_ELLIPSOID || type2 == mjGEOM_ELLIPSOID) {
     return 1;
   }
+  // box-box is contactlaws' own (mujoco/narrowphase.h): the patch's vertices
+  if (type1 == mjGEOM_BOX && type2 == mjGEOM_BOX) return kMaxBoxBoxPoints;
   return mjMAXCONPAIR;
 }
 

@@ -17,7 +17,8 @@ namespace contactlaws {
 std::string_view TextName(const mjModel* m, int i);
 std::string_view TextData(const mjModel* m, int i);
 
-// Most contact points MuJoCo's narrowphase returns for two geom types.
+// Most contact points the narrowphase (mujoco/narrowphase.h) returns for two
+// geom types.
 int MaxContacts(int type1, int type2);
 
 // Sphere-equivalent radius for the material stiffness (paper eq. 2): a

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contactlaws/hertz.h"
+#include "mujoco/narrowphase.h"
 
 namespace contactlaws {
 namespace {
@@ -53,8 +54,7 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   mju_sub3(centres, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g0);
   const double reach = mju_norm3(centres) + m->geom_rbound[g0] + m->geom_rbound[g1] + 1.0;
   std::vector<mjContact> found(mjMAXCONPAIR);
-  mjfCollision collide = mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]];
-  const int count = collide(m, d, found.data(), g0, g1, reach);
+  const int count = Collide(m, d, g0, g1, reach, found.data());
   const mjContact* nearest = nullptr;
   for (int i = 0; i < count; ++i) {
     if (!nearest || found[i].dist < nearest->dist) nearest = &found[i];

@@ -1,0 +1,293 @@
+// Copyright contactlaws authors.
+
+#include "geometry/box_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contactlaws {
+namespace {
+
+// Edge axes of edges closer to parallel than this sine are skipped: their
+// cross product, normalised, carries round-off amplified by 1/sine, and two
+// nearly parallel edges touch as a face contact's clipped edge does.
+constexpr double kParallelSine = 1e-3;
+
+// An edge axis, or a face of box b, replaces the best face of box a only when
+// it separates more by this fraction of the largest half size: the axes that
+// coincide (the faces of two aligned boxes, and the edge products equal to
+// them) differ by round-off, ~1e-16 of the size amplified by up to
+// 1/kParallelSine, and the choice must not flicker between them.
+constexpr double kAxisTieFraction = 1e-11;
+
+// Room for the clipped polygon: each of the 4 clips adds at most one vertex
+// to a convex polygon; round-off on near-degenerate input could add more.
+constexpr int kClipCapacity = 64;
+
+Vector3 Add(const Vector3& a, const Vector3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vector3 Sub(const Vector3& a, const Vector3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vector3 Scale(const Vector3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double Dot(const Vector3& a, const Vector3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vector3 Cross(const Vector3& a, const Vector3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Axis i of the box (column i of its rotation), world frame.
+Vector3 Axis(const OrientedBox& box, int i) {
+  return {box.rotation[i], box.rotation[3 + i], box.rotation[6 + i]};
+}
+
+// Half the box's extent along unit direction n.
+double Radius(const OrientedBox& box, const Vector3& n) {
+  double r = 0;
+  for (int i = 0; i < 3; ++i) r += box.half[i] * std::fabs(Dot(Axis(box, i), n));
+  return r;
+}
+
+// One of the 15 axes: its direction from a towards b, and how far the boxes
+// are apart along it (< 0: their projections overlap by that much).
+struct Candidate {
+  Vector3 normal{};
+  double separation = -std::numeric_limits<double>::infinity();
+  BoxFeature feature = BoxFeature::kNone;
+  int i = -1;  // the axis of a that made it
+  int j = -1;  // the axis of b
+};
+
+Candidate Project(const OrientedBox& a, const OrientedBox& b, const Vector3& axis,
+                  BoxFeature feature, int i, int j) {
+  const double along = Dot(Sub(b.centre, a.centre), axis);
+  Candidate c;
+  c.normal = along < 0 ? Scale(axis, -1) : axis;
+  c.separation = std::fabs(along) - Radius(a, axis) - Radius(b, axis);
+  c.feature = feature;
+  c.i = i;
+  c.j = j;
+  return c;
+}
+
+double LargestHalf(const OrientedBox& a, const OrientedBox& b) {
+  return std::max({a.half[0], a.half[1], a.half[2], b.half[0], b.half[1], b.half[2]});
+}
+
+// The axis of least overlap (or largest separation): a face of a, else a
+// face of b, else an edge pair, each only when clearly better than the one
+// before (kAxisTieFraction).
+Candidate SeparatingAxis(const OrientedBox& a, const OrientedBox& b) {
+  const double tie = kAxisTieFraction * LargestHalf(a, b);
+  Candidate face_a, face_b, edge;
+  for (int k = 0; k < 3; ++k) {
+    const Candidate ca = Project(a, b, Axis(a, k), BoxFeature::kFaceOfA, k, -1);
+    if (ca.separation > face_a.separation) face_a = ca;
+    const Candidate cb = Project(a, b, Axis(b, k), BoxFeature::kFaceOfB, -1, k);
+    if (cb.separation > face_b.separation) face_b = cb;
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const Vector3 axis = Cross(Axis(a, i), Axis(b, j));
+      const double sine = std::sqrt(Dot(axis, axis));
+      if (sine < kParallelSine) continue;
+      const Candidate c = Project(a, b, Scale(axis, 1 / sine), BoxFeature::kEdgeEdge, i, j);
+      if (c.separation > edge.separation) edge = c;
+    }
+  }
+  const Candidate& face = face_b.separation > face_a.separation + tie ? face_b : face_a;
+  return edge.separation > face.separation + tie ? edge : face;
+}
+
+// Keeps the part of polygon in (n vertices) where sign * x[c] <= h.
+int Clip(const Vector3* in, int n, int c, double sign, double h, Vector3* out) {
+  int m = 0;
+  for (int k = 0; k < n && m < kClipCapacity - 1; ++k) {
+    const Vector3& p = in[k];
+    const Vector3& q = in[(k + 1) % n];
+    const double dp = sign * p[c] - h;
+    const double dq = sign * q[c] - h;
+    if (dp <= 0) out[m++] = p;
+    if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
+      out[m++] = Add(p, Scale(Sub(q, p), dp / (dp - dq)));
+    }
+  }
+  return m;
+}
+
+// Points of a patch in the reference face's frame (u, v, height along the
+// normal), merged and ordered.
+struct Patch {
+  std::array<Vector3, kClipCapacity> p{};
+  std::array<int, kClipCapacity> merged{};  // how many points each one stands for
+  int count = 0;
+
+  // Adds a point, or averages it into one closer than merge.
+  void Add(const Vector3& x, double merge) {
+    for (int k = 0; k < count; ++k) {
+      const Vector3 d = Sub(x, p[k]);
+      if (Dot(d, d) < merge * merge) {
+        const double w = 1.0 / ++merged[k];
+        p[k] = contactlaws::Add(Scale(p[k], 1 - w), Scale(x, w));
+        return;
+      }
+    }
+    p[count] = x;
+    merged[count++] = 1;
+  }
+
+  // The deepest kMaxBoxBoxPoints (a convex patch never has more), ordered by
+  // angle about their centre, from the first axis.
+  void Order() {
+    std::sort(p.begin(), p.begin() + count, [](const Vector3& x, const Vector3& y) {
+      return x[2] < y[2];
+    });
+    count = std::min(count, kMaxBoxBoxPoints);
+    double cu = 0, cv = 0;
+    for (int k = 0; k < count; ++k) {
+      cu += p[k][0] / count;
+      cv += p[k][1] / count;
+    }
+    std::sort(p.begin(), p.begin() + count, [&](const Vector3& x, const Vector3& y) {
+      return std::atan2(x[1] - cv, x[0] - cu) < std::atan2(y[1] - cv, y[0] - cu);
+    });
+  }
+
+  // Drops, one at a time, the vertex nearest the chord of its two neighbours
+  // while it is nearer than merge (and more than 3 remain): a vertex on a
+  // straight edge adds a point, not a shape.
+  void Simplify(double merge) {
+    while (count > 3) {
+      int drop = -1;
+      double nearest = merge;
+      for (int k = 0; k < count; ++k) {
+        const double d = ChordDistance(p[(k + count - 1) % count], p[k], p[(k + 1) % count]);
+        if (d < nearest) {
+          nearest = d;
+          drop = k;
+        }
+      }
+      if (drop < 0) return;
+      std::copy(p.begin() + drop + 1, p.begin() + count, p.begin() + drop);
+      --count;
+    }
+  }
+
+  // Distance of x from the segment a-b.
+  static double ChordDistance(const Vector3& a, const Vector3& x, const Vector3& b) {
+    const Vector3 ab = Sub(b, a);
+    const double length2 = Dot(ab, ab);
+    const double t = length2 > 0 ? std::clamp(Dot(Sub(x, a), ab) / length2, 0.0, 1.0) : 0.0;
+    const Vector3 off = Sub(x, contactlaws::Add(a, Scale(ab, t)));
+    return std::sqrt(Dot(off, off));
+  }
+};
+
+// The face contact: ref's face with outward normal n (towards inc) against
+// the face of inc most opposed to it.
+void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const OrientedBox& inc,
+                 double margin, double merge, BoxBoxContact* out) {
+  // the reference face: centre f, in-plane axes u, v with half sizes hu, hv
+  const Vector3 f = Add(ref.centre, Scale(n, ref.half[k]));
+  const Vector3 u = Axis(ref, (k + 1) % 3);
+  const Vector3 v = Axis(ref, (k + 2) % 3);
+  const double hu = ref.half[(k + 1) % 3];
+  const double hv = ref.half[(k + 2) % 3];
+
+  // the incident face: the face of inc whose outward normal is most against n
+  int j = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (std::fabs(Dot(Axis(inc, i), n)) > std::fabs(Dot(Axis(inc, j), n))) j = i;
+  }
+  const double side = Dot(Axis(inc, j), n) > 0 ? -1.0 : 1.0;
+  const Vector3 g = Add(inc.centre, Scale(Axis(inc, j), side * inc.half[j]));
+  const Vector3 p = Scale(Axis(inc, (j + 1) % 3), inc.half[(j + 1) % 3]);
+  const Vector3 q = Scale(Axis(inc, (j + 2) % 3), inc.half[(j + 2) % 3]);
+  const Vector3 corners[4] = {Add(g, Add(p, q)), Add(g, Sub(q, p)), Sub(g, Add(p, q)),
+                              Add(g, Sub(p, q))};
+
+  // its corners in the reference face's frame, clipped to the face's sides
+  std::array<Vector3, kClipCapacity> poly, next;
+  for (int c = 0; c < 4; ++c) {
+    const Vector3 r = Sub(corners[c], f);
+    poly[c] = {Dot(r, u), Dot(r, v), Dot(r, n)};
+  }
+  int count = 4;
+  const double bounds[2] = {hu, hv};
+  for (int c = 0; c < 2; ++c) {
+    for (const double sign : {1.0, -1.0}) {
+      count = Clip(poly.data(), count, c, sign, bounds[c], next.data());
+      std::swap(poly, next);
+    }
+  }
+
+  // the vertices below the reference plane (height -depth), midway points
+  Patch patch;
+  for (int c = 0; c < count; ++c) {
+    if (-poly[c][2] > -margin) patch.Add(poly[c], merge);
+  }
+  patch.Order();
+  patch.Simplify(merge);
+  for (int c = 0; c < patch.count; ++c) {
+    const Vector3& x = patch.p[c];
+    BoxPoint& point = out->points[c];
+    point.pos = Add(Add(f, Add(Scale(u, x[0]), Scale(v, x[1]))), Scale(n, 0.5 * x[2]));
+    point.depth = -x[2];
+  }
+  out->count = patch.count;
+}
+
+// The edge-edge contact along normal (a towards b): the middle of the closest
+// points of a's edge along axis i and b's edge along axis j.
+void EdgeContact(const OrientedBox& a, int i, const OrientedBox& b, int j, const Vector3& normal,
+                 double margin, BoxBoxContact* out) {
+  // each box's edge nearest the other: a's extreme along +normal, b's along -normal
+  Vector3 ea = a.centre;
+  Vector3 eb = b.centre;
+  for (int k = 0; k < 3; ++k) {
+    if (k != i) ea = Add(ea, Scale(Axis(a, k), Dot(Axis(a, k), normal) >= 0 ? a.half[k] : -a.half[k]));
+    if (k != j) eb = Add(eb, Scale(Axis(b, k), Dot(Axis(b, k), normal) > 0 ? -b.half[k] : b.half[k]));
+  }
+  // closest points of the lines ea + s da and eb + t db, clamped to the edges
+  const Vector3 da = Axis(a, i);
+  const Vector3 db = Axis(b, j);
+  const Vector3 w = Sub(ea, eb);
+  const double c = Dot(da, db);
+  const double wa = Dot(da, w);
+  const double wb = Dot(db, w);
+  const double denominator = 1 - c * c;  // >= kParallelSine^2
+  const double s = std::clamp((c * wb - wa) / denominator, -a.half[i], a.half[i]);
+  const double t = std::clamp((wb - c * wa) / denominator, -b.half[j], b.half[j]);
+  const Vector3 pa = Add(ea, Scale(da, s));
+  const Vector3 pb = Add(eb, Scale(db, t));
+  const double depth = Dot(Sub(pa, pb), normal);
+  if (!(depth > -margin)) return;
+  out->points[0] = {Scale(Add(pa, pb), 0.5), depth};
+  out->count = 1;
+}
+
+}  // namespace
+
+BoxBoxContact CollideBoxes(const OrientedBox& a, const OrientedBox& b, double margin) {
+  BoxBoxContact out;
+  const Candidate axis = SeparatingAxis(a, b);
+  if (!(axis.separation < margin)) return out;
+  out.feature = axis.feature;
+  out.normal = axis.normal;
+  const double merge = kBoxPointMergeFraction * std::min({a.half[0], a.half[1], a.half[2],
+                                                          b.half[0], b.half[1], b.half[2]});
+  switch (axis.feature) {
+    case BoxFeature::kFaceOfA:
+      FaceContact(a, axis.i, axis.normal, b, margin, merge, &out);
+      break;
+    case BoxFeature::kFaceOfB:
+      FaceContact(b, axis.j, Scale(axis.normal, -1), a, margin, merge, &out);
+      break;
+    case BoxFeature::kEdgeEdge:
+      EdgeContact(a, axis.i, b, axis.j, axis.normal, margin, &out);
+      break;
+    case BoxFeature::kNone:
+      break;
+  }
+  if (out.count == 0) out.feature = BoxFeature::kNone;
+  return out;
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,25 @@
+// Copyright contactlaws authors.
+//
+// The narrowphase the laws are given: contactlaws' own box-box contact
+// (geometry/box_box.h: full depths, the vertices of the contact patch, none
+// repeated), MuJoCo's mjCOLLISIONFUNC for every other pair of geom types.
+// MuJoCo 2.2.2's box-box halves its face contacts' depths and repeats or
+// misplaces points (docs/geometry.md).
+
+#ifndef CONTACTLAWS_MUJOCO_NARROWPHASE_H_
+#define CONTACTLAWS_MUJOCO_NARROWPHASE_H_
+
+#include <mujoco/mujoco.h>
+
+namespace contactlaws {
+
+// The contacts of geoms g0 and g1 (geom_type[g0] <= geom_type[g1], as
+// mjCOLLISIONFUNC wants, and a pair it collides) closer than margin (m), in
+// out (room for mjMAXCONPAIR). Returns their count. Each has what MuJoCo's
+// collision functions fill: dist (< 0 overlapping, m), pos midway between the
+// surfaces, frame[0..2] the unit normal from g0 towards g1. Allocates nothing.
+int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_MUJOCO_NARROWPHASE_H_
