@@ -51,6 +51,13 @@ namespace contactlaws {
 // pair, so untagged pairs go through this copy of the rule.
 int DefaultContactFilter(const mjModel* m, int g1, int g2);
 
+// What did not fit in d->contact (m->nconmax entries in MuJoCo 2.2.2) over
+// the calls that shared this record (AppendVisibleContacts). The first point
+// dropped raises one warning (mju_warning), the rest are only counted.
+struct VisibleContactsOverflow {
+  long dropped = 0;
+};
+
 // The latest evaluation of one tag: its deepest contact point, and the sum of
 // the forces of all its points.
 struct TagReading {
@@ -78,7 +85,9 @@ class ContactData {
   void BeforeStep();
 
   // Commits the per-contact memory from the evaluation captured at the step's
-  // start state.
+  // start state, and lists the tagged contact points of the step's last
+  // evaluation in d->contact, outside the solver, for MuJoCo's visualisation
+  // (AppendVisibleContacts, visible_contacts.h).
   void AfterStep();
 
   // Forgets every episode, the energy ledger and any divergence. BeforeStep
@@ -184,6 +193,7 @@ class ContactData {
   std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
   std::optional<Divergence> divergence_;
 
+  VisibleContactsOverflow visible_overflow_;
   EpisodeLog episodes_;
   CollisionLog collisions_;
   DissipationLedger ledger_;

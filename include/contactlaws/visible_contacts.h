@@ -4,7 +4,8 @@
 // pairs are not in d->contact (the contact filter discards those pairs, so
 // that MuJoCo makes no constraint for them), and MuJoCo's visualisation
 // (mjv_updateScene with mjVIS_CONTACTPOINT) draws only what d->contact lists.
-// AppendVisibleContacts appends them after a step, excluded from the solver
+// AppendVisibleContacts appends them after a step (ContactData::AfterStep
+// calls it), excluded from the solver
 // (exclude = 1, "in gap", efc_address = -1), as MuJoCo itself lists a contact
 // within a geom's gap: mjv_updateScene draws the point in the contactgap
 // colour and no force (the force is ours, not the solver's). The next
@@ -19,13 +20,6 @@
 #include "contactlaws/contact_data.h"
 
 namespace contactlaws {
-
-// What did not fit in d->contact (m->nconmax entries in MuJoCo 2.2.2) over
-// the calls that shared this record. The first point dropped raises one
-// warning (mju_warning), the rest are only counted.
-struct VisibleContactsOverflow {
-  long dropped = 0;
-};
 
 // Appends each contact point of contacts.latest() (the tagged points of the
 // latest hook evaluation, depth > 0) to contacts.data()->contact: geoms of

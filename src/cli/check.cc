@@ -3,8 +3,11 @@
 #include "cli/commands.h"
 
 #include <cmath>
+#include <set>
 
 #include <fmt/format.h>
+
+#include "cli/report.h"
 
 #include "cli/impact_csv.h"
 
@@ -112,6 +115,8 @@ int CheckCommand(const CheckArgs& args) {
   }
   const Scene scene(args.scene);
   std::unique_ptr<Simulation> sim = scene.Make(options);
+  std::set<std::string> warned;
+  WarnAboutTags(sim->contact_model(), &warned);
   mj_forward(sim->model(), sim->data());
   PrintSettings(*sim);
   int coarse = 0;

@@ -6,6 +6,12 @@
 
 namespace contactlaws::cli {
 
+void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {
+  for (const std::string& w : model.warnings()) {
+    if (warned->insert(w).second) fmt::print(stderr, "contactlaws: warning: {}\n", w);
+  }
+}
+
 void Warn(const std::string& scene, const std::string& what) {
   fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
 }

@@ -7,6 +7,7 @@
 #define CONTACTLAWS_CLI_REPORT_H_
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ namespace contactlaws::cli {
 
 // "contactlaws: warning: SCENE: WHAT" on stderr.
 void Warn(const std::string& scene, const std::string& what);
+
+// The tags' own warnings (ContactModel::warnings: each names its file and
+// tag), once each: warned keeps what was printed.
+void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned);
 
 // The warnings a finished run leaves: energy growth, MuJoCo's own.
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -45,6 +46,8 @@ int RunCommand(const RunArgs& args) {
   }
   const Scene scene(args.scene);
   std::unique_ptr<Simulation> sim = scene.Make(options);
+  std::set<std::string> warned;
+  WarnAboutTags(sim->contact_model(), &warned);
 
   // open the outputs before the run: an unwritable path fails now
   std::optional<CsvFile> trajectory;

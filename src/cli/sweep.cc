@@ -176,6 +176,7 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
   std::vector<std::vector<TimestepAdvice>> advices;
   for (const RunSpec& spec : specs) {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
+    WarnAboutTags(sim->contact_model(), &warned);
     advices.push_back(AdviseTimestep(sim.get()));
     if (auto_timestep) continue;  // the steps will resolve the contacts
     for (const TimestepAdvice& advice : advices.back()) {

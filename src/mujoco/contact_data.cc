@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/kinematics.h"
+#include "contactlaws/visible_contacts.h"
 #include "mujoco/hooks.h"
 #include "mujoco/narrowphase.h"
 
@@ -278,6 +279,7 @@ void ContactData::CheckDivergence() {
 
 void ContactData::AfterStep() {
   capture_armed_ = false;
+  AppendVisibleContacts(*this, &visible_overflow_);
   CheckDivergence();
   const bool commit = has_capture_ && !divergence_;
   has_capture_ = false;

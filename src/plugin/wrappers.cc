@@ -65,8 +65,7 @@ ManagedData* Managed(const Nesting& nesting, const mjData* d) {
 }
 
 void Finish(ManagedData* managed) {
-  managed->contacts.AfterStep();
-  AppendVisibleContacts(managed->contacts, &managed->overflow);
+  managed->contacts.AfterStep();  // lists the tagged points in d->contact too
   Plugin::Get().ReportDivergence(managed);
 }
 

@@ -237,6 +237,28 @@ TEST(CliTest, AllLawsLeaveOutALawMissingItsDissipation) {
       << given.output;
 }
 
+// A pair type whose depths MuJoCo gets only roughly is run, with one warning
+// naming the pair and the reason, by run and check alike.
+TEST(CliTest, AnUntrustedPairTypeIsWarnedAbout) {
+  const std::string scene = testing::WriteScene("can_on_box", R"(<mujoco>
+  <worldbody>
+    <body name="base" pos="0 0 0"><geom name="base" type="box" size="0.3 0.3 0.05"/></body>
+    <body name="can" pos="0 0 0.2"><freejoint/>
+      <geom name="can" type="cylinder" size="0.05 0.08" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:can-base"
+    data="geom1=can geom2=base law=hunt-crossley restitution=0.5 stiffness=1e7"/></custom>
+</mujoco>)");
+  for (const std::string command : {"run --duration 0.01 ", "check "}) {
+    const Result r = RunCli(command + scene);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("contactlaws: warning: " + scene +
+                            ": contactlaw:can-base: (can, base): "),
+              std::string::npos)
+        << command << ": " << r.output;
+  }
+}
+
 // --columns picks the trajectory's groups; a bad group is named.
 TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
   const Result r = RunCli("run " + kBall + " --duration 0.002 --columns pairs,energy --output -");
