@@ -8,6 +8,7 @@
 #ifndef CONTACTLAWS_CONTACT_MEMORY_H_
 #define CONTACTLAWS_CONTACT_MEMORY_H_
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,7 +25,8 @@ struct PointEvaluation {
   bool touch = false;  // episode < 0
   double depth = 0;
   double depth_rate = 0;
-  double impact_velocity = 0;  // the law's v0 (floored)
+  double impact_velocity = 0;  // the law's v0 (floored; Impact::max_approach_velocity)
+  double max_approach = 0;     // the episode's largest d' so far, this one included
   double touch_velocity = 0;   // touch: d' at the step before first touch
   double touch_power = 0;      // touch: the law's dissipated power at touch, W
   double force = 0;
@@ -53,8 +55,20 @@ struct Impact {
   double separation_velocity = 0; // -d' of the first state after it, m/s (closed only)
   double max_depth = 0;           // m
   double max_force = 0;           // N
-  // separation / impact depth rate (closed only)
-  double restitution_post() const { return separation_velocity / impact_velocity; }
+  // The largest approach rate d' while in contact, m/s, the touch's among
+  // them: an impact's is its touch speed (its rate only falls once its force
+  // acts); a contact between bodies that touched slowly before a pulse came
+  // through them (a chain: Newton's cradle) reaches far more. The laws take
+  // it as their v0 once it exceeds the touch speed, so that d'/v0 stays
+  // below 1 and the law does not turn plastic (d'/v0 in the hundreds).
+  double max_approach_velocity = 0;
+  // Compressed faster than it touched: max_approach_velocity > impact_velocity.
+  bool chained() const { return max_approach_velocity > impact_velocity; }
+  // separation / the largest approach speed (closed only): an impact's touch
+  // speed, a chained contact's pulse
+  double restitution_post() const {
+    return separation_velocity / std::max(impact_velocity, max_approach_velocity);
+  }
 };
 
 // The time a point touched, extrapolated back from its first evaluation at t:
@@ -83,6 +97,9 @@ class EpisodeLog {
   // OpenEpisodes order), set here for the one returned. -1 when none.
   int MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
                        uint64_t* taken) const;
+
+  // The largest approach rate committed for an open episode, m/s.
+  double MaxApproach(int episode) const { return impacts_[episode].max_approach_velocity; }
 
   // The open episodes of pair (indices in impacts()).
   const std::vector<int>& OpenEpisodes(int pair) const { return pair_open_[pair]; }

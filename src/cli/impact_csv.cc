@@ -11,9 +11,12 @@ const std::vector<Impact>& ImpactsOf(const ContactData& contacts, ImpactRows row
 }
 
 std::vector<std::string> ImpactColumns() {
-  return {"law", "restitution", "pair", "geom1", "geom2", "index", "points", "time_contact",
-          "time_separation", "impact_velocity", "separation_velocity", "restitution_post",
-          "max_depth", "max_force"};
+  return {"law",           "restitution",         "pair",
+          "geom1",         "geom2",               "index",
+          "points",        "time_contact",        "time_separation",
+          "impact_velocity", "separation_velocity", "max_approach_velocity",
+          "restitution_post", "chained",          "max_depth",
+          "max_force"};
 }
 
 std::string Field(double value) { return fmt::format("{}", value); }
@@ -37,7 +40,9 @@ std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impac
           if_closed(impact.time_separation),
           Field(impact.impact_velocity),
           if_closed(impact.separation_velocity),
+          Field(impact.max_approach_velocity),
           if_closed(impact.restitution_post()),
+          impact.chained() ? "1" : "0",
           Field(impact.max_depth),
           Field(impact.max_force)};
 }

@@ -19,6 +19,7 @@ void Warn(const std::string& scene, const std::string& what) {
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result) {
   std::vector<std::string> warnings;
   if (result.energy_growth) warnings.push_back(*result.energy_growth);
+  for (std::string& w : ChainedContactWarnings(sim)) warnings.push_back(std::move(w));
   for (const MujocoWarning& w : sim.Warnings()) {
     warnings.push_back(fmt::format("MuJoCo: {} ({} time{})", w.text, w.count,
                                    w.count == 1 ? "" : "s"));

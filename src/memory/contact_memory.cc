@@ -92,6 +92,7 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     Track& track = tracks_[index];
     impact.max_depth = std::max(impact.max_depth, e.depth);
     impact.max_force = std::max(impact.max_force, e.force);
+    impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
     track.last_commit = commits_;
     track.last_time = t;
     track.last_depth = e.depth;
@@ -149,6 +150,7 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
       const PointEvaluation& e = points[end];
       force += e.force;
       collision.max_depth = std::max(collision.max_depth, e.depth);
+      collision.max_approach_velocity = std::max(collision.max_approach_velocity, e.max_approach);
       // the points that open it: the earliest touch, the fastest approach
       if (opening && e.touch) {
         collision.time_contact = std::min(collision.time_contact, TouchTime(e, t));

@@ -211,9 +211,15 @@ PointEvaluation ContactData::Evaluate(int p, const mjContact& con, uint64_t* tak
     const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity,
                              state.impact_velocity, state.effective_mass};
     e.touch_power = EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
+    e.max_approach = e.touch_velocity;
   } else {
-    state.impact_velocity = std::max(episodes_.impacts()[open].impact_velocity,
-                                     pair.params.min_impact_velocity);
+    // v0: the touch speed, or the largest approach rate committed since, for
+    // a contact compressed faster than it touched (a pulse through touching
+    // bodies: contact_memory.h, Impact::chained)
+    const double committed = episodes_.MaxApproach(open);
+    state.impact_velocity = std::max({episodes_.impacts()[open].impact_velocity, committed,
+                                      pair.params.min_impact_velocity});
+    e.max_approach = std::max(committed, e.depth_rate);
   }
   e.impact_velocity = state.impact_velocity;
   const ContactForce f = EvaluateLaw(pair.params, state);

@@ -27,6 +27,7 @@ namespace {
 
 using testing::kBall;
 using testing::Lines;
+using testing::Split;
 using testing::ReadFile;
 using testing::Result;
 using testing::RunCli;
@@ -118,7 +119,8 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
   const std::string log = ReadFile(impacts);
   EXPECT_EQ(log.substr(0, log.find('\n')),
             "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
-            "impact_velocity,separation_velocity,restitution_post,max_depth,max_force");
+            "impact_velocity,separation_velocity,max_approach_velocity,restitution_post,chained,"
+            "max_depth,max_force");
   EXPECT_EQ(log.find("\nhunt-crossley,0.8,ball-floor,ball,floor,1,1,0.42"), log.find('\n'));
 }
 
@@ -197,21 +199,24 @@ TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
   const std::vector<std::string> collisions = Lines(ReadFile(dir + "/box.csv"));
   const std::vector<std::string> points = Lines(ReadFile(dir + "/box_points.csv"));
   ASSERT_GE(collisions.size(), 3u) << "the box lands and bounces";
-  // law,restitution,pair,geom1,geom2,index,points,...,max_force: each
-  // collision on four corners, each corner a row of its own
-  auto field = [](const std::string& row, int k) {
-    std::string::size_type at = 0;
-    for (int i = 0; i < k; ++i) at = row.find(',', at) + 1;
-    return row.substr(at, row.find(',', at) - at);
+  // each collision on four corners, each corner a row of its own
+  auto column = [&](const std::string& name) {
+    const std::vector<std::string> header = Split(collisions[0], ',');
+    return static_cast<int>(std::find(header.begin(), header.end(), name) - header.begin());
   };
+  auto field = [](const std::string& row, int k) { return Split(row, ',').at(k); };
   EXPECT_EQ(points.size() - 1, 4 * (collisions.size() - 1));
-  for (size_t i = 1; i < collisions.size(); ++i) EXPECT_EQ(field(collisions[i], 6), "4");
-  for (size_t i = 1; i < points.size(); ++i) EXPECT_EQ(field(points[i], 6), "1");
+  for (size_t i = 1; i < collisions.size(); ++i) {
+    EXPECT_EQ(field(collisions[i], column("points")), "4");
+  }
+  for (size_t i = 1; i < points.size(); ++i) EXPECT_EQ(field(points[i], column("points")), "1");
   // the first collision's largest force is the four corners' together: each
   // corner carries a quarter (the box lands flat), to the rounding of the sum
-  const double pair_force = std::stod(field(collisions[1], 13));
+  const int max_force = column("max_force");
+  const double pair_force = std::stod(field(collisions[1], max_force));
   for (size_t i = 1; i <= 4; ++i) {
-    EXPECT_NEAR(std::stod(field(points[i], 13)), pair_force / 4, 1e-9 * pair_force) << points[i];
+    EXPECT_NEAR(std::stod(field(points[i], max_force)), pair_force / 4, 1e-9 * pair_force)
+        << points[i];
   }
   EXPECT_NE(r.output.find("collisions"), std::string::npos) << r.output;
 }
@@ -296,7 +301,8 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   ASSERT_GE(impacts.size(), 4u);
   EXPECT_EQ(impacts[0],
             "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
-            "impact_velocity,separation_velocity,restitution_post,max_depth,max_force");
+            "impact_velocity,separation_velocity,max_approach_velocity,restitution_post,chained,"
+            "max_depth,max_force");
   EXPECT_EQ(impacts[1].rfind("hertz,1,ball-floor,ball,floor,1,1,0.04", 0), 0u) << impacts[1];
 
   const std::vector<std::string> summary = Lines(ReadFile(dir + "/summary.csv"));

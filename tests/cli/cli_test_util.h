@@ -92,6 +92,19 @@ inline std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
+// The fields of one CSV line (no quoting).
+inline std::vector<std::string> Split(const std::string& line, char separator) {
+  std::vector<std::string> fields(1);
+  for (const char c : line) {
+    if (c == separator) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
 }  // namespace contactlaws::testing
 
 #endif  // CONTACTLAWS_TESTS_CLI_CLI_TEST_UTIL_H_

@@ -1,0 +1,23 @@
+// Copyright contactlaws authors.
+//
+// What a finished run has to say about its contacts beyond the impact log.
+
+#ifndef CONTACTLAWS_RUN_REPORT_H_
+#define CONTACTLAWS_RUN_REPORT_H_
+
+#include <string>
+#include <vector>
+
+#include "contactlaws/simulation.h"
+
+namespace contactlaws {
+
+// One line per pair with chained collisions (Impact::chained: touched slowly,
+// then compressed far faster, as touching bodies are when a pulse comes
+// through): the pair, how many, the first one's touch speed and largest
+// approach rate, and what the library did about it.
+std::vector<std::string> ChainedContactWarnings(const Simulation& sim);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_RUN_REPORT_H_
