@@ -23,6 +23,9 @@ struct PointEvaluation {
   // the point sits on the two bodies; -1: none, this evaluation is its touch.
   int episode = -1;
   bool touch = false;  // episode < 0
+  // a touch with no earlier state: the contact was there when the run (or the
+  // memory) started; it touched at that time, at its rate then
+  bool at_start = false;
   double depth = 0;
   double depth_rate = 0;
   double impact_velocity = 0;  // the law's v0 (floored; Impact::max_approach_velocity)
@@ -72,7 +75,9 @@ struct Impact {
 };
 
 // The time a point touched, extrapolated back from its first evaluation at t:
-// the depth was reached at the mean of the touch and current rates.
+// the depth was reached at the mean of the touch and current rates; t itself
+// for a contact there at the start (PointEvaluation::at_start), and when the
+// rates give no time.
 double TouchTime(const PointEvaluation& e, double t);
 
 // Sum of the dissipated power of points, W.

@@ -37,6 +37,9 @@ std::string ObjectName(const mjModel* m, mjtObj type, int id);
 // The mjVERSION_HEADER of the MuJoCo library this process runs (222 = 2.2.2).
 int MujocoVersion();
 
+// This library's version ("0.1.0").
+std::string_view LibraryVersion();
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_MODEL_IO_H_

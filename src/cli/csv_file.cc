@@ -6,11 +6,24 @@
 #include <cmath>
 #include <cstring>
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
 
 namespace contactlaws::cli {
+
+bool SamePath(const std::string& a, const std::string& b) {
+  if (a == "-" || b == "-") return a == b;
+  std::error_code code;
+  if (std::filesystem::equivalent(a, b, code)) return true;
+  const auto normal = [](const std::string& path) {
+    std::error_code ignored;
+    return std::filesystem::absolute(path, ignored).lexically_normal();
+  };
+  return normal(a) == normal(b);
+}
 
 void AppendFields(std::string* out, const std::vector<std::string>& fields) {
   for (size_t i = 0; i < fields.size(); ++i) {
@@ -41,7 +54,8 @@ bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
   }
   for (size_t i = 0; i < values.size(); ++i) {
     if (i) *out += ',';
-    fmt::format_to(std::back_inserter(*out), "{}", values[i]);
+    // -0 is written 0
+    fmt::format_to(std::back_inserter(*out), "{}", values[i] == 0 ? 0.0 : values[i]);
   }
   *out += '\n';
   return true;

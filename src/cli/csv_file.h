@@ -25,6 +25,10 @@ void AppendFields(std::string* out, const std::vector<std::string>& fields);
 bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
                const std::vector<double>& values);
 
+// Whether two output paths name one file ("-" is standard output; a file
+// that does not exist yet is compared by its absolute, normal path).
+bool SamePath(const std::string& a, const std::string& b);
+
 class CsvFile {
  public:
   // Throws Error "PATH: cannot write (reason)".

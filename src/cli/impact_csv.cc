@@ -2,6 +2,8 @@
 
 #include "cli/impact_csv.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace contactlaws::cli {
@@ -19,7 +21,11 @@ std::vector<std::string> ImpactColumns() {
           "max_force"};
 }
 
-std::string Field(double value) { return fmt::format("{}", value); }
+std::string Field(double value) {
+  // no -0, inf or nan in a CSV: -0 is 0, and what is not finite is not known
+  if (!std::isfinite(value)) return "";
+  return fmt::format("{}", value == 0 ? 0.0 : value);
+}
 
 std::string Field(const std::optional<double>& value) { return value ? Field(*value) : ""; }
 

@@ -226,6 +226,11 @@ int Main(int argc, char** argv) {
                "contactlaws"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every command");
+  app.set_version_flag("--version",
+                       fmt::format("contactlaws {} (MuJoCo {}.{}.{})", LibraryVersion(),
+                                   MujocoVersion() / 100, MujocoVersion() / 10 % 10,
+                                   MujocoVersion() % 10),
+                       "the library's version and MuJoCo's");
   Commands commands;
   commands.restitution.duration = "2";
   AddRun(&app, &commands);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "scene/number.h"
+#include "scene/tags.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -105,7 +106,9 @@ CommonOptions ParseCommon(const CommonArgs& args) {
 
 LawKind ParseLaw(std::string_view option, std::string_view name) {
   const std::optional<LawKind> law = ParseLawName(name);
-  if (!law) Refuse(option, name, fmt::format("is not a law ({})", LawNameList()));
+  if (!law) {
+    Refuse(option, name, fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(name)));
+  }
   return *law;
 }
 
@@ -115,7 +118,8 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
   for (std::string_view name : Split(text, ',')) {
     const std::optional<LawKind> law = ParseLawName(name);
     if (!law) {
-      Refuse(option, text, fmt::format("has '{}', which is not a law (all, {})", name, LawNameList()));
+      Refuse(option, text, fmt::format("has '{}', which is not a law (all, {}){}", name,
+                                       LawNameList(), LawSuggestion(name)));
     }
     if (std::find(laws.begin(), laws.end(), *law) != laws.end()) {
       Refuse(option, text, fmt::format("names {} twice", name));

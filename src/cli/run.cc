@@ -49,6 +49,10 @@ int RunCommand(const RunArgs& args) {
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
 
+  // one file is written by one writer
+  if (args.output && args.impacts && SamePath(*args.output, *args.impacts)) {
+    Refuse("--impacts", *args.impacts, "is the --output path too: give the two files two paths");
+  }
   // open the outputs before the run: an unwritable path fails now
   std::optional<CsvFile> trajectory;
   std::optional<CsvFile> impacts;

@@ -8,6 +8,7 @@
 namespace contactlaws {
 
 double TouchTime(const PointEvaluation& e, double t) {
+  if (e.at_start) return t;
   const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
   return mean_rate > 0 ? t - e.depth / mean_rate : t;
 }

@@ -203,6 +203,7 @@ PointEvaluation ContactData::Evaluate(int p, const mjContact& con, uint64_t* tak
   e.touch = open < 0;
   if (e.touch) {
     // v0: the rate at the step before first touch, which no force has slowed
+    e.at_start = !has_previous_;
     e.touch_velocity = has_previous_ ? ApproachRate(model_, d_, pair, con.pos, normal,
                                                     previous_qvel_.data(), previous_time_)
                                      : e.depth_rate;

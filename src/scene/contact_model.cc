@@ -91,6 +91,7 @@ ContactModel::ContactModel(const mjModel* m, std::string source,
     : model_(m), source_(std::move(source)) {
   body_drive_.assign(m->nbody, -1);
   geom_tagged_.assign(m->ngeom, 0);
+  for (int i = 0; i < m->ntext; ++i) CheckTagPrefix(source_, TextName(m, i));
   ReadDrives();
   ReadTags(overrides);
 }

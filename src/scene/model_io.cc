@@ -3,6 +3,8 @@
 #include "contactlaws/model_io.h"
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
 
@@ -25,6 +27,14 @@ std::string OneLine(const char* text) {
 }  // namespace
 
 UniqueModel LoadModelFile(const std::string& path) {
+  // plain words for the commonest mistakes, before MuJoCo's parser's
+  std::error_code code;
+  const std::filesystem::file_status status = std::filesystem::status(path, code);
+  if (!std::filesystem::exists(status)) throw Error(fmt::format("{}: no such file", path));
+  if (std::filesystem::is_directory(status)) {
+    throw Error(fmt::format("{}: is a directory, not an MJCF file", path));
+  }
+  if (!std::ifstream(path)) throw Error(fmt::format("{}: cannot be read", path));
   char error[1000] = "";
   UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
   if (!m) {
@@ -62,5 +72,7 @@ std::string ObjectName(const mjModel* m, mjtObj type, int id) {
 }
 
 int MujocoVersion() { return mj_version(); }
+
+std::string_view LibraryVersion() { return CONTACTLAWS_VERSION; }
 
 }  // namespace contactlaws

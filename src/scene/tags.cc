@@ -3,6 +3,7 @@
 #include "scene/tags.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -137,6 +138,40 @@ std::string_view NearestWord(std::string_view word,
   return best;
 }
 
+namespace {
+
+std::string Lower(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+}  // namespace
+
+std::string LawSuggestion(std::string_view name) {
+  std::vector<std::string_view> names;
+  for (const LawInfo& law : Laws()) names.push_back(law.name);
+  const std::string lower = Lower(name);
+  const std::string_view nearest = NearestWord(lower, names.data(), names.size());
+  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
+}
+
+void CheckTagPrefix(std::string_view source, std::string_view name) {
+  const size_t colon = name.find(':');
+  if (colon == std::string_view::npos) return;
+  const std::string_view prefix = name.substr(0, colon + 1);
+  if (prefix == kPairTagPrefix || prefix == kDriveTagPrefix) return;
+  const std::string_view kinds[] = {kPairTagPrefix.substr(0, kPairTagPrefix.size() - 1),
+                                    kDriveTagPrefix.substr(0, kDriveTagPrefix.size() - 1)};
+  const std::string lower = Lower(name.substr(0, colon));
+  // a typo: the letter case, or an edit or two (NearestWord's own measure)
+  std::string_view meant = lower == kinds[0] ? kinds[0] : lower == kinds[1] ? kinds[1] : "";
+  if (meant.empty()) meant = NearestWord(lower, kinds, 2);
+  if (meant.empty()) return;
+  throw Error(fmt::format("{}: {}: the tag prefix must be '{}:' (not '{}'), or the tag is not read",
+                          source, name, meant, prefix));
+}
+
 PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
                          std::string_view data) {
   TagContext ctx(source, name);
@@ -152,7 +187,8 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
     } else if (k == "law") {
       spec.law = ParseLawName(kv.value);
       if (!spec.law) {
-        ctx.FailValue(k, kv.value, fmt::format("is not a law ({})", LawNameList()));
+        ctx.FailValue(k, kv.value,
+                      fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(kv.value)));
       }
     } else if (k == "restitution") {
       spec.restitution = ctx.Number(kv);

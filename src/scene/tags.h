@@ -71,6 +71,15 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
 DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
                            std::string_view data);
 
+// ": did you mean 'hertz'?" for a name close to a law's (letter case aside),
+// else "".
+std::string LawSuggestion(std::string_view name);
+
+// Refuses (Error naming source and the tag) a <text> name whose prefix is
+// within a typo of contactlaw: or contactdrive: (ContactLaw:, contactlaws:),
+// which would otherwise leave the pair to MuJoCo without a word.
+void CheckTagPrefix(std::string_view source, std::string_view name);
+
 // The candidate closest to word by edit distance, for "did you mean" hints;
 // empty when nothing is close.
 std::string_view NearestWord(std::string_view word,

@@ -264,6 +264,32 @@ TEST(CliTest, AnUntrustedPairTypeIsWarnedAbout) {
   }
 }
 
+// A ball resting in contact when the run starts: its contact opens at t = 0
+// (not before), at its rate then; no CSV field is -0, inf or nan.
+TEST(CliTest, AContactOpenAtTheStartOpensThere) {
+  const std::string scene = testing::WriteScene(
+      "resting", testing::DropXml("law=hunt-crossley restitution=0.5 stiffness=1e8", 0.0,
+                                  "RK4", 1e-5, true, 1.0, 0.1 - 1e-6));
+  const std::string dir = ::testing::TempDir();
+  const Result r = RunCli("run " + scene + " --duration 0.02 --output " + dir +
+                          "/resting.csv --impacts " + dir + "/resting_impacts.csv");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> impacts = Lines(ReadFile(dir + "/resting_impacts.csv"));
+  ASSERT_GE(impacts.size(), 2u);
+  const std::vector<std::string> header = Split(impacts[0], ',');
+  const std::vector<std::string> first = Split(impacts[1], ',');
+  auto field = [&](const std::string& name) {
+    return first.at(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  EXPECT_EQ(field("time_contact"), "0") << impacts[1];
+  for (const char* file : {"/resting.csv", "/resting_impacts.csv"}) {
+    const std::string csv = ReadFile(dir + file);
+    for (const char* bad : {",-0,", ",-0\n", "inf", "nan"}) {
+      EXPECT_EQ(csv.find(bad), std::string::npos) << file << " has " << bad;
+    }
+  }
+}
+
 // --columns picks the trajectory's groups; a bad group is named.
 TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
   const Result r = RunCli("run " + kBall + " --duration 0.002 --columns pairs,energy --output -");

@@ -36,6 +36,41 @@ using testing::TagScene;
 using testing::TinyScene;
 using testing::WriteScene;
 
+// The first hour's mistakes: each named in one line before anything runs.
+TEST(ReliabilityTest, FirstHourMistakesAreNamedBeforeTheRun) {
+  const std::string dir = ::testing::TempDir();
+  // one path for the trajectory and the impact log
+  Result r = RunCli("run " + kBall + " --output " + dir + "/same.csv --impacts " + dir +
+                    "/./same.csv");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "contactlaws: --impacts=" + dir +
+                          "/./same.csv is the --output path too: give the two files two "
+                          "paths\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/same.csv")) << "nothing was run";
+  // a law's name in the wrong case, from the command line
+  r = RunCli("run " + kBall + " --law Hertz");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--law=Hertz is not a law ("), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("): did you mean 'hertz'?\n"), std::string::npos) << r.output;
+  // a file that is not there, or a directory
+  EXPECT_EQ(RunCli("run " + dir + "/no-such-scene.xml").output,
+            "contactlaws: " + dir + "/no-such-scene.xml: no such file\n");
+  EXPECT_EQ(RunCli("check " + dir).output,
+            "contactlaws: " + dir + ": is a directory, not an MJCF file\n");
+  // a scene with no tag runs MuJoCo's own contact, and says so
+  const std::string plain = WriteScene("untagged", TagScene(""));
+  r = RunCli("run " + plain + " --duration 0.001");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("contactlaws: warning: " + plain +
+                          ": no contactlaw: tags: MuJoCo's own contact acts on every pair"),
+            std::string::npos)
+      << r.output;
+  // the version of the library and of MuJoCo
+  r = RunCli("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output, "contactlaws " + std::string(LibraryVersion()) + " (MuJoCo 2.2.2)\n");
+}
+
 TEST(ReliabilityTest, EveryBadSceneIsRefusedByRunAndCheckWithTheSameLine) {
   const std::string ok = "geom1=ball geom2=floor law=hunt-crossley restitution=0.5 stiffness=1e8";
   const struct {
@@ -95,6 +130,16 @@ TEST(ReliabilityTest, EveryBadSceneIsRefusedByRunAndCheckWithTheSameLine) {
        TagScene(Tag(ok), R"(<contact><pair geom1="ball" geom2="floor"/></contact>)"),
        "contactlaw:t: (ball, floor) is also a <contact><pair>, which bypasses the contact "
        "filter"},
+      {"prefix_case", TagScene(R"(<text name="ContactLaw:t" data="geom1=ball geom2=floor"/>)"),
+       "ContactLaw:t: the tag prefix must be 'contactlaw:' (not 'ContactLaw:'), or the tag is "
+       "not read"},
+      {"prefix_typo", TagScene(R"(<text name="contactlaws:t" data="geom1=ball geom2=floor"/>)"),
+       "contactlaws:t: the tag prefix must be 'contactlaw:' (not 'contactlaws:')"},
+      {"drive_prefix_typo",
+       TagScene(Tag(ok) + R"(<text name="contactdrve:d" data="body=ball amplitude=1 omega=1"/>)"),
+       "contactdrve:d: the tag prefix must be 'contactdrive:' (not 'contactdrve:')"},
+      {"law_case", TagScene(Tag("geom1=ball geom2=floor law=Flores restitution=0.5 stiffness=1e8")),
+       "contactlaw:t: law=Flores is not a law ("},
       {"passive_disabled", TagScene(Tag(ok), R"(<option><flag passive="disable"/></option>)"),
        "<flag passive=\"disable\"/> turns off mjcb_passive"},
       {"contact_disabled", TagScene(Tag(ok), R"(<option><flag contact="disable"/></option>)"),
