@@ -46,8 +46,10 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
                   "s (default: the scene's), or auto: long steps while the tagged pairs are "
                   "apart, steps that resolve the contact near and in it (README)");
   AddNumber(cmd, "--max-timestep", &args->max_timestep,
-                  "s, with --timestep auto: the step while every tagged pair is far apart "
-                  "(default 0.001)");
+                  "s, with --timestep auto: an optional cap on every step (default: none)");
+  AddNumber(cmd, "--accuracy", &args->accuracy,
+            "with --timestep auto (implied): the relative error accepted in a collision's "
+            "rebound, peak force and duration, in (0, 0.1] (default 0.001)");
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
   AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
