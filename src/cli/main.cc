@@ -20,6 +20,7 @@
 
 #include "cli/commands.h"
 #include "contactlaws/contactlaws.h"
+#include "sim/arena.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -247,6 +248,7 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
+  UseHugePagesForLargeAllocations();  // the compiler's arena: start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
   InstallStopHandler();
