@@ -136,7 +136,10 @@ double AutoTimestep::FlightStep() const {
 
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   const double fine = FineStep(e.pair, e.impact_velocity);
-  if (!(e.depth_rate < 0)) return fine;
+  // a separation slower than the law's floor of v0 (a resting contact's
+  // chatter) is left to the fine step
+  const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
+  if (!(-e.depth_rate > floor)) return fine;
   const GeomPair& pair = contacts_.model().pairs()[e.pair];
   const double closing = GravityClosingAcceleration(contacts_.model(), pair, e.normal);
   const double overshoot = kSeparationOvershoot * fine;
@@ -192,7 +195,9 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
   // touch within a step would act for a fraction of it: an error of the
   // first order in the step)
   *fine = true;
-  const double touch = gap > 0 ? TimeToClose(gap, closing, accel) : 0.0;
+  // bounding spheres that overlap out of contact: no touch to predict
+  if (!(gap > 0)) return pair_fine;
+  const double touch = TimeToClose(gap, closing, accel);
   // first to just before the touch (the impact speed is read there, before
   // any force), then across it
   const double lead = kTouchOvershoot * pair_fine;
