@@ -25,8 +25,21 @@
 //      = g) when that comes within it: a force that jumps at d = 0+
 //      (Kelvin-Voigt's c v0) then acts from a step's start, not for an
 //      unknown part of a step.
-//   3. The step is the smallest asked for, within [fine, max_step], and grows
-//      at most by `growth` from one step to the next.
+//   3. A pair in contact that separates (depth rate < 0) and would reach
+//      d = 0 within its fine step asks for the step that ends just past
+//      d = 0: the first state after the separation, from which the impact
+//      log reads the separation speed, is then not slowed by gravity over
+//      a part of a fine step (a first-order error in the rebound).
+//   4. The step is the smallest asked for, at most max_step (none by
+//      default: free flight under gravity alone is a parabola, which RK4
+//      integrates exactly, so the gap closure of rule 2 is what limits it),
+//      and grows at most by `growth` from one step to the next. A scene with
+//      dynamics of its own (anything but free bodies, gravity, the tags and
+//      drives: joints with springs, damping or limits, actuators, tendons,
+//      equality constraints, untagged contacts) keeps its own opt.timestep
+//      as the flight step's bound: the author chose it for those dynamics.
+//      Under Euler or implicit integration the flight step is also bounded
+//      by the accuracy: they integrate a parabola with a first-order error.
 // Re-evaluated before every step, a pair's allowed step shrinks with its gap
 // geometrically, so the first touch comes within a fine step whatever the
 // approach speed. The fixed sample grid of a trajectory is kept by cutting
@@ -39,27 +52,56 @@
 #define CONTACTLAWS_AUTO_TIMESTEP_H_
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "contactlaws/contact_data.h"
 
 namespace contactlaws {
 
+// The accuracy the auto timestep delivers by default: the relative error
+// accepted in a collision's rebound (e_post), peak force and contact
+// duration. It reproduces the rule before --accuracy (20 steps per contact).
+inline constexpr double kDefaultAccuracy = 1e-3;
+// The steps per contact of the Hertz family at kDefaultAccuracy, and how
+// they grow: 50 (kDefaultAccuracy / accuracy)^0.45 (below).
+inline constexpr double kDefaultStepsPerContact = 50;
+inline constexpr double kStepsExponent = 0.45;
+
+// How the accuracy sets the steps (README, "The contact-aware timestep"):
+// steps per contact = 20 (tol0 / tol)^(1/2), tol0 = kDefaultAccuracy, for
+// the Hertz family: with its steps cut at touch and separation, RK4 has
+// errors of the second order or higher in the rebound, the duration (each
+// end extrapolated to d = 0) and the peak force (PeakForce), measured below
+// tol on the paper's sweep at tol = 1e-3, 1e-4, 1e-5 (auto_accuracy_test).
+// Kelvin-Voigt's clamp F >= 0 puts a kink inside its contact, which makes
+// its error about 1.65th order: 600 (tol0 / tol)^(2/3) steps.
+inline constexpr double kKelvinVoigtStepsAtDefault = 200;
+// The accepted range of accuracy (the option refuses what is outside).
+inline constexpr double kMaxAccuracy = 0.1;
+
 struct AutoTimestepOptions {
-  // s: the step while every tagged pair is far apart; also bounds the error
-  // of the rest of the scene's dynamics, so keep it what they need.
-  double max_step = 1e-3;
-  // Fine step = estimated contact duration / steps_per_contact. At 20 the
-  // paper's drop rebounds within 1.1e-4 of its 1e-5 s value (RK4, Hertz
-  // family); Kelvin-Voigt's force jumps at first touch, which makes its
-  // error first order in the step: it gets kelvin_voigt_steps_per_contact.
-  double steps_per_contact = 20;
-  double kelvin_voigt_steps_per_contact = 200;
+  // The relative error accepted in a collision's rebound, peak force and
+  // duration, in (0, kMaxAccuracy]: sets the steps per contact (above) and,
+  // under Euler or implicit integration, the flight step.
+  double accuracy = kDefaultAccuracy;
+  // s: an optional cap on every step (none by default: the dynamics bound
+  // the flight step, rule 4 above).
+  double max_step = std::numeric_limits<double>::infinity();
+  // Overrides of what the accuracy sets (0: from the accuracy): the fine
+  // step is the estimated contact duration / steps_per_contact (Hertz
+  // family) or / kelvin_voigt_steps_per_contact.
+  double steps_per_contact = 0;
+  double kelvin_voigt_steps_per_contact = 0;
   // A step may close at most this fraction of a pair's gap.
   double gap_fraction = 0.5;
   // A step is at most this many times the one before.
   double growth = 2.0;
 };
+
+// The steps per contact the accuracy asks for: Hertz family, Kelvin-Voigt.
+double StepsPerContact(double accuracy);
+double KelvinVoigtStepsPerContact(double accuracy);
 
 class AutoTimestep {
  public:
@@ -85,6 +127,12 @@ class AutoTimestep {
   long steps() const { return steps_; }
 
  private:
+  // The step a pair in contact allows at evaluation e: its fine step, cut to
+  // end just past d = 0 when it separates within it.
+  double ContactStep(const ContactData::Evaluation& e) const;
+  // The bound of the flight step: the scene's own timestep when it has
+  // dynamics of its own, the accuracy's under Euler or implicit.
+  double FlightStep() const;
   // The step pair p (out of contact) allows, from the current state: the
   // time to close a fraction of its gap, or the fine step when it is near
   // (then *fine is set), cut to end at its predicted touch.
@@ -94,6 +142,7 @@ class AutoTimestep {
 
   const ContactData& contacts_;
   AutoTimestepOptions options_;
+  double flight_step_;  // s, FlightStep() of the model as it was given
   // per pair: effective mass (kg, inf when neither body moves) and the
   // elastic contact duration at 1 m/s with its exponent of v
   std::vector<double> effective_mass_;

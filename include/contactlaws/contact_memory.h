@@ -74,6 +74,24 @@ struct Impact {
   }
 };
 
+// The largest force of a contact from its samples (once per step, at the
+// step's start): the largest sample and, where a sample is at least its two
+// neighbours, the vertex of the parabola through the three, the peak between
+// samples. A sample misses a smooth peak by O(h^2) of it, the vertex by
+// O(h^3): the peak force then meets the accuracy of the rebound at the same
+// step (auto_accuracy_test).
+class PeakForce {
+ public:
+  void Add(double t, double force);
+  double peak() const { return peak_; }
+
+ private:
+  double time_[2] = {0, 0};
+  double force_[2] = {0, 0};
+  int count_ = 0;
+  double peak_ = 0;
+};
+
 // The time a point touched, extrapolated back from its first evaluation at t:
 // the depth was reached at the mean of the touch and current rates; t itself
 // for a contact there at the start (PointEvaluation::at_start), and when the
@@ -132,6 +150,7 @@ class EpisodeLog {
     double last_time = 0;
     double last_depth = 0;
     double last_rate = 0;
+    PeakForce force;
     double last_pos[3] = {0, 0, 0};
     double last_normal[3] = {0, 0, 0};
     double local[2][3] = {{0, 0, 0}, {0, 0, 0}};  // where it sat on the bodies
@@ -172,6 +191,7 @@ class CollisionLog {
   std::vector<int> open_;       // pair -> its open collision, or -1
   std::vector<uint8_t> seen_;   // pair -> in contact at this commit (scratch)
   std::vector<int> tag_count_;  // collisions per tag
+  std::vector<PeakForce> force_;  // pair -> the peak of its open collision
   std::vector<Impact> impacts_;
 };
 

@@ -116,6 +116,8 @@ class Simulation {
   std::vector<MujocoWarning> Warnings() const;
 
  private:
+  // Reset(); fresh: the data is mj_makeData's, already at qpos0.
+  void Reset(bool fresh);
   // The bodies and joints whose columns the trajectory has.
   void RecordBodiesAndJoints();
 

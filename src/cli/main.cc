@@ -20,6 +20,7 @@
 
 #include "cli/commands.h"
 #include "contactlaws/contactlaws.h"
+#include "sim/arena.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -46,8 +47,10 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
                   "s (default: the scene's), or auto: long steps while the tagged pairs are "
                   "apart, steps that resolve the contact near and in it (README)");
   AddNumber(cmd, "--max-timestep", &args->max_timestep,
-                  "s, with --timestep auto: the step while every tagged pair is far apart "
-                  "(default 0.001)");
+                  "s, with --timestep auto: an optional cap on every step (default: none)");
+  AddNumber(cmd, "--accuracy", &args->accuracy,
+            "with --timestep auto (implied): the relative error accepted in a collision's "
+            "rebound, peak force and duration, in (0, 0.1] (default 0.001)");
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
   AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
@@ -250,6 +253,7 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
+  UseHugePagesForLargeAllocations();  // the compiler's arena: start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
   InstallStopHandler();

@@ -78,8 +78,10 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   CommonOptions options;
   options.duration = ParsePositive("--duration", args.duration, "s");
   options.sample_rate = ParsePositive("--sample-rate", args.sample_rate, "rows per simulated second");
-  const bool auto_timestep = args.timestep && *args.timestep == "auto";
-  if (args.timestep && !auto_timestep) {
+  // --accuracy alone asks for the auto timestep; with a fixed one it is refused
+  const bool fixed = args.timestep && *args.timestep != "auto";
+  const bool auto_timestep = (args.timestep && !fixed) || (!args.timestep && args.accuracy);
+  if (fixed) {
     if (!ParseNumber(*args.timestep)) {
       Refuse("--timestep", *args.timestep, "must be a number > 0 (s) or auto");
     }
@@ -90,11 +92,24 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     Refuse("--max-timestep", value ? fmt::format("{}", *value) : *args.max_timestep,
            "goes with --timestep auto");
   }
+  if (args.accuracy) {
+    const std::optional<double> value = ParseNumber(*args.accuracy);
+    if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
+      Refuse("--accuracy", value ? fmt::format("{}", *value) : *args.accuracy,
+             fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
+    }
+    if (fixed) {
+      Refuse("--accuracy", fmt::format("{}", *value),
+             fmt::format("goes with --timestep auto, not with the fixed --timestep={}",
+                         *args.timestep));
+    }
+  }
   if (auto_timestep) {
     options.auto_timestep.emplace();
     if (args.max_timestep) {
       options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
     }
+    if (args.accuracy) options.auto_timestep->accuracy = *ParseNumber(*args.accuracy);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);

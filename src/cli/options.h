@@ -22,6 +22,7 @@ struct CommonArgs {
   std::string duration = "2";
   std::optional<std::string> timestep;  // a number, or "auto"
   std::optional<std::string> max_timestep;  // with auto
+  std::optional<std::string> accuracy;  // auto's relative error; implies auto
   std::optional<std::string> integrator;
   std::string sample_rate = "1000";
   std::optional<std::string> columns;  // trajectory column groups

@@ -7,6 +7,29 @@
 
 namespace contactlaws {
 
+void PeakForce::Add(double t, double force) {
+  peak_ = std::max(peak_, force);
+  if (count_ == 2 && force_[1] >= force_[0] && force_[1] >= force && t > time_[1] &&
+      time_[1] > time_[0]) {
+    // Newton's form through (t0, f0), (t1, f1), (t, force)
+    const double d01 = (force_[1] - force_[0]) / (time_[1] - time_[0]);
+    const double d12 = (force - force_[1]) / (t - time_[1]);
+    const double c = (d12 - d01) / (t - time_[0]);
+    if (c < 0) {
+      const double vertex = 0.5 * (time_[0] + time_[1]) - d01 / (2 * c);
+      peak_ = std::max(peak_, force_[0] + d01 * (vertex - time_[0]) +
+                                  c * (vertex - time_[0]) * (vertex - time_[1]));
+    }
+  }
+  if (count_ == 2) {
+    time_[0] = time_[1];
+    force_[0] = force_[1];
+  }
+  time_[count_ == 2 ? 1 : count_] = t;
+  force_[count_ == 2 ? 1 : count_] = force;
+  count_ = std::min(count_ + 1, 2);
+}
+
 double TouchTime(const PointEvaluation& e, double t) {
   if (e.at_start) return t;
   const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
@@ -92,7 +115,8 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     Impact& impact = impacts_[index];
     Track& track = tracks_[index];
     impact.max_depth = std::max(impact.max_depth, e.depth);
-    impact.max_force = std::max(impact.max_force, e.force);
+    track.force.Add(t, e.force);
+    impact.max_force = track.force.peak();
     impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
     track.last_commit = commits_;
     track.last_time = t;
@@ -120,7 +144,7 @@ void EpisodeLog::Close(int index, double separation_velocity) {
 // ---------------------------------------------------------------------------
 
 CollisionLog::CollisionLog(int pairs, int tags)
-    : open_(pairs, -1), seen_(pairs, 0), tag_count_(tags, 0) {}
+    : open_(pairs, -1), seen_(pairs, 0), tag_count_(tags, 0), force_(pairs) {}
 
 void CollisionLog::Reset() {
   std::fill(open_.begin(), open_.end(), -1);
@@ -142,6 +166,7 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
       collision.points = 0;
       open_[pair] = static_cast<int>(impacts_.size());
       impacts_.push_back(collision);
+      force_[pair] = PeakForce();
     }
     Impact& collision = impacts_[open_[pair]];
     const bool opening = collision.points == 0;
@@ -158,7 +183,8 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
         collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
       }
     }
-    collision.max_force = std::max(collision.max_force, force);
+    force_[pair].Add(t, force);
+    collision.max_force = force_[pair].peak();
     collision.points = std::max(collision.points, static_cast<int>(end - first));
     seen_[pair] = 1;
     first = end;

@@ -10,6 +10,7 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
+#include "sim/arena.h"
 
 namespace contactlaws {
 namespace {
@@ -24,18 +25,74 @@ double TimeToClose(double g, double v, double a) {
   return kInfinity;
 }
 
+// The time in which a depth d (m, > 0) separating at speed v (> 0) reaches 0
+// under an acceleration a that closes the pair (gravity: > 0); infinite when
+// it does not.
+double TimeToSeparate(double d, double v, double a) {
+  if (a <= 0) return TimeToClose(d, v, -a);
+  const double discriminant = v * v - 2 * a * d;
+  if (discriminant < 0) return kInfinity;
+  return 2 * d / (v + std::sqrt(discriminant));  // the smaller root, without cancellation
+}
+
+// The step that ends at a predicted separation goes this fraction of a fine
+// step beyond it, so that it lands out of contact although the prediction
+// leaves out the law's force (small near d = 0): the separation speed then
+// carries gravity's slowing over 1e-3 of a fine step, not over up to a whole
+// fine step (a first-order error in the rebound).
+constexpr double kSeparationOvershoot = 1e-3;
+// Likewise the step that reaches a predicted touch ends this fraction of a
+// fine step past it, in contact, whatever the rounding of the prediction.
+constexpr double kTouchOvershoot = 1e-3;
+
+// Euler and implicit integrate a parabola with a first-order error: their
+// flight step is the step of the rule before --accuracy (1e-3 s at the
+// default accuracy) scaled by accuracy / kDefaultAccuracy.
+constexpr double kFirstOrderFlightStep = 1e-3;
+
+// True when the scene has dynamics of its own besides free bodies, gravity,
+// the tagged pairs and drives: their time scales are the scene's.
+bool HasOwnDynamics(const ContactModel& cm) {
+  const mjModel* m = cm.model();
+  if (m->nu || m->ntendon || m->neq || m->npair || m->opt.density > 0 || m->opt.viscosity > 0 ||
+      m->opt.wind[0] || m->opt.wind[1] || m->opt.wind[2] || mjcb_control) {
+    return true;
+  }
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_stiffness[j] > 0 || m->jnt_limited[j]) return true;
+  }
+  for (int v = 0; v < m->nv; ++v) {
+    if (m->dof_damping[v] > 0 || m->dof_frictionloss[v] > 0) return true;
+  }
+  return HasUntaggedContacts(cm);
+}
+
 }  // namespace
+
+double StepsPerContact(double accuracy) {
+  return kDefaultStepsPerContact * std::pow(kDefaultAccuracy / accuracy, kStepsExponent);
+}
+
+double KelvinVoigtStepsPerContact(double accuracy) {
+  return kKelvinVoigtStepsAtDefault * std::sqrt(kDefaultAccuracy / accuracy);
+}
 
 AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
     : contacts_(contacts), options_(options) {
-  if (!(options.max_step > 0) || !(options.steps_per_contact > 0) ||
-      !(options.kelvin_voigt_steps_per_contact > 0) || !(options.gap_fraction > 0) ||
-      !(options.gap_fraction < 1) || !(options.growth >= 1)) {
+  if (!(options.accuracy > 0 && options.accuracy <= kMaxAccuracy) || !(options.max_step > 0) ||
+      !(options.steps_per_contact >= 0) || !(options.kelvin_voigt_steps_per_contact >= 0) ||
+      !(options.gap_fraction > 0) || !(options.gap_fraction < 1) || !(options.growth >= 1)) {
     throw Error(fmt::format(
-        "AutoTimestepOptions: max_step {} and steps_per_contact {} must be > 0, gap_fraction {} "
-        "in (0, 1), growth {} >= 1",
-        options.max_step, options.steps_per_contact, options.gap_fraction, options.growth));
+        "AutoTimestepOptions: accuracy {} must be in (0, {}], max_step {} > 0, "
+        "steps_per_contact {} >= 0, gap_fraction {} in (0, 1), growth {} >= 1",
+        options.accuracy, kMaxAccuracy, options.max_step, options.steps_per_contact,
+        options.gap_fraction, options.growth));
   }
+  if (options_.steps_per_contact == 0) options_.steps_per_contact = StepsPerContact(options.accuracy);
+  if (options_.kelvin_voigt_steps_per_contact == 0) {
+    options_.kelvin_voigt_steps_per_contact = KelvinVoigtStepsPerContact(options.accuracy);
+  }
+  flight_step_ = FlightStep();
   const ContactModel& cm = contacts.model();
   for (int p = 0; p < static_cast<int>(cm.pairs().size()); ++p) {
     const GeomPair& pair = cm.pairs()[p];
@@ -65,6 +122,29 @@ double AutoTimestep::FineStep(int pair, double v) const {
                            ? options_.kelvin_voigt_steps_per_contact
                            : options_.steps_per_contact;
   return duration / steps;
+}
+
+double AutoTimestep::FlightStep() const {
+  const ContactModel& cm = contacts_.model();
+  double step = options_.max_step;
+  if (HasOwnDynamics(cm)) step = std::min(step, cm.model()->opt.timestep);
+  if (cm.model()->opt.integrator != mjINT_RK4) {
+    step = std::min(step, kFirstOrderFlightStep * options_.accuracy / kDefaultAccuracy);
+  }
+  return step;
+}
+
+double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
+  const double fine = FineStep(e.pair, e.impact_velocity);
+  // a separation slower than the law's floor of v0 (a resting contact's
+  // chatter) is left to the fine step
+  const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
+  if (!(-e.depth_rate > floor)) return fine;
+  const GeomPair& pair = contacts_.model().pairs()[e.pair];
+  const double closing = GravityClosingAcceleration(contacts_.model(), pair, e.normal);
+  const double overshoot = kSeparationOvershoot * fine;
+  const double separation = TimeToSeparate(e.depth, -e.depth_rate, closing) + overshoot;
+  return std::min(separation, fine);
 }
 
 double AutoTimestep::ApproachStep(int p, bool* fine) const {
@@ -109,14 +189,20 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
   const double allowed =
       gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
   if (allowed > pair_fine) return allowed;
-  // near: fine steps, and the one that reaches the touch ends there, so
-  // that a force that jumps at d = 0+ acts from the start of a step
-  // (a touch within a step would act for a fraction of it: an error of
-  // the first order in the step). A touch within a hundredth of a fine
-  // step is left to that step: it would not advance the time.
+  // near: fine steps, and the ones that reach the touch end just before and
+  // just past it,
+  // so that a force that jumps at d = 0+ acts from the start of a step (a
+  // touch within a step would act for a fraction of it: an error of the
+  // first order in the step)
   *fine = true;
-  const double touch = gap > 0 ? TimeToClose(gap, closing, accel) : 0.0;
-  return touch > 0.01 * pair_fine && touch < pair_fine ? touch : pair_fine;
+  // bounding spheres that overlap out of contact: no touch to predict
+  if (!(gap > 0)) return pair_fine;
+  const double touch = TimeToClose(gap, closing, accel);
+  // first to just before the touch (the impact speed is read there, before
+  // any force), then across it
+  const double lead = kTouchOvershoot * pair_fine;
+  if (touch > 2 * lead) return std::min(touch - lead, pair_fine);
+  return touch + lead;
 }
 
 double AutoTimestep::Next(double until) {
@@ -124,14 +210,14 @@ double AutoTimestep::Next(double until) {
   const mjModel* m = cm.model();
   mjData* d = contacts_.data();
   const int npair = static_cast<int>(cm.pairs().size());
-  double step = options_.max_step;
+  double step = flight_step_;
   bool fine = false;
 
   // pairs in contact at the last evaluation (a pair may have several
   // points): their fine step
   int in_contact = 0;
   for (const ContactData::Evaluation& e : contacts_.latest()) {
-    step = std::min(step, FineStep(e.pair, e.impact_velocity));
+    step = std::min(step, ContactStep(e));
     fine = true;
     if (!in_contact_[e.pair]) {
       in_contact_[e.pair] = 1;

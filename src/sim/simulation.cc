@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
+#include "sim/arena.h"
 
 namespace contactlaws {
 
@@ -19,19 +20,23 @@ Simulation::Simulation(UniqueModel model, std::string source,
   if (options.timestep) model_->opt.timestep = *options.timestep;
   if (options.integrator) model_->opt.integrator = *options.integrator;
   contact_model_ = std::make_unique<ContactModel>(model_.get(), source_, options.overrides);
+  SizeArena(model_.get(), *contact_model_);
   data_.reset(mj_makeData(model_.get()));
   if (!data_) throw Error(fmt::format("{}: MuJoCo could not allocate mjData", source_));
   contacts_ = std::make_unique<ContactData>(*contact_model_, data_.get());
 
   columns_ = options.columns;
   RecordBodiesAndJoints();
-  Reset();
+  Reset(/*fresh=*/true);
 }
 
-void Simulation::Reset() {
+void Simulation::Reset() { Reset(/*fresh=*/false); }
+
+void Simulation::Reset(bool fresh) {
+  // mj_makeData has just reset a fresh data to qpos0: not zeroed twice
   if (model_->nkey > 0) {
     mj_resetDataKeyframe(model_.get(), data_.get(), 0);
-  } else {
+  } else if (!fresh) {
     mj_resetData(model_.get(), data_.get());
   }
   contacts_->Reset();

@@ -51,6 +51,18 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
        "contactlaws: --max-timestep=0.001 goes with --timestep auto"},
       {"compare " + kBall + " --timestep auto --max-timestep 0",
        "contactlaws: --max-timestep=0 must be a number > 0 (s)"},
+      {"run " + kBall + " --accuracy abc",
+       "contactlaws: --accuracy=abc must be a number in (0, 0.1] (relative error)"},
+      {"restitution " + kBall + " --timestep auto --accuracy 0.2",
+       "contactlaws: --accuracy=0.2 must be a number in (0, 0.1] (relative error)"},
+      {"compare " + kBall + " --accuracy 0",
+       "contactlaws: --accuracy=0 must be a number in (0, 0.1] (relative error)"},
+      {"run " + kBall + " --timestep 1e-5 --accuracy 1e-4",
+       "contactlaws: --accuracy=0.0001 goes with --timestep auto, not with the fixed "
+       "--timestep=1e-5"},
+      {"render " + kBall + " --output x.gif --timestep 1e-4 --accuracy 1e-3",
+       "contactlaws: --accuracy=0.001 goes with --timestep auto, not with the fixed "
+       "--timestep=1e-4"},
       {"compare " + kBall + " --jobs 0", "contactlaws: --jobs=0 must be a whole number >= 1"},
       {"run " + kBall + " --integrator rk5", "contactlaws: --integrator=rk5 must be euler, rk4 or implicit"},
       {"run " + kBall + " --frobnicate", "contactlaws: "},

@@ -33,6 +33,18 @@ PointEvaluation Point(int pair, int tag, double depth, double rate, double force
   return e;
 }
 
+TEST(PeakForceTest, AParabolaSampledUnevenlyGivesItsVertex) {
+  // F = 10 - 4 (t - 1.3)^2 sampled at t = 0.5, 1, 2 (largest at t = 1):
+  // the peak between the samples is 10 N; a sample alone gives 9.64 N
+  PeakForce peak;
+  for (double t : {0.5, 1.0, 2.0}) peak.Add(t, 10 - 4 * (t - 1.3) * (t - 1.3));
+  EXPECT_NEAR(peak.peak(), 10.0, 10 * kRoundoff);  // 10 N: relative roundoff
+  // a rising force has no vertex yet: the largest sample
+  PeakForce rising;
+  for (double t : {0.0, 1.0, 2.0}) rising.Add(t, t * t);
+  EXPECT_EQ(rising.peak(), 4.0);
+}
+
 TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
   EpisodeLog log(/*points_per_pair=*/{1, 1}, /*tags=*/1);
   // first seen at t = 1 at depth 1e-3, rate 1 m/s, having touched at 3 m/s:
@@ -56,7 +68,10 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
   });
   EXPECT_TRUE(log.impacts()[0].open);
   EXPECT_EQ(log.impacts()[0].max_depth, 4e-3);
-  EXPECT_EQ(log.impacts()[0].max_force, 40.0);
+  // the force peaks between the samples 10, 40, 20 N at t = 1, 2, 3: the
+  // parabola through them, 10 + 30 (t - 1) - 25 (t - 1)(t - 2), has its
+  // vertex at t = 2.1, 40.25 N (PeakForce)
+  EXPECT_NEAR(log.impacts()[0].max_force, 40.25, 40 * kRoundoff);
 
   // gone at the next commit: closed with the speed the caller gives, at the
   // point and normal last seen; separation extrapolated at the mean of the
@@ -173,7 +188,9 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   const Impact& c = collisions.impacts()[0];
   EXPECT_FALSE(c.open);
   EXPECT_EQ(c.points, 2);
-  EXPECT_EQ(c.max_force, 12.0);  // both corners at once
+  // both corners at once, 12 N at t = 2 between 5 and 7 N: the vertex of
+  // 5 + 7 (t - 1) - 6 (t - 1)(t - 2) at t = 2 + 1/12, 12 + 1/24 N
+  EXPECT_NEAR(c.max_force, 12.0 + 1.0 / 24, 12 * kRoundoff);
   EXPECT_EQ(c.max_depth, 3e-3);
   EXPECT_EQ(c.impact_velocity, 2.0);      // the first touch
   EXPECT_EQ(c.separation_velocity, 0.8);  // the last to leave

@@ -69,13 +69,15 @@ TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSt
 }
 
 TEST(AutoTimestepTest, TheStepShrinksOnApproachAndIsFineInContact) {
-  // the paper's ball from 1 m: long steps in flight, the fine step
-  // (t_c / 20) from just before the touch to the separation
+  // the paper's ball from 1 m: long steps in flight (a parabola: the gap
+  // closure bounds them, no cap), the fine step (t_c / StepsPerContact)
+  // from just before the touch to the separation
   const Scene scene(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
   std::unique_ptr<Simulation> sim = scene.Make({});
   mjData* d = sim->data();
   AutoTimestep stepper(sim->contacts());
-  const double fine = HertzContactDuration(1.4e8, 1.5, 1.0, std::sqrt(2 * 9.81 * 0.9)) / 20;
+  const double fine = HertzContactDuration(1.4e8, 1.5, 1.0, std::sqrt(2 * 9.81 * 0.9)) /
+                      StepsPerContact(kDefaultAccuracy);
   double largest = 0;
   double in_contact = 0;  // largest step taken while in contact
   double before_touch = 0;
@@ -88,14 +90,17 @@ TEST(AutoTimestepTest, TheStepShrinksOnApproachAndIsFineInContact) {
     if (!touching && !sim->contacts().latest().empty()) before_touch = h;
     ASSERT_LT(d->time, 1.0);
   }
-  EXPECT_EQ(largest, AutoTimestepOptions{}.max_step);
+  // the first step closes half of the 0.9 m gap from rest: sqrt(0.9 / g)
+  EXPECT_NEAR(largest, std::sqrt(0.9 / 9.81), 1e-9);
   // the fine step is t_c at the impact speed it measured (just before the
   // touch, not the exact free fall): 5% covers the difference, t_c ~ v^-1/5
   EXPECT_NEAR(in_contact, fine, 0.05 * fine);
   EXPECT_LE(before_touch, 1.0001 * fine);
-  // 0.43 s of flight at the 1e-3 s max step, about 20 steps of contact and a
-  // few on the approach; a fixed 1e-5 s step takes 43000
-  EXPECT_LT(stepper.steps(), 430 + 60);
+  // 0.43 s of flight in steps that halve the gap (about 2 log2(0.9 m / the
+  // fine step's 2e-4 m of approach) = 25), the contact's steps, a few at the
+  // touch and separation; a fixed 1e-5 s step takes 43000
+  const double contact_steps = StepsPerContact(kDefaultAccuracy);
+  EXPECT_LT(stepper.steps(), 40 + 1.5 * contact_steps);
 }
 
 TEST(AutoTimestepTest, APairInContactWithManyPointsDoesNotHideAnApproachingPair) {

@@ -88,7 +88,9 @@ struct Reference {
 
 inline double ReferenceForce(const Drop& drop, LawKind law, double e, double v0, double d,
                       double rate) {
-  if (d <= 0) return 0;
+  // d = 0 is the first touch (the integration starts there, separation ends
+  // it before any evaluation at d <= 0): Kelvin-Voigt's force is c v0 from it
+  if (d < 0) return 0;
   double f = 0;
   if (law == LawKind::kKelvinVoigt) {
     // c = 2 zeta sqrt(k m), zeta from e for a linear oscillator

@@ -1,0 +1,40 @@
+// Copyright contactlaws authors.
+//
+// What a scene's mjData needs: MuJoCo 2.2.2 sizes the data's arena by its
+// defaults (njmax = 500 constraint rows: 3 MB zeroed by mj_makeData and every
+// mj_resetData; nstack from a heuristic on njmax), whatever the scene. A
+// scene whose every collidable pair is tagged makes no contact constraint,
+// so its rows are bounded by its equality constraints, friction losses and
+// limits.
+
+#ifndef CONTACTLAWS_SIM_ARENA_H_
+#define CONTACTLAWS_SIM_ARENA_H_
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_model.h"
+
+namespace contactlaws {
+
+// True when MuJoCo may make a contact constraint: an explicit <contact><pair>,
+// or two geoms that MuJoCo's own filter lets collide and no tag claims.
+bool HasUntaggedContacts(const ContactModel& cm);
+
+// Sizes m's arena to the scene before mj_makeData: njmax to the rows it can
+// need, nstack by MuJoCo's own heuristic for that njmax plus what the
+// passive hook takes. Only when both are MuJoCo's defaults (a scene's
+// explicit <size njmax> or <size nstack> wins) and no untagged contact can
+// arise. A scene that still outgrows it stops in MuJoCo's own error.
+void SizeArena(mjModel* m, const ContactModel& cm);
+
+// For a program that loads scenes: MuJoCo's allocations of 1 MB and more
+// (the compiler's own mjData, sized by MuJoCo's defaults and zeroed whole)
+// on transparent huge pages (madvise), so that zeroing them faults a few
+// 2 MB pages rather than hundreds of 4 kB ones; smaller ones as MuJoCo's own
+// allocator (64-byte aligned). Sets mju_user_malloc and mju_user_free: call
+// once, before any MuJoCo allocation.
+void UseHugePagesForLargeAllocations();
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_SIM_ARENA_H_
