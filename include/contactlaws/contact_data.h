@@ -151,9 +151,9 @@ class ContactData {
   // torque to qfrc_passive and records them, with the state to commit.
   void AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e);
   // The rolling and torsional resistance of a point (condim 4 and 6) with
-  // the committed state c, tangential stiffness k and damping c_t.
+  // the committed state c and tangential stiffness k.
   void AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
-                            double damping, PointEvaluation* e);
+                            PointEvaluation* e);
   // Once a step: sets divergence_ when the step diverged.
   void CheckDivergence();
   // Notices an mjData stepped without BeforeStep (plain mj_step): warns once.

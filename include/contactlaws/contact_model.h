@@ -60,6 +60,9 @@ struct GeomPair {
   // The mass the default tangential damping sees, kg: m0 m1 / (m0 + m1) of
   // the two bodies' subtree masses (a static or driven body: the other's).
   double friction_mass = 0;
+  // The same for the rolling and torsional dampers, kg m^2: each body's
+  // largest principal moment of inertia.
+  double friction_inertia = 0;
   // A depth beyond this is divergence, not contact: kDivergenceDepthFraction
   // of the smaller geom's size (GeomSize), m; infinite for two planes.
   double depth_limit = 0;

@@ -113,12 +113,12 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   mju_copy4(next.orientation[0], d_->xquat + 4 * b0);
   mju_copy4(next.orientation[1], d_->xquat + 4 * b1);
   if (params.torsional > 0 || params.rolling > 0) {
-    AddRollingResistance(pair, committed, in.stiffness, in.damping, e);
+    AddRollingResistance(pair, committed, in.stiffness, e);
   }
 }
 
 void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
-                                       double damping, PointEvaluation* e) {
+                                       PointEvaluation* e) {
   const double* n = e->normal;
   const double fn = std::max(e->force, 0.0);
   // the relative rotation since the commit, split along the normal
@@ -149,13 +149,14 @@ void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState
       Project(n, in.stretch);
       Project(n, in.rate);
     }
-    // the sliding spring's share: the same stick length over the lever
-    // lengths[part] (k l^2), capped at l F_n
+    // k l^2: the tangential spring's stiffness over the lever l, so that
+    // the cap l F_n is reached at the same stretch over l; critically
+    // damped with the pair's moment of inertia
     const double l2 = lengths[part] * lengths[part];
     mju_copy3(in.committed, state);
     in.stiffness = k * l2;
     in.committed_stiffness = c.torque_stiffness[part];
-    in.damping = damping * l2;
+    in.damping = 2 * std::sqrt(in.stiffness * pair.friction_inertia);
     in.stick_limit = in.slide_limit = lengths[part] * fn;
     in.was_sliding = c.torque_sliding[part];
     const CappedSpringOutput out = CappedSpring(in);

@@ -354,6 +354,7 @@ void ContactModel::AddFriction(int g1, int g2, const PairTagSpec& spec,
   pair->friction = friction.params;
   pair->condim = friction.condim;
   pair->friction_mass = PairFrictionMass(model_, pair->body[0], pair->body[1]);
+  pair->friction_inertia = PairFrictionMass(model_, pair->body[0], pair->body[1], true);
 }
 
 void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,

@@ -53,12 +53,15 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const Frictio
   return out;
 }
 
-double PairFrictionMass(const mjModel* m, int body0, int body1) {
+double PairFrictionMass(const mjModel* m, int body0, int body1, bool inertia) {
   // a body that cannot move (static or driven) adds no mass of its own
-  auto mass = [m](int b) {
-    return m->body_weldid[b] == 0 || m->body_mocapid[b] >= 0
-               ? std::numeric_limits<double>::infinity()
-               : m->body_subtreemass[m->body_weldid[b]];
+  auto mass = [m, inertia](int b) {
+    if (m->body_weldid[b] == 0 || m->body_mocapid[b] >= 0) {
+      return std::numeric_limits<double>::infinity();
+    }
+    const double* moments = m->body_inertia + 3 * b;
+    return inertia ? std::max({moments[0], moments[1], moments[2]})
+                   : m->body_subtreemass[m->body_weldid[b]];
   };
   const double a = mass(body0);
   const double b = mass(body1);

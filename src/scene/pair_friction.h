@@ -32,7 +32,9 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const Frictio
                                  const Overrides& overrides);
 
 // The tangential damping's mass for the pair's bodies, kg (GeomPair::friction_mass).
-double PairFrictionMass(const mjModel* m, int body0, int body1);
+// inertia: the bodies' largest principal moments of inertia instead of their
+// subtree masses (GeomPair::friction_inertia).
+double PairFrictionMass(const mjModel* m, int body0, int body1, bool inertia = false);
 
 }  // namespace contactlaws
 
