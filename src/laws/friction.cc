@@ -103,30 +103,29 @@ CappedSpringOutput CappedSpring(const CappedSpringInput& in) {
   // so that unloading stores no energy it was not given) minus k du
   const double scale =
       in.committed_stiffness > k && in.committed_stiffness > 0 ? k / in.committed_stiffness : 1.0;
-  double trial[3];
-  for (int i = 0; i < 3; ++i) trial[i] = in.committed[i] * scale - k * in.stretch[i];
-  const double size = Norm(trial);
+  double trial[3], total[3];
+  for (int i = 0; i < 3; ++i) {
+    trial[i] = in.committed[i] * scale - k * in.stretch[i];
+    total[i] = trial[i] - in.damping * in.rate[i];
+  }
+  // the spring and its damper together against the cap: a damper that
+  // resists the slip cannot hold the contact beyond the limit
+  const double size = Norm(total);
   const double limit = in.was_sliding ? in.slide_limit : in.stick_limit;
   if (size > limit) {
-    // sliding: the spring sits at the cap, along its trial direction
+    // sliding: the force sits at the cap, and so does the committed spring
     out.sliding = true;
-    for (int i = 0; i < 3; ++i) out.force[i] = out.spring[i] = trial[i] * limit / size;
+    for (int i = 0; i < 3; ++i) out.force[i] = out.spring[i] = total[i] * limit / size;
     out.dissipated_power = -Dot(out.force, in.rate);
   } else {
-    // stick: the spring holds, its damping acts, the whole within the cap
+    // stick: the spring holds, its damper acts
     for (int i = 0; i < 3; ++i) {
       out.spring[i] = trial[i];
-      out.force[i] = trial[i] - in.damping * in.rate[i];
-    }
-    const double total = Norm(out.force);
-    if (total > in.stick_limit) {
-      for (double& f : out.force) f *= in.stick_limit / total;
+      out.force[i] = total[i];
     }
     // the damper's power, and what a changing stiffness takes from the
     // spring (|F|^2 |dk/dt| / 2k^2: loading at a fixed force, unloading scaled)
-    double damper[3];
-    for (int i = 0; i < 3; ++i) damper[i] = out.force[i] - out.spring[i];
-    out.dissipated_power = -Dot(damper, in.rate);
+    out.dissipated_power = in.damping * Dot(in.rate, in.rate);
     if (k > 0) out.dissipated_power += Dot(trial, trial) * std::abs(in.stiffness_rate) / (2 * k * k);
   }
   if (k > 0) out.stored_energy = Dot(out.spring, out.spring) / (2 * k);

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -252,6 +253,41 @@ TEST_F(FrictionTest, RollingAndTorsionalResistanceSlowTheSpinAtTheirCapsRate) {
   RunUntil(spin, 2.0);
   constexpr double kRestSpin = 1e-3;  // rad/s
   EXPECT_NEAR(spin.data()->qvel[5], 0, kRestSpin);
+}
+
+TEST_F(FrictionTest, BlockOnABeltSticksAndSlipsAtTheClosedFormStretchAndPeriod) {
+  // mjcf/friction_belt.xml: m = 1 kg, k = 100 N/m, v_b = 0.1 m/s,
+  // mu_s = 0.6, mu_k = 0.4
+  Simulation& sim = MakeSceneSimulation("friction_belt.xml");
+  const double m = 1, k = 100, vb = 0.1, w = std::sqrt(k / m);
+  const double release = 0.6 * m * kG / k;
+  const double d = (0.6 - 0.4) * m * kG / k;
+  const double period = (M_PI + 2 * std::atan(vb / (w * d))) / w + 2 * d / vb;
+  // releases: the steps where the block leaves the belt's speed
+  std::vector<double> times, stretches;
+  bool stuck = false;
+  double last_x = 0;
+  while (sim.time() < 3.5) {
+    sim.Step();
+    const double v = sim.data()->qvel[0];
+    const bool now = std::abs(v - vb) < 1e-3;
+    if (stuck && !now) {
+      times.push_back(sim.time());
+      stretches.push_back(last_x);
+    }
+    stuck = now;
+    last_x = sim.data()->qpos[0];
+  }
+  // the first release is the block catching the belt from rest at t = 0
+  ASSERT_GE(times.size(), 6u);
+  // the stick spring's stretch and the step's resolution of the release:
+  // measured within 6e-5 m and 1.5 ms
+  constexpr double kStretchTolerance = 2e-4;  // m
+  constexpr double kPeriodTolerance = 3e-3;   // s
+  for (size_t i = 1; i + 2 < times.size(); i += 2) {
+    EXPECT_NEAR(stretches[i], release, kStretchTolerance) << "release " << i;
+    EXPECT_NEAR(times[i + 2] - times[i], period, kPeriodTolerance) << "release " << i;
+  }
 }
 
 }  // namespace
