@@ -121,7 +121,8 @@ class ContactData {
 
   // The latest hook evaluation (call mj_forward first for the current state).
   TagReading Reading(int tag) const;
-  double ElasticEnergy() const;   // J, latest evaluation
+  // J, latest evaluation: the laws' springs and the stick springs of friction
+  double ElasticEnergy() const;
   // J, integrated (trapezoid) over committed steps, up to the latest evaluation
   double DissipatedEnergy() const;
 
@@ -145,6 +146,14 @@ class ContactData {
   // The law at a contact point of pair p (narrowphase output con); taken:
   // the pair's open episodes already matched in this evaluation.
   PointEvaluation Evaluate(int p, const mjContact& con, uint64_t* taken);
+  // The friction at that point (friction_force.cc): records its slip and
+  // spin in *e, and for a pair with friction adds the friction force and
+  // torque to qfrc_passive and records them, with the state to commit.
+  void AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e);
+  // The rolling and torsional resistance of a point (condim 4 and 6) with
+  // the committed state c and tangential stiffness k.
+  void AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
+                            PointEvaluation* e);
   // Once a step: sets divergence_ when the step diverged.
   void CheckDivergence();
   // Notices an mjData stepped without BeforeStep (plain mj_step): warns once.

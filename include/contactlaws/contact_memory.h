@@ -15,6 +15,22 @@
 
 namespace contactlaws {
 
+// The friction state of one contact point (friction.h), what the hook
+// captured at a step's start and the step commits: the stick springs (or
+// LuGre's bristles) and where they are anchored. The anchors are the
+// point's body-frame positions (PointEvaluation::local) and the bodies'
+// orientations, so that a stage reads its spring's stretch from its own
+// positions (RK4 included).
+struct FrictionState {
+  double spring[3] = {0, 0, 0};  // spring force on body[1] (N), or LuGre's z (m); world
+  double torque[3] = {0, 0, 0};  // rolling + torsional spring torque on body[1], N m
+  double stiffness = 0;          // k_t at the commit, N/m
+  double torque_stiffness[2] = {0, 0};  // torsional, rolling, N m/rad
+  bool sliding = false;
+  bool torque_sliding[2] = {false, false};  // torsional, rolling
+  double orientation[2][4] = {{1, 0, 0, 0}, {1, 0, 0, 0}};  // the bodies' quaternions
+};
+
 // One contact point as the hook last saw it (depth > 0).
 struct PointEvaluation {
   int pair = -1;     // ContactModel::pairs() index
@@ -40,6 +56,15 @@ struct PointEvaluation {
   // the contact point in the frames of the pair's two bodies (body[0],
   // body[1]): what identifies it from one step to the next
   double local[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  // friction (all zero for friction=none): the force and torque on body[1]
+  // (body[0] gets their opposites), at pos
+  double friction[3] = {0, 0, 0};         // N
+  double friction_torque[3] = {0, 0, 0};  // N m
+  double friction_energy = 0;             // J, stored by the stick springs
+  double friction_power = 0;              // W, dissipated
+  double slip[3] = {0, 0, 0};   // m/s, body[1] relative to body[0] at pos, tangential
+  double spin[3] = {0, 0, 0};   // rad/s, body[1] relative to body[0]
+  FrictionState friction_state;  // to commit
 };
 
 // One contact episode of one contact point: first touch to separation.
@@ -72,6 +97,21 @@ struct Impact {
   double restitution_post() const {
     return separation_velocity / std::max(impact_velocity, max_approach_velocity);
   }
+  // The tangential side: the slip speed of the contact point (m/s) at the
+  // first evaluation in contact and at the last (closed only), and the
+  // relative spin about the axis n x t (rad/s, t the direction of the first
+  // slip; > 0 rolls along t) at both.
+  double tangential_impact_velocity = 0;
+  double tangential_separation_velocity = 0;
+  double spin_before = 0;
+  double spin_after = 0;
+  double tangent[3] = {0, 0, 0};  // t, the first slip's direction (0 when none)
+  double normal[3] = {0, 0, 0};   // n at the first evaluation
+  // tangential separation / impact speed (closed only)
+  double tangential_restitution() const {
+    return tangential_impact_velocity > 0 ? tangential_separation_velocity / tangential_impact_velocity
+                                          : 0.0;
+  }
 };
 
 // The largest force of a contact from its samples (once per step, at the
@@ -92,13 +132,18 @@ class PeakForce {
   double peak_ = 0;
 };
 
+// The tangential slip speed along t and spin about n x t of a point, for an
+// Impact's tangential side.
+void TangentialSide(const PointEvaluation& e, const double tangent[3], const double normal[3],
+                    double* slip, double* spin);
+
 // The time a point touched, extrapolated back from its first evaluation at t:
 // the depth was reached at the mean of the touch and current rates; t itself
 // for a contact there at the start (PointEvaluation::at_start), and when the
 // rates give no time.
 double TouchTime(const PointEvaluation& e, double t);
 
-// Sum of the dissipated power of points, W.
+// Sum of the dissipated power of points (contact laws and friction), W.
 double DissipatedPower(const std::vector<PointEvaluation>& points);
 
 // The episodes of every contact point, committed once per accepted step. A
@@ -123,6 +168,11 @@ class EpisodeLog {
 
   // The largest approach rate committed for an open episode, m/s.
   double MaxApproach(int episode) const { return impacts_[episode].max_approach_velocity; }
+  // The committed friction state of an open episode, and where its point
+  // sat on the two bodies at that commit (the stick anchors).
+  const FrictionState& CommittedFriction(int episode) const { return tracks_[episode].friction; }
+  const double (&Anchors(int episode) const)[2][3] { return tracks_[episode].local; }
+  const double (&CommittedNormal(int episode) const)[3] { return tracks_[episode].last_normal; }
 
   // The open episodes of pair (indices in impacts()).
   const std::vector<int>& OpenEpisodes(int pair) const { return pair_open_[pair]; }
@@ -154,6 +204,7 @@ class EpisodeLog {
     double last_pos[3] = {0, 0, 0};
     double last_normal[3] = {0, 0, 0};
     double local[2][3] = {{0, 0, 0}, {0, 0, 0}};  // where it sat on the bodies
+    FrictionState friction;
   };
   void Open(double t, const PointEvaluation& e);
   void Close(int index, double separation_velocity);

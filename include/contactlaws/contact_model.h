@@ -16,6 +16,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "contactlaws/friction.h"
 #include "contactlaws/law.h"
 
 namespace contactlaws {
@@ -28,6 +29,9 @@ struct Overrides {
   // c (s/m) of the laws that read it (ReadsDissipation); the others ignore it,
   // as Hertz ignores the restitution
   std::optional<double> dissipation;
+  // every tagged pair's friction model, and its mu (mu_static = mu_kinetic)
+  std::optional<FrictionKind> friction;
+  std::optional<double> mu;
 };
 
 // One contactlaw tag.
@@ -49,6 +53,16 @@ struct GeomPair {
   int tag = -1;          // index into ContactModel::tags()
   int slots = 1;         // most contact points the narrowphase returns for it
   LawParams params;      // resolved (stiffness from materials included)
+  // Resolved from the tag, the overrides and the geoms (condim, friction):
+  // none when the larger condim is 1 (MuJoCo's frictionless contact).
+  FrictionParams friction;
+  int condim = 3;           // the larger of the two geoms' condim
+  // The mass the default tangential damping sees, kg: m0 m1 / (m0 + m1) of
+  // the two bodies' subtree masses (a static or driven body: the other's).
+  double friction_mass = 0;
+  // The same for the rolling and torsional dampers, kg m^2: each body's
+  // largest principal moment of inertia.
+  double friction_inertia = 0;
   // A depth beyond this is divergence, not contact: kDivergenceDepthFraction
   // of the smaller geom's size (GeomSize), m; infinite for two planes.
   double depth_limit = 0;
@@ -80,16 +94,20 @@ inline constexpr double kDivergenceDepthFraction = 0.5;
 double GeomSize(const mjModel* m, int g);
 
 // A body whose position is prescribed by a contactdrive tag:
-//   p(t) = ref + axis * amplitude * sin(omega t + phase).
+//   motion=sine:   p(t) = ref + axis * amplitude * sin(omega t + phase);
+//   motion=linear: p(t) = ref + axis * speed * t (a belt: a driven plane).
 struct Drive {
+  enum class Motion { kSine, kLinear };
   std::string label;
   int body = -1;
   int mocap = -1;  // the body's mocap index
+  Motion motion = Motion::kSine;
   std::array<double, 3> ref = {0, 0, 0};
   std::array<double, 3> axis = {0, 0, 1};
   double amplitude = 0.0;  // m
   double omega = 0.0;      // rad/s
   double phase = 0.0;      // rad
+  double speed = 0.0;      // m/s (linear)
 
   void Position(double t, double pos[3]) const;
   void Velocity(double t, double vel[3]) const;
@@ -132,6 +150,10 @@ class ContactModel {
   // The geom pairs of one tag (appended to pairs_ and tag->pairs).
   void AddPairs(const PairTagSpec& spec, const LawParams& base, const TagResolver& resolve,
                 PairTag* tag);
+  // The pair's friction (scene/pair_friction.h); refuses bad values, warns
+  // of friction keys on a frictionless pair.
+  void AddFriction(int g1, int g2, const PairTagSpec& spec, const std::string& pair_name,
+                   const TagResolver& resolve, GeomPair* pair);
   // Refuses the pair when MuJoCo's depth for its geom types is wrong; warns
   // (once per tag and type, warned_types) when it has a known limit.
   void CheckDepth(int g1, int g2, const std::string& pair_name, const TagResolver& resolve,
@@ -139,6 +161,7 @@ class ContactModel {
 
   const mjModel* model_;
   std::string source_;
+  Overrides overrides_;
   std::vector<PairTag> tags_;
   std::vector<GeomPair> pairs_;
   std::vector<Drive> drives_;

@@ -21,6 +21,10 @@ namespace contactlaws {
 void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
                    const mjtNum force[3], mjtNum* qfrc);
 
+// qfrc += J_rot^T torque for a world-frame torque on body (what
+// mj_applyFT(m, d, 0, torque, ...) adds), walking only the body's chain.
+void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[3], mjtNum* qfrc);
+
 // World-frame velocity of a point fixed to body (driven bodies: their
 // prescribed motion at d->time). Needs cvel.
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],

@@ -2,6 +2,7 @@
 
 #include "cli/commands.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -28,6 +29,45 @@ void PrintSettings(const Simulation& sim) {
              m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
   fmt::print("rule: a contact is resolved by >= {} steps of its estimated duration\n",
              kStepsPerContact);
+}
+
+// The friction of a tag's pair, and the step its tangential dynamics need
+// (kStepsPerContact steps per period); true when the timestep is too coarse.
+bool PrintFriction(const GeomPair& pair, const ContactEstimate& estimate, double dt) {
+  const FrictionParams& f = pair.friction;
+  if (f.kind == FrictionKind::kNone) {
+    fmt::print("  friction none{}\n", pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
+    return false;
+  }
+  fmt::print("  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n", FrictionName(f.kind),
+             f.mu_static, f.mu_kinetic, pair.condim,
+             f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
+             f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
+  const double mass = pair.friction_mass;
+  const double g = 9.81;  // the load per kg the estimates assume, m/s^2
+  double period = 0;
+  std::string what;
+  if (f.kind == FrictionKind::kRegularized) {
+    // the curve's slope 2 mu_s F_n / v_t is a damper: dt < m v_t / (mu_s F_n)
+    period = kStepsPerContact * f.transition_velocity / (std::max(f.mu_static, 1e-300) * g);
+    what = fmt::format("regularized slope 2 mu_s F_n / v_t, v_t {} m/s", f.transition_velocity);
+  } else if (f.kind == FrictionKind::kLuGre) {
+    period = 2 * M_PI / std::sqrt(f.bristle_stiffness * g);
+    what = fmt::format("bristles sigma0 F_n, sigma0 {} 1/m", f.bristle_stiffness);
+  } else {
+    // the deepest the contact gets: the estimate's, or its overlap now
+    const double depth = std::max(std::isfinite(estimate.max_depth) ? estimate.max_depth : 0.0,
+                                  estimate.gap ? -*estimate.gap : 0.0);
+    const double k = f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
+    period = 2 * M_PI * std::sqrt(mass / k);
+    what = fmt::format("stick spring k_t {:.4g} N/m{}, mass {:.4g} kg", k,
+                       f.tangential_stiffness ? "" : " (Mindlin, at the max depth)", mass);
+  }
+  const double step = period / kStepsPerContact;
+  const bool ok = !(std::isfinite(step)) || dt <= step;
+  fmt::print("  tangential: {}: {} (needs timestep <= {:.3g} s)\n", what,
+             ok ? "ok" : "TOO COARSE", step);
+  return !ok;
 }
 
 // Tag t resolved, its estimated contact and the timestep it needs; true when
@@ -71,10 +111,11 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
              impact_velocity ? "--impact-velocity"
                              : "estimated: closing speed, gravity over the gap, "
                                "driven bodies' top speed");
+  const bool tangential_coarse = PrintFriction(pair, estimate, dt);
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");
-    return false;  // nothing to hold the timestep to
+    return tangential_coarse;  // nothing to hold the normal's timestep to
   }
   const double steps = estimate.contact_duration / dt;
   const bool ok = steps >= kStepsPerContact;
@@ -83,7 +124,7 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
              estimate.contact_duration);
   fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
              ok ? "ok" : "TOO COARSE", estimate.timestep());
-  return !ok;
+  return !ok || tangential_coarse;
 }
 
 void PrintDrives(const Simulation& sim) {
@@ -108,6 +149,7 @@ int CheckCommand(const CheckArgs& args) {
     options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
   }
   if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
+  ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
   if (args.timestep) options.timestep = ParsePositive("--timestep", *args.timestep, "s");
   std::optional<double> impact_velocity;
   if (args.impact_velocity) {

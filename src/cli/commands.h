@@ -31,6 +31,8 @@ struct CheckArgs {
   std::optional<std::string> law;
   std::optional<std::string> restitution;
   std::optional<std::string> dissipation;
+  std::optional<std::string> friction;
+  std::optional<std::string> mu;
   std::optional<std::string> timestep;
   std::optional<std::string> impact_velocity;
 };

@@ -18,7 +18,11 @@ std::vector<std::string> ImpactColumns() {
           "points",        "time_contact",        "time_separation",
           "impact_velocity", "separation_velocity", "max_approach_velocity",
           "restitution_post", "chained",          "max_depth",
-          "max_force"};
+          "max_force",
+          // the tangential side (friction): slip speed along the first slip's
+          // direction, spin about n x t, before and after
+          "tangential_impact_velocity", "tangential_separation_velocity",
+          "tangential_restitution", "spin_before", "spin_after"};
 }
 
 std::string Field(double value) {
@@ -50,7 +54,12 @@ std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impac
           if_closed(impact.restitution_post()),
           impact.chained() ? "1" : "0",
           Field(impact.max_depth),
-          Field(impact.max_force)};
+          Field(impact.max_force),
+          Field(impact.tangential_impact_velocity),
+          if_closed(impact.tangential_separation_velocity),
+          if_closed(impact.tangential_restitution()),
+          Field(impact.spin_before),
+          if_closed(impact.spin_after)};
 }
 
 }  // namespace contactlaws::cli

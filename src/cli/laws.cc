@@ -52,6 +52,14 @@ void PrintText() {
                law.name, law.formula, law.parameters, EffectiveLine(law, restitutions),
                law.reference);
   }
+  fmt::print("\nFriction models (tag key friction=, --friction; docs/friction.md). Convention:\n"
+             "slip v of geom2's body relative to geom1's at the contact point, force F on it\n"
+             "opposing the slip, normal force F_n from the law; default coulomb when the pair\n"
+             "has friction (condim > 1), mu from the geoms' friction (the larger, as MuJoCo).\n");
+  for (const FrictionInfo& model : FrictionModels()) {
+    fmt::print("\n{}\n  {}\n  state:      {}\n  parameters: {}\n  reference:  {}\n", model.name,
+               model.formula, model.state, model.parameters, model.reference);
+  }
 }
 
 // One row per law and restitution: a(e) and the rebound it gives (empty

@@ -40,6 +40,13 @@ constexpr char kDissipationHelp[] =
     "override every tag's dissipation c, s/m >= 0, for the laws that read it "
     "(hunt-crossley-constant); the others ignore it";
 
+void AddFriction(CLI::App* cmd, std::optional<std::string>* friction,
+                 std::optional<std::string>* mu) {
+  cmd->add_option("--friction", *friction,
+                  fmt::format("override every tagged pair's friction model: {}", FrictionNameList()));
+  AddNumber(cmd, "--mu", mu, "override every tagged pair's friction coefficient (static = kinetic), >= 0");
+}
+
 void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
   AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
@@ -54,6 +61,7 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   cmd->add_option("--integrator", args->integrator,
                   "euler, rk4 or implicit (default: the scene's)");
   AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
+  AddFriction(cmd, &args->friction, &args->mu);
   if (sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();
@@ -159,6 +167,7 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
   AddNumber(c->check_cmd, "--restitution", &c->check.restitution,
             "override every tag's restitution");
   AddNumber(c->check_cmd, "--dissipation", &c->check.dissipation, kDissipationHelp);
+  AddFriction(c->check_cmd, &c->check.friction, &c->check.mu);
   AddNumber(c->check_cmd, "--timestep", &c->check.timestep, "s (default: the scene's)");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");

@@ -116,7 +116,23 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   if (args.dissipation) {
     options.simulation.overrides.dissipation = ParseDissipation(*args.dissipation);
   }
+  ParseFrictionOverrides(args.friction, args.mu, &options.simulation.overrides);
   return options;
+}
+
+void ParseFrictionOverrides(const std::optional<std::string>& friction,
+                            const std::optional<std::string>& mu, Overrides* overrides) {
+  if (friction) {
+    overrides->friction = ParseFrictionName(*friction);
+    if (!overrides->friction) {
+      Refuse("--friction", *friction, fmt::format("is not a friction model ({})", FrictionNameList()));
+    }
+  }
+  if (mu) {
+    const double value = ParseOption("--mu", *mu);
+    if (!(value >= 0)) Refuse("--mu", fmt::format("{}", value), "must be >= 0");
+    overrides->mu = value;
+  }
 }
 
 LawKind ParseLaw(std::string_view option, std::string_view name) {

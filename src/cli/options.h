@@ -27,6 +27,8 @@ struct CommonArgs {
   std::string sample_rate = "1000";
   std::optional<std::string> columns;  // trajectory column groups
   std::optional<std::string> dissipation;  // c (s/m) of the laws that read it
+  std::optional<std::string> friction;     // every tagged pair's friction model
+  std::optional<std::string> mu;           // every tagged pair's mu (static = kinetic)
 };
 
 // What SimulationOptions leave out of the common options: the run's length
@@ -63,6 +65,10 @@ LawKind ParseLaw(std::string_view option, std::string_view name);
 
 // "all" (every law, in table order) or "L1,L2,..." (no repeats).
 std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text);
+
+// --friction MODEL and --mu X into overrides (either may be absent).
+void ParseFrictionOverrides(const std::optional<std::string>& friction,
+                            const std::optional<std::string>& mu, Overrides* overrides);
 
 // --dissipation: a number >= 0 (s/m).
 double ParseDissipation(std::string_view text);

@@ -30,6 +30,25 @@ void PeakForce::Add(double t, double force) {
   count_ = std::min(count_ + 1, 2);
 }
 
+
+namespace {
+
+// An impact's tangent and normal from its first point, and that point's
+// slip and spin along them.
+void OpenTangentialSide(const PointEvaluation& e, Impact* impact) {
+  const double speed = std::sqrt(e.slip[0] * e.slip[0] + e.slip[1] * e.slip[1] + e.slip[2] * e.slip[2]);
+  for (int i = 0; i < 3; ++i) {
+    impact->normal[i] = e.normal[i];
+    impact->tangent[i] = speed > 0 ? e.slip[i] / speed : 0.0;
+  }
+  TangentialSide(e, impact->tangent, impact->normal, &impact->tangential_impact_velocity,
+                 &impact->spin_before);
+  impact->tangential_separation_velocity = impact->tangential_impact_velocity;
+  impact->spin_after = impact->spin_before;
+}
+
+}  // namespace
+
 double TouchTime(const PointEvaluation& e, double t) {
   if (e.at_start) return t;
   const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
@@ -38,8 +57,19 @@ double TouchTime(const PointEvaluation& e, double t) {
 
 double DissipatedPower(const std::vector<PointEvaluation>& points) {
   double power = 0;
-  for (const PointEvaluation& e : points) power += e.dissipated_power;
+  for (const PointEvaluation& e : points) power += e.dissipated_power + e.friction_power;
   return power;
+}
+
+void TangentialSide(const PointEvaluation& e, const double tangent[3], const double normal[3],
+                    double* slip, double* spin) {
+  // axis = n x t: a ball (body[1]) on a floor (n up, towards the ball) that
+  // rolls along t without slipping spins at +v/R about it
+  const double axis[3] = {normal[1] * tangent[2] - normal[2] * tangent[1],
+                          normal[2] * tangent[0] - normal[0] * tangent[2],
+                          normal[0] * tangent[1] - normal[1] * tangent[0]};
+  *slip = e.slip[0] * tangent[0] + e.slip[1] * tangent[1] + e.slip[2] * tangent[2];
+  *spin = e.spin[0] * axis[0] + e.spin[1] * axis[1] + e.spin[2] * axis[2];
 }
 
 // ---------------------------------------------------------------------------
@@ -99,6 +129,7 @@ void EpisodeLog::Open(double t, const PointEvaluation& e) {
   impact.index = ++tag_count_[impact.tag];
   impact.impact_velocity = e.touch_velocity;
   impact.time_contact = TouchTime(e, t);
+  OpenTangentialSide(e, &impact);
   const int index = static_cast<int>(impacts_.size());
   impacts_.push_back(impact);
   tracks_.emplace_back();
@@ -118,6 +149,8 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     track.force.Add(t, e.force);
     impact.max_force = track.force.peak();
     impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
+    TangentialSide(e, impact.tangent, impact.normal, &impact.tangential_separation_velocity,
+                   &impact.spin_after);
     track.last_commit = commits_;
     track.last_time = t;
     track.last_depth = e.depth;
@@ -125,6 +158,7 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     std::copy(e.pos, e.pos + 3, track.last_pos);
     std::copy(e.normal, e.normal + 3, track.last_normal);
     for (const int b : {0, 1}) std::copy(e.local[b], e.local[b] + 3, track.local[b]);
+    track.friction = e.friction_state;
   }
 }
 
@@ -164,6 +198,7 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
       collision.index = ++tag_count_[collision.tag];
       collision.time_contact = t;
       collision.points = 0;
+      OpenTangentialSide(points[first], &collision);
       open_[pair] = static_cast<int>(impacts_.size());
       impacts_.push_back(collision);
       force_[pair] = PeakForce();
@@ -185,6 +220,8 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
     }
     force_[pair].Add(t, force);
     collision.max_force = force_[pair].peak();
+    TangentialSide(points[first], collision.tangent, collision.normal,
+                   &collision.tangential_separation_velocity, &collision.spin_after);
     collision.points = std::max(collision.points, static_cast<int>(end - first));
     seen_[pair] = 1;
     first = end;

@@ -152,7 +152,7 @@ void ContactData::ApplyForces() {
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) continue;
-      const PointEvaluation e = Evaluate(p, con, &taken);
+      PointEvaluation e = Evaluate(p, con, &taken);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
@@ -160,6 +160,7 @@ void ContactData::ApplyForces() {
         mju_scl3(push, con.frame, b == 1 ? e.force : -e.force);
         AddPointForce(m_, d_, pair.body[b], con.pos, push, d_->qfrc_passive);
       }
+      AddFriction(pair, con, &e);  // friction_force.cc
       latest_.push_back(e);
     }
   }
@@ -323,7 +324,7 @@ TagReading ContactData::Reading(int tag) const {
 
 double ContactData::ElasticEnergy() const {
   double energy = 0;
-  for (const PointEvaluation& e : latest_) energy += e.elastic_energy;
+  for (const PointEvaluation& e : latest_) energy += e.elastic_energy + e.friction_energy;
   return energy;
 }
 

@@ -25,6 +25,16 @@ void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum poi
   }
 }
 
+void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[3], mjtNum* qfrc) {
+  int b = body;
+  while (b > 0 && m->body_dofnum[b] == 0) b = m->body_parentid[b];
+  if (b <= 0) return;  // welded to the world: no dofs
+  // qfrc_j += ang_j . torque, cdof_j = (ang_j, lin_j)
+  for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
+    qfrc[j] += mju_dot3(d->cdof + 6 * j, torque);
+  }
+}
+
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
                    mjtNum vel[3]) {
   const mjModel* m = model.model();

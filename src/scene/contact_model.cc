@@ -15,6 +15,7 @@
 #include "contactlaws/model_io.h"
 #include "scene/model_queries.h"
 #include "scene/number.h"
+#include "scene/pair_friction.h"
 #include "scene/pair_trust.h"
 #include "scene/tags.h"
 
@@ -77,12 +78,14 @@ class TagResolver {
 };
 
 void Drive::Position(double t, double pos[3]) const {
-  const double s = amplitude * std::sin(omega * t + phase);
+  const double s =
+      motion == Motion::kLinear ? speed * t : amplitude * std::sin(omega * t + phase);
   for (int i = 0; i < 3; ++i) pos[i] = ref[i] + axis[i] * s;
 }
 
 void Drive::Velocity(double t, double vel[3]) const {
-  const double c = amplitude * omega * std::cos(omega * t + phase);
+  const double c =
+      motion == Motion::kLinear ? speed : amplitude * omega * std::cos(omega * t + phase);
   for (int i = 0; i < 3; ++i) vel[i] = axis[i] * c;
 }
 
@@ -91,6 +94,7 @@ ContactModel::ContactModel(const mjModel* m, std::string source,
     : model_(m), source_(std::move(source)) {
   body_drive_.assign(m->nbody, -1);
   geom_tagged_.assign(m->ngeom, 0);
+  overrides_ = overrides;
   for (int i = 0; i < m->ntext; ++i) CheckTagPrefix(source_, TextName(m, i));
   ReadDrives();
   ReadTags(overrides);
@@ -124,6 +128,8 @@ void ContactModel::ReadDrives() {
     drive.amplitude = spec.amplitude;
     drive.omega = spec.omega;
     drive.phase = spec.phase;
+    drive.motion = spec.linear ? Drive::Motion::kLinear : Drive::Motion::kSine;
+    drive.speed = spec.speed;
     body_drive_[drive.body] = static_cast<int>(drives_.size());
     drives_.push_back(drive);
   }
@@ -321,6 +327,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       if (const std::optional<ParamError> e = ValidateLawParams(pair.params)) {
         resolve.Fail(fmt::format("{}={} {}", e->key, e->value, e->requirement));
       }
+      AddFriction(g1, g2, spec, pair_name, resolve, &pair);
 
       slot_count_ += pair.slots;
       pair_index_.emplace(key, static_cast<int>(pairs_.size()));
@@ -333,6 +340,22 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
     resolve.Fail(fmt::format("geom1={} geom2={} cover no pair of geoms that can touch",
                              spec.geom1, spec.geom2));
   }
+}
+
+void ContactModel::AddFriction(int g1, int g2, const PairTagSpec& spec,
+                               const std::string& pair_name, const TagResolver& resolve,
+                               GeomPair* pair) {
+  const PairFriction friction = ResolvePairFriction(model_, g1, g2, spec.friction, overrides_);
+  if (!friction.error.empty()) resolve.Fail(fmt::format("{}: {}", pair_name, friction.error));
+  if (friction.ignored_key) {
+    warnings_.push_back(resolve.Message(fmt::format(
+        "{}: {} is not read: the pair is frictionless (condim 1, as in MuJoCo)", pair_name,
+        *friction.ignored_key)));
+  }
+  pair->friction = friction.params;
+  pair->condim = friction.condim;
+  pair->friction_mass = PairFrictionMass(model_, pair->body[0], pair->body[1]);
+  pair->friction_inertia = PairFrictionMass(model_, pair->body[0], pair->body[1], true);
 }
 
 void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,

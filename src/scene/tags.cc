@@ -108,6 +108,59 @@ std::string_view Label(const TagContext& ctx, std::string_view name,
   return label;
 }
 
+// A friction key of a contactlaw tag into f; false for any other key.
+bool ParseFrictionKey(const TagContext& ctx, const KeyValue& kv, FrictionTagSpec* f) {
+  const std::string_view k = kv.key;
+  auto non_negative = [&](std::string_view unit) {
+    const double v = ctx.Number(kv);
+    if (!(v >= 0.0)) ctx.FailValue(k, kv.value, fmt::format("must be >= 0{}", unit));
+    return v;
+  };
+  if (k == "friction") {
+    f->kind = ParseFrictionName(kv.value);
+    if (!f->kind) {
+      std::vector<std::string_view> names;
+      for (const FrictionInfo& model : FrictionModels()) names.push_back(model.name);
+      const std::string_view hint = NearestWord(kv.value, names.data(), names.size());
+      ctx.FailValue(k, kv.value,
+                    fmt::format("is not a friction model{} ({})",
+                                hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint),
+                                FrictionNameList()));
+    }
+  } else if (k == "mu" || k == "mu_static" || k == "mu_kinetic") {
+    (k == "mu" ? f->mu : k == "mu_static" ? f->mu_static : f->mu_kinetic) = non_negative("");
+  } else if (k == "stribeck_velocity" || k == "transition_velocity") {
+    (k == "stribeck_velocity" ? f->stribeck_velocity : f->transition_velocity) =
+        ctx.Positive(kv, "m/s");
+  } else if (k == "tangential_stiffness") {
+    f->tangential_stiffness = ctx.Positive(kv, "N/m");
+  } else if (k == "tangential_damping") {
+    f->tangential_damping = non_negative(" (N s/m)");
+  } else if (k == "bristle_stiffness") {
+    f->bristle_stiffness = ctx.Positive(kv, "1/m, per newton of normal force");
+  } else if (k == "bristle_damping") {
+    f->bristle_damping = non_negative(" (s/m, per newton of normal force)");
+  } else if (k == "viscous") {
+    f->viscous = non_negative(" (N s/m)");
+  } else {
+    return false;
+  }
+  if (f->first_key.empty()) f->first_key = std::string(k);
+  return true;
+}
+
+// Friction keys that exclude each other or disagree.
+void CheckFrictionKeys(const TagContext& ctx, const FrictionTagSpec& f) {
+  if (f.mu && (f.mu_static || f.mu_kinetic)) {
+    ctx.Fail(fmt::format("mu={} and {} exclude each other (mu sets both)", *f.mu,
+                         f.mu_static ? "mu_static" : "mu_kinetic"));
+  }
+  if (f.mu_static && f.mu_kinetic && *f.mu_kinetic > *f.mu_static) {
+    ctx.FailValue("mu_kinetic", fmt::format("{}", *f.mu_kinetic),
+                  fmt::format("must be in [0, mu_static={}]", *f.mu_static));
+  }
+}
+
 }  // namespace
 
 std::string_view NearestWord(std::string_view word,
@@ -180,6 +233,7 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
 
   for (const KeyValue& kv : ctx.Split(data, kPairKeys)) {
     const std::string_view k = kv.key;
+    if (ParseFrictionKey(ctx, kv, &spec.friction)) continue;
     if (k == "geom1") {
       spec.geom1 = std::string(kv.value);
     } else if (k == "geom2") {
@@ -235,6 +289,7 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
   if (spec.geom1.empty()) ctx.Fail("missing key geom1");
   if (spec.geom2.empty()) ctx.Fail("missing key geom2");
   if (!spec.law) ctx.Fail("missing key law");
+  CheckFrictionKeys(ctx, spec.friction);
   // a key only some laws read, on a law that does not: it would be ignored
   if (spec.dissipation && !ReadsDissipation(*spec.law)) {
     ctx.Fail(fmt::format("dissipation={} is not read by law={}, which takes: {}",
@@ -264,13 +319,20 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
   spec.label = std::string(Label(ctx, name, kDriveTagPrefix));
   bool has_amplitude = false;
   bool has_omega = false;
+  bool has_speed = false;
 
   for (const KeyValue& kv : ctx.Split(data, kDriveKeys)) {
     const std::string_view k = kv.key;
     if (k == "body") {
       spec.body = std::string(kv.value);
     } else if (k == "motion") {
-      if (kv.value != "sine") ctx.FailValue(k, kv.value, "must be sine");
+      if (kv.value != "sine" && kv.value != "linear") {
+        ctx.FailValue(k, kv.value, "must be sine or linear");
+      }
+      spec.linear = kv.value == "linear";
+    } else if (k == "speed") {
+      spec.speed = ctx.Number(kv);
+      has_speed = true;
     } else if (k == "axis") {
       if (kv.value == "x") {
         spec.axis = {1, 0, 0};
@@ -310,6 +372,16 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
     }
   }
   if (spec.body.empty()) ctx.Fail("missing key body");
+  if (spec.linear) {
+    // p(t) = pos + axis speed t: the sine's keys would be ignored
+    if (!has_speed) ctx.Fail("missing key speed (m/s, a finite number) for motion=linear");
+    if (has_amplitude || has_omega) {
+      ctx.Fail(fmt::format("{} is not read by motion=linear, which takes: axis, speed (m/s)",
+                           has_amplitude ? "amplitude" : "omega"));
+    }
+    return spec;
+  }
+  if (has_speed) ctx.Fail("speed is not read by motion=sine, which takes: axis, amplitude, omega, phase");
   if (!has_amplitude) ctx.Fail("missing key amplitude");
   if (!has_omega) ctx.Fail("missing key omega");
   return spec;

@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "contactlaws/friction.h"
 #include "contactlaws/law.h"
 
 namespace contactlaws {
@@ -24,14 +25,33 @@ namespace contactlaws {
 inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
 inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
 
-inline constexpr std::array<std::string_view, 15> kPairKeys = {
+inline constexpr std::array<std::string_view, 26> kPairKeys = {
     "geom1",         "geom2",    "law",      "restitution",
     "stiffness",     "exponent", "linear_stiffness", "damping",
     "dissipation",   "min_impact_velocity", "allow_tension", "youngs1",
-    "poisson1",      "youngs2",  "poisson2"};
+    "poisson1",      "youngs2",  "poisson2",
+    // friction (friction.h)
+    "friction", "mu", "mu_static", "mu_kinetic", "stribeck_velocity", "transition_velocity",
+    "tangential_stiffness", "tangential_damping", "bristle_stiffness", "bristle_damping",
+    "viscous"};
 
-inline constexpr std::array<std::string_view, 6> kDriveKeys = {
-    "body", "motion", "axis", "amplitude", "omega", "phase"};
+inline constexpr std::array<std::string_view, 7> kDriveKeys = {
+    "body", "motion", "axis", "amplitude", "omega", "phase", "speed"};
+
+// The friction keys of a contactlaw tag as written; the pair's geoms give
+// what is missing (ContactModel).
+struct FrictionTagSpec {
+  std::optional<FrictionKind> kind;
+  std::optional<double> mu, mu_static, mu_kinetic;  // >= 0
+  std::optional<double> stribeck_velocity, transition_velocity;  // m/s > 0
+  std::optional<double> tangential_stiffness;  // N/m > 0
+  std::optional<double> tangential_damping;    // N s/m >= 0
+  std::optional<double> bristle_stiffness;     // 1/m > 0
+  std::optional<double> bristle_damping;       // s/m >= 0
+  std::optional<double> viscous;               // N s/m >= 0
+  // the first friction key given (for the warning on a frictionless pair)
+  std::string first_key;
+};
 
 // A contactlaw tag as written, before it meets a model: numbers parsed and
 // range-checked where the range does not depend on the law.
@@ -50,12 +70,16 @@ struct PairTagSpec {
   std::optional<bool> allow_tension;
   // materials: E in Pa (> 0), nu in (-1, 0.5); all four or none
   std::optional<double> youngs1, poisson1, youngs2, poisson2;
+  FrictionTagSpec friction;
 };
 
 // A contactdrive tag: the body's position is prescribed as
-//   p(t) = p_ref + axis * amplitude * sin(omega t + phase),
+//   motion=sine (default): p(t) = p_ref + axis * amplitude * sin(omega t + phase),
+//   motion=linear:         p(t) = p_ref + axis * speed * t,
 // p_ref the body's pos in the MJCF, axis a unit vector.
 struct DriveTagSpec {
+  bool linear = false;
+  double speed = 0.0;  // m/s, linear
   std::string label;
   std::string body;
   std::array<double, 3> axis = {0.0, 0.0, 1.0};  // normalized

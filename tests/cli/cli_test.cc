@@ -132,7 +132,8 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
   EXPECT_EQ(log.substr(0, log.find('\n')),
             "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
             "impact_velocity,separation_velocity,max_approach_velocity,restitution_post,chained,"
-            "max_depth,max_force");
+            "max_depth,max_force,tangential_impact_velocity,tangential_separation_velocity,"
+            "tangential_restitution,spin_before,spin_after");
   EXPECT_EQ(log.find("\nhunt-crossley,0.8,ball-floor,ball,floor,1,1,0.42"), log.find('\n'));
 }
 
@@ -340,7 +341,8 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   EXPECT_EQ(impacts[0],
             "law,restitution,pair,geom1,geom2,index,points,time_contact,time_separation,"
             "impact_velocity,separation_velocity,max_approach_velocity,restitution_post,chained,"
-            "max_depth,max_force");
+            "max_depth,max_force,tangential_impact_velocity,tangential_separation_velocity,"
+            "tangential_restitution,spin_before,spin_after");
   EXPECT_EQ(impacts[1].rfind("hertz,1,ball-floor,ball,floor,1,1,0.04", 0), 0u) << impacts[1];
 
   const std::vector<std::string> summary = Lines(ReadFile(dir + "/summary.csv"));

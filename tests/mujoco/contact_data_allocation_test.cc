@@ -3,6 +3,7 @@
 // The hooks' per-step work allocates nothing: operator new is counted while
 // the test asks (its own executable: the replacement is process-wide).
 
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -65,6 +66,34 @@ TEST_F(HooksTest, StepsAllocateNothingInFlightOrInContact) {
   ASSERT_EQ(contacts.impacts().size(), 1u) << "the window must not open a new episode";
   EXPECT_GT(steps, 50);
   EXPECT_EQ(allocations, 0) << "over " << steps + 2000 << " steps";
+}
+
+TEST_F(HooksTest, SteppingASlidingThenStickingContactAllocatesNothing) {
+  // a block sliding to rest under coulomb friction, with rolling and
+  // torsional resistance (condim 6): the stick state is committed each step
+  UniqueModel m = Load(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1" condim="6" friction="0.5 0.005 0.001"/>
+    <body pos="0 0 0.0498"><freejoint/><geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:box" data="geom1=box geom2=floor law=hunt-crossley
+    restitution=0.5 stiffness=1e6 friction=coulomb"/></custom>
+</mujoco>)");
+  ContactModel cm(m.get(), "sliding box");
+  mjData* d = MakeData(m.get());
+  d->qvel[0] = 0.5;
+  ContactData contacts(cm, d);
+  for (int i = 0; i < 200; ++i) contacts.Step();  // the corners' episodes open
+  ASSERT_FALSE(contacts.latest().empty());
+  const size_t episodes = contacts.point_impacts().size();
+  count_allocations = true;
+  allocations = 0;
+  for (int i = 0; i < 3000; ++i) contacts.Step();  // slides (about 0.05 s) and sticks
+  count_allocations = false;
+  EXPECT_LT(std::abs(d->qvel[0]), 1e-3) << "the block must have stopped";
+  ASSERT_EQ(contacts.point_impacts().size(), episodes) << "no new episode in the window";
+  EXPECT_EQ(allocations, 0);
 }
 
 }  // namespace

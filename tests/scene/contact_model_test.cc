@@ -120,6 +120,42 @@ TEST_F(SceneTest, BadScenesAreRefusedByName) {
   }
 }
 
+TEST_F(SceneTest, FrictionComesFromTheGeomsAsMujocoCombinesThem) {
+  UniqueModel m = LoadModelString(R"(<mujoco>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1" friction="0.3 0.01 0.002" condim="4"/>
+    <geom name="ice" type="plane" size="1 1 0.1" pos="0 0 -1" condim="1"/>
+    <body name="ball" pos="0 0 0.2"><freejoint/>
+      <geom name="ball" type="sphere" size="0.1" friction="0.7 0.005 0.004" condim="1"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=1"/>
+    <text name="contactlaw:q" data="geom1=ball geom2=ice law=hertz stiffness=1 mu=0.5"/>
+  </custom>
+</mujoco>)", "f.xml");
+  const ContactModel cm(m.get(), "f.xml");
+  // the larger of each coefficient, and of condim: 4 has torsion, no rolling
+  const FrictionParams& p = cm.pairs()[0].friction;
+  EXPECT_EQ(p.kind, FrictionKind::kCoulomb);
+  EXPECT_EQ(p.mu_static, 0.7);
+  EXPECT_EQ(p.mu_kinetic, 0.7);
+  EXPECT_EQ(p.torsional, 0.01);
+  EXPECT_EQ(p.rolling, 0);
+  // condim 1: frictionless, and the tag's friction key is warned about
+  EXPECT_EQ(cm.pairs()[1].friction.kind, FrictionKind::kNone);
+  ASSERT_EQ(cm.warnings().size(), 1u);
+  EXPECT_EQ(cm.warnings()[0], "f.xml: contactlaw:q: (ball, ice): mu is not read: the pair is "
+                              "frictionless (condim 1, as in MuJoCo)");
+  // --friction and --mu override every pair that has friction
+  Overrides overrides;
+  overrides.friction = FrictionKind::kLuGre;
+  overrides.mu = 0.2;
+  const ContactModel over(m.get(), "f.xml", overrides);
+  EXPECT_EQ(over.pairs()[0].friction.kind, FrictionKind::kLuGre);
+  EXPECT_EQ(over.pairs()[0].friction.mu_kinetic, 0.2);
+  EXPECT_EQ(over.pairs()[1].friction.kind, FrictionKind::kNone);
+}
+
 TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   SimulationOptions options;
   options.overrides.law = LawKind::kKelvinVoigt;

@@ -57,6 +57,56 @@ TEST(TagsTest, BadValuesAreNamed) {
             "s.xml: contactlaw:t: 'stiffness' is not of the form key=value");
 }
 
+TEST(TagsTest, FrictionKeysAreReadAndBadOnesNamed) {
+  const PairTagSpec spec = ParsePairTag(
+      "s.xml", "contactlaw:t",
+      "geom1=a geom2=b law=hertz stiffness=1 friction=stribeck mu_static=0.6 mu_kinetic=0.4 "
+      "stribeck_velocity=0.02 tangential_stiffness=1e5 tangential_damping=3 viscous=0.1");
+  EXPECT_EQ(spec.friction.kind, FrictionKind::kStribeck);
+  EXPECT_EQ(spec.friction.mu_static, 0.6);
+  EXPECT_EQ(spec.friction.mu_kinetic, 0.4);
+  EXPECT_EQ(spec.friction.stribeck_velocity, 0.02);
+  EXPECT_EQ(spec.friction.tangential_stiffness, 1e5);
+  EXPECT_EQ(spec.friction.tangential_damping, 3);
+  EXPECT_EQ(spec.friction.viscous, 0.1);
+  const std::string ok = "geom1=a geom2=b law=hertz stiffness=1 ";
+  EXPECT_EQ(PairTagError(ok + "friction=coulmb"),
+            "s.xml: contactlaw:t: friction=coulmb is not a friction model (did you mean "
+            "'coulomb'?) (" + FrictionNameList() + ")");
+  EXPECT_EQ(PairTagError(ok + "mu=-0.1"), "s.xml: contactlaw:t: mu=-0.1 must be >= 0");
+  EXPECT_EQ(PairTagError(ok + "mu_static=0.3 mu_kinetic=0.5"),
+            "s.xml: contactlaw:t: mu_kinetic=0.5 must be in [0, mu_static=0.3]");
+  EXPECT_EQ(PairTagError(ok + "mu=0.3 mu_static=0.5"),
+            "s.xml: contactlaw:t: mu=0.3 and mu_static exclude each other (mu sets both)");
+  EXPECT_EQ(PairTagError(ok + "tangential_stiffness=0"),
+            "s.xml: contactlaw:t: tangential_stiffness=0 must be > 0 (N/m)");
+  EXPECT_EQ(PairTagError(ok + "bristle_stiffness=-1"),
+            "s.xml: contactlaw:t: bristle_stiffness=-1 must be > 0 (1/m, per newton of normal "
+            "force)");
+}
+
+TEST(TagsTest, ALinearDriveNeedsAFiniteSpeed) {
+  const DriveTagSpec belt =
+      ParseDriveTag("s.xml", "contactdrive:belt", "body=belt motion=linear axis=x speed=0.5");
+  EXPECT_TRUE(belt.linear);
+  EXPECT_EQ(belt.speed, 0.5);
+  auto error = [](const std::string& data) {
+    try {
+      ParseDriveTag("s.xml", "contactdrive:belt", data);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("body=belt motion=linear axis=x"),
+            "s.xml: contactdrive:belt: missing key speed (m/s, a finite number) for motion=linear");
+  EXPECT_EQ(error("body=belt motion=linear axis=x speed=inf"),
+            "s.xml: contactdrive:belt: speed=inf is not a finite number");
+  EXPECT_EQ(error("body=belt motion=linear speed=1 amplitude=1"),
+            "s.xml: contactdrive:belt: amplitude is not read by motion=linear, which takes: "
+            "axis, speed (m/s)");
+}
+
 TEST(TagsTest, ADriveTagIsReadWhole) {
   const DriveTagSpec spec = ParseDriveTag("s.xml", "contactdrive:table",
                                           "body=table motion=sine axis=0,3,4 amplitude=0.1 "

@@ -72,7 +72,7 @@ std::string StackXml(const Stack& s) {
 )",
         i, i * s.offset, kHalf * (2 * i + 1), i * s.turn, kHalf, kMass);
     tags += fmt::format(
-        R"(<text name="contactlaw:t{0}" data="geom1={1} geom2=c{0} law=hunt-crossley restitution=0.5 stiffness={2} exponent={3} min_impact_velocity={4}"/>
+        R"(<text name="contactlaw:t{0}" data="geom1={1} geom2=c{0} law=hunt-crossley restitution=0.5 stiffness={2} exponent={3} min_impact_velocity={4} friction=none"/>
 )",
         i, i == 0 ? std::string("floor") : fmt::format("c{}", i - 1), kStiffness, kExponent,
         kMinImpactVelocity);

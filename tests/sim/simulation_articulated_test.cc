@@ -36,7 +36,7 @@ std::string PendulumXml(const std::string& tag, double spin) {
       <geom type="sphere" size="0.1" mass="1"/></body>
   </worldbody>
   <keyframe><key qpos="0.38 5 5 1 1 0 0 0" qvel="{} 0 0 0 0 0 3"/></keyframe>
-  <custom><text name="contactlaw:bob-wall" data="geom1=bob geom2=wall {}"/></custom>
+  <custom><text name="contactlaw:bob-wall" data="geom1=bob geom2=wall friction=none {}"/></custom>
 </mujoco>)",
                      spin, tag);
 }

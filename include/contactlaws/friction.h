@@ -1,0 +1,163 @@
+// Copyright contactlaws authors.
+//
+// Friction models: the tangential (and rolling and torsional) side of a
+// contact point, as pure functions of plain numbers (no MuJoCo types, no
+// globals, no I/O), like the normal laws of law.h.
+//
+// Convention, the same in every model:
+//   normal force F_n >= 0 (N), from the pair's normal law;
+//   slip v (m/s): the velocity of body[1] relative to body[0] at the contact
+//     point, in the tangent plane (world frame vectors, normal component
+//     removed by the caller);
+//   stretch du (m): the tangential displacement of body[1]'s material point
+//     relative to body[0]'s since the last committed step, in the plane;
+//   force F (N): the friction force on body[1] (body[0] gets -F); it opposes
+//     the slip.
+// The tangent plane needs no basis: every vector lives in the world frame,
+// projected on the plane of the current normal.
+//
+// References: F. Marques, P. Flores, J. C. P. Claro, H. M. Lankarani, "A survey
+// and comparison of several friction force models for dynamic analysis of
+// multibody mechanical systems", Nonlinear Dyn. 86:1407-1443 (2016);
+// S. Andersson, A. Soderberg, S. Bjorklund, "Friction models for sliding dry,
+// boundary and mixed lubricated contacts", Tribol. Int. 40:580-587 (2007);
+// C. Canudas de Wit, H. Olsson, K. J. Astrom, P. Lischinsky, "A new model for
+// control of systems with friction", IEEE Trans. Autom. Control 40:419-425
+// (1995); R. Featherstone, Rigid Body Dynamics Algorithms (2008), 11.8.
+
+#ifndef CONTACTLAWS_FRICTION_H_
+#define CONTACTLAWS_FRICTION_H_
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contactlaws/law.h"
+
+namespace contactlaws {
+
+// A friction model: the index of its row in FrictionModels().
+enum class FrictionKind : int {
+  kNone = 0,         // no friction (the behaviour of a tag before friction existed)
+  kCoulomb = 1,      // stick spring capped at mu_s F_n; slides at mu_k F_n
+  kRegularized = 2,  // mu(|v|) of Drake/Simbody: no state, creeps under load
+  kStribeck = 3,     // as coulomb, sliding at mu(|v|) of Andersson et al.
+  kLuGre = 4,        // bristle state z per contact (Canudas de Wit et al.)
+};
+
+// One row of the table of friction models.
+struct FrictionInfo {
+  std::string_view name;        // as written in tags and on the command line
+  std::string_view formula;     // one line
+  std::string_view state;       // what it remembers per contact
+  std::string_view parameters;  // the tag keys it reads, with units and ranges
+  std::string_view reference;
+  FrictionKind kind = FrictionKind::kNone;  // its index (set by FrictionModels())
+};
+
+const std::vector<FrictionInfo>& FrictionModels();
+const FrictionInfo& Friction(FrictionKind kind);
+std::string_view FrictionName(FrictionKind kind);
+// "none, coulomb, ...": every name, for messages.
+const std::string& FrictionNameList();
+std::optional<FrictionKind> ParseFrictionName(std::string_view name);
+
+// Defaults (docs/friction.md gives the reasons).
+// Drake's default stiction tolerance (MultibodyPlant, 1e-4 m/s) is the slip
+// at which the regularized curve reaches mu_s.
+inline constexpr double kDefaultTransitionVelocity = 1e-4;  // m/s
+// Andersson et al. (2007) put the Stribeck velocity of dry contacts at
+// 1e-3 ... 1e-2 m/s; Canudas de Wit et al. (1995) use 1e-3.
+inline constexpr double kDefaultStribeckVelocity = 1e-2;  // m/s
+// Canudas de Wit et al. (1995) table 1, per newton of normal load:
+// sigma0 = 1e5 N/m, sigma1 = sqrt(1e5) N s/m at F_n = 1 N.
+inline constexpr double kDefaultBristleStiffness = 1e5;  // 1/m (x F_n: N/m)
+// Mindlin (1949): k_t / k_n = 4 G* / E* = 2 (1 - nu) / (2 - nu) for two
+// bodies of one material; nu = 0.3 (steel, most metals).
+inline constexpr double kDefaultPoisson = 0.3;
+inline constexpr double kMindlinRatio = 2 * (1 - kDefaultPoisson) / (2 - kDefaultPoisson);
+
+// The friction of one pair, resolved (tag, geoms, overrides) and validated.
+struct FrictionParams {
+  FrictionKind kind = FrictionKind::kNone;
+  double mu_static = 0;    // >= 0
+  double mu_kinetic = 0;   // in [0, mu_static]
+  double transition_velocity = kDefaultTransitionVelocity;  // m/s > 0 (regularized)
+  double stribeck_velocity = kDefaultStribeckVelocity;      // m/s > 0 (stribeck, lugre)
+  // k_t, N/m > 0; unset: Mindlin, kMindlinRatio x dF_n/dd of the normal law
+  std::optional<double> tangential_stiffness;
+  // c_t, N s/m >= 0; unset: 2 sqrt(k_t m), m the pair's mass (ContactModel)
+  std::optional<double> tangential_damping;
+  double bristle_stiffness = kDefaultBristleStiffness;  // sigma0, 1/m > 0 (x F_n)
+  std::optional<double> bristle_damping;  // sigma1, s/m >= 0; unset: sqrt(sigma0 x 1 m)
+  double viscous = 0;      // sigma2, N s/m >= 0 (stribeck, lugre)
+  double torsional = 0;    // m >= 0: torsional torque cap / F_n (condim >= 4)
+  double rolling = 0;      // m >= 0: rolling torque cap / F_n (condim 6)
+};
+
+// What is wrong with a friction parameter (key, value, range), or nullopt.
+std::optional<ParamError> ValidateFrictionParams(const FrictionParams& params);
+
+// dF/dd of the normal law's elastic part at depth d > 0, N/m: n K d^(n-1),
+// or k (Kelvin-Voigt).
+double NormalStiffness(const LawParams& law, double depth);
+// d(dF/dd)/dd, N/m^2.
+double NormalStiffnessSlope(const LawParams& law, double depth);
+
+// mu at slip speed s (m/s) while sliding: mu_k (coulomb), Andersson's
+// mu_k + (mu_s - mu_k) exp(-(s / v_s)^2) (stribeck, lugre), the regularized
+// curve (regularized).
+double SlidingMu(const FrictionParams& params, double speed);
+
+// A 3-vector spring of the stick state (the tangential force, or a rolling
+// or torsional torque), capped at a limit. Incremental: the committed value,
+// scaled down with the stiffness when it fell since the commit (an
+// unloading Mindlin contact), plus -k x the stretch since the commit.
+struct CappedSpringInput {
+  double committed[3] = {0, 0, 0};  // value at the last commit, in the plane
+  double stretch[3] = {0, 0, 0};    // since the last commit (m or rad)
+  double rate[3] = {0, 0, 0};       // its rate (m/s or rad/s)
+  double stiffness = 0;             // k now (N/m or N m/rad)
+  double committed_stiffness = 0;   // k at the last commit
+  double stiffness_rate = 0;        // dk/dt now
+  double damping = 0;               // c (N s/m or N m s/rad), while sticking
+  double stick_limit = 0;           // cap while sticking (N or N m)
+  double slide_limit = 0;           // cap while sliding
+  bool was_sliding = false;         // at the last commit
+};
+struct CappedSpringOutput {
+  double force[3] = {0, 0, 0};   // on body[1]
+  double spring[3] = {0, 0, 0};  // the spring's value, to commit (rescaled to the cap)
+  bool sliding = false;
+  double stored_energy = 0;      // |spring|^2 / (2k), J
+  double dissipated_power = 0;   // W, >= 0
+};
+CappedSpringOutput CappedSpring(const CappedSpringInput& in);
+
+// The tangential friction of one contact point.
+struct FrictionInput {
+  double normal_force = 0;     // F_n, N
+  double slip[3] = {0, 0, 0};  // m/s, in the plane
+  // the stick state of coulomb and stribeck (committed spring force, N) or
+  // lugre (committed bristle deflection z, m), in the plane
+  double committed[3] = {0, 0, 0};
+  double stretch[3] = {0, 0, 0};  // m, in the plane
+  bool was_sliding = false;
+  double stiffness = 0;             // k_t now, N/m
+  double committed_stiffness = 0;   // k_t at the commit
+  double stiffness_rate = 0;        // dk_t/dt, N/(m s)
+  double damping = 0;               // c_t, N s/m
+};
+struct FrictionOutput {
+  double force[3] = {0, 0, 0};  // on body[1], N
+  double state[3] = {0, 0, 0};  // to commit (spring force, or z)
+  bool sliding = false;
+  double stored_energy = 0;     // J
+  double dissipated_power = 0;  // W
+};
+FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInput& in);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_FRICTION_H_

@@ -1,0 +1,169 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/friction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace contactlaws {
+namespace {
+
+double Dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double Norm(const double a[3]) { return std::sqrt(Dot(a, a)); }
+
+// 10 x^3 - 15 x^4 + 6 x^5 on [0, 1]: 0 to 1 with zero slope and curvature at
+// both ends (Drake's and Simbody's step).
+double Step5(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * x * (10 + x * (-15 + 6 * x));
+}
+
+// Drake's regularized mu(s), s = |v| / v_t: mu_s s (2 - s) up to s = 1,
+// then step5 down to mu_k at s = 3 (MultibodyPlant point contact).
+double RegularizedMu(const FrictionParams& p, double speed) {
+  const double s = speed / p.transition_velocity;
+  if (s < 1) return p.mu_static * s * (2 - s);
+  return p.mu_static - (p.mu_static - p.mu_kinetic) * Step5((s - 1) / 2);
+}
+
+// Andersson et al. (2007), eq. 1 with delta = 2 and no viscous term.
+double StribeckMu(const FrictionParams& p, double speed) {
+  const double r = speed / p.stribeck_velocity;
+  return p.mu_kinetic + (p.mu_static - p.mu_kinetic) * std::exp(-r * r);
+}
+
+FrictionOutput Regularized(const FrictionParams& p, const FrictionInput& in) {
+  FrictionOutput out;
+  const double speed = Norm(in.slip);
+  if (!(speed > 0)) return out;
+  const double magnitude = RegularizedMu(p, speed) * in.normal_force;
+  for (int i = 0; i < 3; ++i) out.force[i] = -magnitude * in.slip[i] / speed;
+  out.sliding = true;
+  out.dissipated_power = magnitude * speed;
+  return out;
+}
+
+// The bristles of LuGre, in displacement form: dz = du - sigma0 |du| z / g,
+// g = mu(|v|) (the load scales the force, not z). Integrated exactly along
+// the straight stretch since the commit, so that a stiff bristle is stable
+// at any step: z = z_ss + (z_c - z_ss) exp(-sigma0 |du| / g).
+FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
+  FrictionOutput out;
+  const double speed = Norm(in.slip);
+  const double g = std::max(StribeckMu(p, speed), 1e-300);
+  const double sigma0 = p.bristle_stiffness;
+  const double sigma1 = p.bristle_damping.value_or(std::sqrt(sigma0));
+  const double du = Norm(in.stretch);
+  const double decay = std::exp(-sigma0 * du / g);
+  double z[3], zdot[3];
+  for (int i = 0; i < 3; ++i) {
+    const double steady = du > 0 ? g / sigma0 * in.stretch[i] / du : 0.0;
+    z[i] = steady + (in.committed[i] - steady) * decay;
+  }
+  for (int i = 0; i < 3; ++i) zdot[i] = in.slip[i] - sigma0 * speed * z[i] / g;
+  const double fn = in.normal_force;
+  for (int i = 0; i < 3; ++i) {
+    out.force[i] = -(fn * (sigma0 * z[i] + sigma1 * zdot[i]) + p.viscous * in.slip[i]);
+    out.state[i] = z[i];
+  }
+  out.sliding = Norm(z) > 0.5 * g / sigma0;
+  out.stored_energy = 0.5 * fn * sigma0 * Dot(z, z);
+  // what the bodies lose, less what the bristles store
+  out.dissipated_power = -Dot(out.force, in.slip) - fn * sigma0 * Dot(z, zdot);
+  return out;
+}
+
+}  // namespace
+
+double NormalStiffness(const LawParams& law, double depth) {
+  if (Law(law.kind).family == LawFamily::kLinear) return law.linear_stiffness;
+  return law.exponent * law.stiffness * std::pow(depth, law.exponent - 1);
+}
+
+double NormalStiffnessSlope(const LawParams& law, double depth) {
+  if (Law(law.kind).family == LawFamily::kLinear || law.exponent == 1) return 0;
+  return law.exponent * (law.exponent - 1) * law.stiffness * std::pow(depth, law.exponent - 2);
+}
+
+double SlidingMu(const FrictionParams& params, double speed) {
+  switch (params.kind) {
+    case FrictionKind::kRegularized: return RegularizedMu(params, speed);
+    case FrictionKind::kStribeck:
+    case FrictionKind::kLuGre: return StribeckMu(params, speed);
+    case FrictionKind::kCoulomb: return params.mu_kinetic;
+    case FrictionKind::kNone: return 0;
+  }
+  return 0;
+}
+
+CappedSpringOutput CappedSpring(const CappedSpringInput& in) {
+  CappedSpringOutput out;
+  const double k = in.stiffness;
+  // incremental: the committed value (scaled down with a falling stiffness,
+  // so that unloading stores no energy it was not given) minus k du
+  const double scale =
+      in.committed_stiffness > k && in.committed_stiffness > 0 ? k / in.committed_stiffness : 1.0;
+  double trial[3], total[3];
+  for (int i = 0; i < 3; ++i) {
+    trial[i] = in.committed[i] * scale - k * in.stretch[i];
+    total[i] = trial[i] - in.damping * in.rate[i];
+  }
+  // the spring and its damper together against the cap: a damper that
+  // resists the slip cannot hold the contact beyond the limit
+  const double size = Norm(total);
+  const double limit = in.was_sliding ? in.slide_limit : in.stick_limit;
+  if (size > limit) {
+    // sliding: the force sits at the cap, and so does the committed spring
+    out.sliding = true;
+    for (int i = 0; i < 3; ++i) out.force[i] = out.spring[i] = total[i] * limit / size;
+    out.dissipated_power = -Dot(out.force, in.rate);
+  } else {
+    // stick: the spring holds, its damper acts
+    for (int i = 0; i < 3; ++i) {
+      out.spring[i] = trial[i];
+      out.force[i] = total[i];
+    }
+    // the damper's power, and what a changing stiffness takes from the
+    // spring (|F|^2 |dk/dt| / 2k^2: loading at a fixed force, unloading scaled)
+    out.dissipated_power = in.damping * Dot(in.rate, in.rate);
+    if (k > 0) out.dissipated_power += Dot(trial, trial) * std::abs(in.stiffness_rate) / (2 * k * k);
+  }
+  if (k > 0) out.stored_energy = Dot(out.spring, out.spring) / (2 * k);
+  return out;
+}
+
+FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInput& in) {
+  switch (params.kind) {
+    case FrictionKind::kNone: return FrictionOutput();
+    case FrictionKind::kRegularized: return Regularized(params, in);
+    case FrictionKind::kLuGre: return LuGre(params, in);
+    case FrictionKind::kCoulomb:
+    case FrictionKind::kStribeck: break;
+  }
+  // coulomb and stribeck: the stick spring, sliding at mu(|v|) F_n
+  CappedSpringInput spring;
+  for (int i = 0; i < 3; ++i) {
+    spring.committed[i] = in.committed[i];
+    spring.stretch[i] = in.stretch[i];
+    spring.rate[i] = in.slip[i];
+  }
+  spring.stiffness = in.stiffness;
+  spring.committed_stiffness = in.committed_stiffness;
+  spring.stiffness_rate = in.stiffness_rate;
+  spring.damping = in.damping;
+  spring.stick_limit = params.mu_static * in.normal_force;
+  spring.slide_limit = SlidingMu(params, Norm(in.slip)) * in.normal_force;
+  spring.was_sliding = in.was_sliding;
+  const CappedSpringOutput s = CappedSpring(spring);
+  FrictionOutput out;
+  for (int i = 0; i < 3; ++i) {
+    out.force[i] = s.force[i] - params.viscous * in.slip[i];
+    out.state[i] = s.spring[i];
+  }
+  out.sliding = s.sliding;
+  out.stored_energy = s.stored_energy;
+  out.dissipated_power = s.dissipated_power + params.viscous * Dot(in.slip, in.slip);
+  return out;
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,176 @@
+// Copyright contactlaws authors.
+//
+// The friction of a contact point (ContactData::AddFriction): the slip of
+// body[1] relative to body[0], the stretch of the stick springs since the
+// last committed step (read from the stage's own positions: the anchors are
+// points fixed on the two bodies, and the bodies' orientations), the kernels
+// of friction.h, and the forces and torques on the two bodies, equal and
+// opposite. A pure function of the state it is given and the committed
+// memory, like the normal law.
+
+#include <algorithm>
+#include <cmath>
+
+#include "contactlaws/contact_data.h"
+#include "contactlaws/friction.h"
+#include "contactlaws/kinematics.h"
+
+namespace contactlaws {
+namespace {
+
+// v minus its component along the unit normal n.
+void Project(const mjtNum n[3], mjtNum v[3]) {
+  const mjtNum along = mju_dot3(v, n);
+  for (int i = 0; i < 3; ++i) v[i] -= along * n[i];
+}
+
+// The committed vector v rotated into the plane of the current normal n:
+// projected, and rescaled to its size (its size is what the spring stores).
+void ProjectKeepingSize(const mjtNum n[3], mjtNum v[3]) {
+  const mjtNum size = mju_norm3(v);
+  Project(n, v);
+  const mjtNum projected = mju_norm3(v);
+  if (projected > 0) mju_scl3(v, v, size / projected);
+}
+
+// World position of a point given in body's frame.
+void BodyPoint(const mjData* d, int body, const double local[3], mjtNum world[3]) {
+  mju_rotVecMat(world, local, d->xmat + 9 * body);
+  mju_addTo3(world, d->xpos + 3 * body);
+}
+
+// The rotation vector (world frame) of body since it had orientation q0.
+void RotationSince(const mjData* d, int body, const double q0[4], mjtNum rotation[3]) {
+  mjtNum inverse[4], dq[4];
+  mju_negQuat(inverse, q0);
+  mju_mulQuat(dq, d->xquat + 4 * body, inverse);
+  mju_quat2Vel(rotation, dq, 1.0);
+}
+
+}  // namespace
+
+void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e) {
+  const mjtNum* n = con.frame;
+  const int b0 = pair.body[0];
+  const int b1 = pair.body[1];
+  // slip and spin of body[1] relative to body[0] (the world and driven
+  // bodies do not turn)
+  mjtNum v0[3], v1[3];
+  PointVelocity(b0, con.pos, v0);
+  PointVelocity(b1, con.pos, v1);
+  mju_sub3(e->slip, v1, v0);
+  Project(n, e->slip);
+  auto spin = [&](int b) { return model_.FindDrive(b) ? nullptr : d_->cvel + 6 * b; };
+  for (int i = 0; i < 3; ++i) {
+    e->spin[i] = (spin(b1) ? spin(b1)[i] : 0.0) - (spin(b0) ? spin(b0)[i] : 0.0);
+  }
+  const FrictionParams& params = pair.friction;
+  if (params.kind == FrictionKind::kNone) return;
+
+  // the committed state, turned into the current tangent plane, and the
+  // stretch of the spring since: the anchors' relative displacement
+  FrictionInput in;
+  FrictionState committed;
+  if (e->episode >= 0) {
+    committed = episodes_.CommittedFriction(e->episode);
+    const double(&anchors)[2][3] = episodes_.Anchors(e->episode);
+    mjtNum p0[3], p1[3];
+    BodyPoint(d_, b0, anchors[0], p0);
+    BodyPoint(d_, b1, anchors[1], p1);
+    mju_sub3(in.stretch, p1, p0);
+    Project(n, in.stretch);
+    ProjectKeepingSize(n, committed.spring);
+  }
+  mju_copy3(in.committed, committed.spring);
+  mju_copy3(in.slip, e->slip);
+  in.was_sliding = committed.sliding;
+  in.normal_force = std::max(e->force, 0.0);
+
+  // k_t: the tag's, or Mindlin's share of the normal law's stiffness here
+  in.stiffness = params.tangential_stiffness.value_or(kMindlinRatio *
+                                                      NormalStiffness(pair.params, e->depth));
+  in.stiffness_rate = params.tangential_stiffness
+                          ? 0.0
+                          : kMindlinRatio * NormalStiffnessSlope(pair.params, e->depth) *
+                                e->depth_rate;
+  in.committed_stiffness = committed.stiffness;
+  in.damping =
+      params.tangential_damping.value_or(2 * std::sqrt(in.stiffness * pair.friction_mass));
+
+  const FrictionOutput out = EvaluateFriction(params, in);
+  for (int b = 0; b < 2; ++b) {
+    mjtNum push[3];
+    mju_scl3(push, out.force, b == 1 ? 1.0 : -1.0);
+    AddPointForce(m_, d_, pair.body[b], con.pos, push, d_->qfrc_passive);
+  }
+  mju_copy3(e->friction, out.force);
+  e->friction_energy = out.stored_energy;
+  e->friction_power = out.dissipated_power;
+  FrictionState& next = e->friction_state;
+  mju_copy3(next.spring, out.state);
+  next.sliding = out.sliding;
+  next.stiffness = in.stiffness;
+  mju_copy4(next.orientation[0], d_->xquat + 4 * b0);
+  mju_copy4(next.orientation[1], d_->xquat + 4 * b1);
+  if (params.torsional > 0 || params.rolling > 0) {
+    AddRollingResistance(pair, committed, in.stiffness, e);
+  }
+}
+
+void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
+                                       PointEvaluation* e) {
+  const double* n = e->normal;
+  const double fn = std::max(e->force, 0.0);
+  // the relative rotation since the commit, split along the normal
+  // (torsion) and in the plane (rolling); so are the rate and the state
+  mjtNum r0[3] = {0, 0, 0}, r1[3] = {0, 0, 0};
+  if (e->episode >= 0) {
+    RotationSince(d_, pair.body[0], c.orientation[0], r0);
+    RotationSince(d_, pair.body[1], c.orientation[1], r1);
+  }
+  mjtNum rotation[3];
+  mju_sub3(rotation, r1, r0);
+  const double lengths[2] = {pair.friction.torsional, pair.friction.rolling};
+  for (int part = 0; part < 2; ++part) {
+    if (!(lengths[part] > 0)) continue;
+    CappedSpringInput in;
+    mjtNum state[3];
+    mju_copy3(state, c.torque);
+    mju_copy3(in.stretch, rotation);
+    mju_copy3(in.rate, e->spin);
+    if (part == 0) {
+      // along n
+      mju_scl3(state, n, mju_dot3(state, n));
+      mju_scl3(in.stretch, n, mju_dot3(in.stretch, n));
+      mju_scl3(in.rate, n, mju_dot3(in.rate, n));
+    } else {
+      Project(n, state);
+      ProjectKeepingSize(n, state);
+      Project(n, in.stretch);
+      Project(n, in.rate);
+    }
+    // k l^2: the tangential spring's stiffness over the lever l, so that
+    // the cap l F_n is reached at the same stretch over l; critically
+    // damped with the pair's moment of inertia
+    const double l2 = lengths[part] * lengths[part];
+    mju_copy3(in.committed, state);
+    in.stiffness = k * l2;
+    in.committed_stiffness = c.torque_stiffness[part];
+    in.damping = 2 * std::sqrt(in.stiffness * pair.friction_inertia);
+    in.stick_limit = in.slide_limit = lengths[part] * fn;
+    in.was_sliding = c.torque_sliding[part];
+    const CappedSpringOutput out = CappedSpring(in);
+    AddTorque(m_, d_, pair.body[1], out.force, d_->qfrc_passive);
+    mjtNum opposite[3];
+    mju_scl3(opposite, out.force, -1.0);
+    AddTorque(m_, d_, pair.body[0], opposite, d_->qfrc_passive);
+    mju_addTo3(e->friction_torque, out.force);
+    mju_addTo3(e->friction_state.torque, out.spring);
+    e->friction_state.torque_stiffness[part] = in.stiffness;
+    e->friction_state.torque_sliding[part] = out.sliding;
+    e->friction_energy += out.stored_energy;
+    e->friction_power += out.dissipated_power;
+  }
+}
+
+}  // namespace contactlaws

@@ -1,0 +1,94 @@
+// Copyright contactlaws authors.
+//
+// The friction kernels alone, against their formulas.
+
+#include "contactlaws/friction.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace contactlaws {
+namespace {
+
+FrictionParams Params(FrictionKind kind) {
+  FrictionParams p;
+  p.kind = kind;
+  p.mu_static = 0.5;
+  p.mu_kinetic = 0.3;
+  return p;
+}
+
+TEST(FrictionKernelTest, CoulombSticksWithoutCreepInsideTheLimitAndSlidesAtTheKineticCap) {
+  const FrictionParams p = Params(FrictionKind::kCoulomb);
+  FrictionInput in;
+  in.normal_force = 10;
+  in.stiffness = in.committed_stiffness = 1e4;
+  in.committed[0] = -2;   // holds 2 N against a slip along +x
+  in.stretch[0] = 1e-4;   // 1 N more
+  const FrictionOutput stick = EvaluateFriction(p, in);
+  EXPECT_FALSE(stick.sliding);
+  EXPECT_DOUBLE_EQ(stick.force[0], -3);  // the spring: no velocity needed to hold
+  EXPECT_DOUBLE_EQ(stick.stored_energy, 9 / 2e4);
+  EXPECT_DOUBLE_EQ(stick.dissipated_power, 0);
+  // beyond mu_s F_n = 5 N: slides, at the cap along the spring, then mu_k
+  in.stretch[0] = 1e-3;
+  const FrictionOutput slip = EvaluateFriction(p, in);
+  EXPECT_TRUE(slip.sliding);
+  EXPECT_DOUBLE_EQ(slip.force[0], -5);
+  in.was_sliding = true;
+  in.slip[0] = 0.1;
+  const FrictionOutput slide = EvaluateFriction(p, in);
+  EXPECT_DOUBLE_EQ(slide.force[0], -3);
+  EXPECT_DOUBLE_EQ(slide.dissipated_power, 3 * 0.1);
+}
+
+TEST(FrictionKernelTest, RegularizedCreepsAtTheSpeedItsCurveGivesTheLoad) {
+  const FrictionParams p = Params(FrictionKind::kRegularized);
+  FrictionInput in;
+  in.normal_force = 10;
+  // a load of 60% of mu_s F_n is carried at s (2 - s) = 0.6: s = 1 - sqrt(0.4)
+  const double s = 1 - std::sqrt(0.4);
+  in.slip[1] = s * p.transition_velocity;
+  EXPECT_NEAR(EvaluateFriction(p, in).force[1], -3, 1e-12);
+  in.slip[1] = 3 * p.transition_velocity;  // the kinetic plateau from s = 3
+  EXPECT_NEAR(EvaluateFriction(p, in).force[1], -3 * 10 * 0.1, 1e-12);
+}
+
+TEST(FrictionKernelTest, StribeckFallsFromStaticToKinetic) {
+  const FrictionParams p = Params(FrictionKind::kStribeck);
+  EXPECT_DOUBLE_EQ(SlidingMu(p, 0), 0.5);
+  EXPECT_NEAR(SlidingMu(p, p.stribeck_velocity), 0.3 + 0.2 / std::exp(1.0), 1e-15);
+  EXPECT_NEAR(SlidingMu(p, 100 * p.stribeck_velocity), 0.3, 1e-15);
+}
+
+TEST(FrictionKernelTest, LuGreReachesItsSteadyStateForceAfterALongSlide) {
+  FrictionParams p = Params(FrictionKind::kLuGre);
+  p.viscous = 0.2;
+  FrictionInput in;
+  in.normal_force = 10;
+  in.slip[0] = 1.0;
+  in.stretch[0] = 1.0;  // 1 m: far beyond the bristles' mu/sigma0 = 5 um
+  const FrictionOutput out = EvaluateFriction(p, in);
+  // z = mu_k/sigma0, z' = 0: F = mu(v) F_n + sigma2 v
+  EXPECT_NEAR(out.force[0], -(0.3 * 10 + 0.2), 1e-9);
+  EXPECT_NEAR(out.state[0], 0.3 / p.bristle_stiffness, 1e-15);
+}
+
+TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
+  for (const FrictionInfo& model : FrictionModels()) {
+    EXPECT_EQ(ParseFrictionName(model.name), model.kind);
+    EXPECT_FALSE(model.reference.empty());
+  }
+  EXPECT_FALSE(ParseFrictionName("coulmb"));
+  FrictionParams p = Params(FrictionKind::kCoulomb);
+  EXPECT_FALSE(ValidateFrictionParams(p));
+  p.mu_kinetic = 0.6;
+  EXPECT_EQ(ValidateFrictionParams(p)->key, "mu_kinetic");
+  p = Params(FrictionKind::kCoulomb);
+  p.tangential_stiffness = 0;
+  EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_stiffness");
+}
+
+}  // namespace
+}  // namespace contactlaws
