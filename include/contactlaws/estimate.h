@@ -36,11 +36,31 @@ struct ContactEstimate {
   // Infinite when impact_velocity is 0 (Hertz) or the mass is infinite.
   double max_depth = 0;
   double contact_duration = 0;
+  // Found by stepping the scene ahead (LookAhead) rather than from the
+  // current speeds and gravity: the seconds until the touch.
+  std::optional<double> looked_ahead;
   // contact_duration / kStepsPerContact.
   double timestep() const { return contact_duration / kStepsPerContact; }
 };
 
 // A body the contact force cannot move: the world, a static body, a driven one.
+// What a pair brings to its first touch, found by stepping ahead.
+struct Approach {
+  double rate = 0;            // d' at the last state before the touch, m/s
+  double effective_mass = 0;  // along the normal through the joint chains, kg
+  double time = 0;            // s from now
+};
+
+// Steps a copy of the data (MuJoCo alone, the laws not acting: nothing
+// changes before the first touch) until pair is about to touch, for at most
+// 2 s of simulated time: what a pendulum, a body on a free body or anything
+// jointed brings to the contact. nullopt when it does not touch by then.
+std::optional<Approach> LookAhead(const ContactData& contacts, int pair);
+
+// A tag with more pairs than this is not looked ahead (a group tag of many
+// bodies would step the scene once per pair).
+inline constexpr int kLookAheadPairs = 16;
+
 bool Immovable(const ContactModel& model, int body);
 
 // The rate at which gravity closes pair's gap along normal (from geom[0]

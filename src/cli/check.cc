@@ -102,15 +102,20 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
   const int worst = shortest.pair;
   const ContactEstimate& estimate = shortest.estimate;
   const GeomPair& pair = cm.pairs()[worst];
-  fmt::print("  {}geoms {} - {}: effective mass {} kg, gap {}\n",
+  fmt::print("  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
              tag.pairs.size() > 1 ? "shortest contact: " : "",
              ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
              estimate.effective_mass,
              estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
-  fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity,
-             impact_velocity ? "--impact-velocity"
-                             : "estimated: closing speed, gravity over the gap, "
-                               "driven bodies' top speed");
+  const std::string how =
+      impact_velocity ? std::string("--impact-velocity")
+      : estimate.looked_ahead
+          ? fmt::format("stepped ahead to the touch, {:.4g} s from now, through the joint "
+                        "chains",
+                        *estimate.looked_ahead)
+          : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
+                        "speed");
+  fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
   const bool tangential_coarse = PrintFriction(pair, estimate, dt);
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "contactlaws/hertz.h"
+#include "contactlaws/kinematics.h"
+#include "contactlaws/model_io.h"
 #include "mujoco/narrowphase.h"
 
 namespace contactlaws {
@@ -36,6 +38,62 @@ double SpeedAtTouch(double closing, double accel, double gap) {
   return squared > 0 ? std::sqrt(squared) : 0.0;
 }
 
+namespace {
+
+// How far ahead LookAhead steps: enough for a pendulum or a falling body to
+// reach what it will hit, short enough for check to answer at once.
+constexpr double kLookAheadTime = 2.0;      // s of simulated time
+constexpr int kLookAheadSteps = 200000;
+
+// The nearest points of pair at d (the narrowphase with a margin that reaches
+// them: the centre distance plus both bounding radii), or nullptr.
+const mjContact* Nearest(const mjModel* m, const mjData* d, const GeomPair& pair,
+                         std::vector<mjContact>* found) {
+  const int g0 = pair.geom[0];
+  const int g1 = pair.geom[1];
+  mjtNum centres[3];
+  mju_sub3(centres, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g0);
+  const double reach = mju_norm3(centres) + m->geom_rbound[g0] + m->geom_rbound[g1] + 1.0;
+  const int count = Collide(m, d, g0, g1, reach, found->data());
+  const mjContact* nearest = nullptr;
+  for (int i = 0; i < count; ++i) {
+    if (!nearest || (*found)[i].dist < nearest->dist) nearest = &(*found)[i];
+  }
+  return nearest;
+}
+
+}  // namespace
+
+std::optional<Approach> LookAhead(const ContactData& contacts, int pair_index) {
+  const ContactModel& cm = contacts.model();
+  const mjModel* m = cm.model();
+  const GeomPair& pair = cm.pairs()[pair_index];
+  // a copy of the data, stepped by MuJoCo alone: its tagged pairs are MuJoCo's
+  // (no ContactData is registered for it), which changes nothing before the
+  // first touch, where the look stops
+  UniqueData ahead(mj_makeData(m));
+  mjData* d = ahead.get();
+  mj_copyData(d, m, contacts.data());
+  std::vector<mjContact> found(mjMAXCONPAIR);
+  const double start = d->time;
+  for (int k = 0; k < kLookAheadSteps && d->time - start < kLookAheadTime; ++k) {
+    mj_forward(m, d);
+    const mjContact* nearest = Nearest(m, d, pair, &found);
+    if (!nearest) return std::nullopt;
+    const double step = m->opt.timestep;
+    Approach a;
+    a.rate = ApproachRate(cm, d, pair, nearest->pos, nearest->frame, d->qvel, d->time);
+    // the next step would bring it in: this state is the last before touch
+    if (nearest->dist <= std::max(0.0, a.rate) * step) {
+      a.effective_mass = EffectiveMass(m, d, pair, nearest->pos, nearest->frame);
+      a.time = d->time - start;
+      return a;
+    }
+    mj_step(m, d);
+  }
+  return std::nullopt;
+}
+
 ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
                                 std::optional<double> impact_velocity) {
   const ContactModel& cm = contacts.model();
@@ -46,19 +104,8 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
 
   e.effective_mass = PairEffectiveMass(cm, pair_index);
 
-  // the nearest points, by MuJoCo's narrowphase with a margin that reaches
-  // them: the centre distance plus both bounding radii
-  const int g0 = pair.geom[0];
-  const int g1 = pair.geom[1];
-  mjtNum centres[3];
-  mju_sub3(centres, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g0);
-  const double reach = mju_norm3(centres) + m->geom_rbound[g0] + m->geom_rbound[g1] + 1.0;
   std::vector<mjContact> found(mjMAXCONPAIR);
-  const int count = Collide(m, d, g0, g1, reach, found.data());
-  const mjContact* nearest = nullptr;
-  for (int i = 0; i < count; ++i) {
-    if (!nearest || found[i].dist < nearest->dist) nearest = &found[i];
-  }
+  const mjContact* nearest = Nearest(m, d, pair, &found);
 
   double speed = 0;
   if (nearest) {
@@ -83,6 +130,19 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
     }
   }
   e.impact_velocity = impact_velocity ? *impact_velocity : speed;
+  // nothing closes them by the current speeds and gravity alone (a pendulum,
+  // a body on a free body): step ahead to the touch
+  const bool small_tag =
+      static_cast<int>(cm.tags()[pair.tag].pairs.size()) <= kLookAheadPairs;
+  if (!impact_velocity && nearest && !(speed >= pair.params.min_impact_velocity) && small_tag &&
+      !Immovable(cm, pair.body[0]) + !Immovable(cm, pair.body[1]) > 0) {
+    const std::optional<Approach> a = LookAhead(contacts, pair_index);
+    if (a && a->rate >= pair.params.min_impact_velocity) {
+      e.impact_velocity = a->rate;
+      e.effective_mass = a->effective_mass;
+      e.looked_ahead = a->time;
+    }
+  }
 
   const LawParams& law = pair.params;
   const double v = e.impact_velocity;

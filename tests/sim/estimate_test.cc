@@ -58,5 +58,41 @@ TEST_F(EstimateTest, DrivenTableAddsItsTopSpeed) {
   EXPECT_NEAR(e.impact_velocity, std::sqrt(2 * 9.81 * 0.4) + 0.1 * 7.5, 1e-12);
 }
 
+// A pendulum released from rest swings into a wall: nothing closes the pair
+// by the current speeds and gravity along the normal (horizontal), so the
+// estimate steps ahead to the touch. Energy gives the swing rate there:
+// (1/2) I w^2 = g (sum m_i l_i) (cos a_touch - cos a_0), and the bob's speed
+// towards the wall w L cos a_touch; the effective mass is I / (L cos)^2.
+TEST_F(EstimateTest, APendulumIsSteppedAheadToItsTouch) {
+  Simulation& sim = MakeSimulation(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="wall" type="plane" size="1 1 0.1" pos="0.3 0 0.5" zaxis="-1 0 0"/>
+    <body name="arm" pos="0 0 1">
+      <joint name="swing" type="hinge" axis="0 -1 0"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.4" size="0.005" mass="0.01"/>
+      <body name="bob" pos="0 0 -0.5"><geom name="bob" type="sphere" size="0.1" mass="1"/></body>
+    </body>
+  </worldbody>
+  <keyframe><key qpos="-0.5"/></keyframe>
+  <custom><text name="contactlaw:bob-wall"
+    data="geom1=bob geom2=wall law=hunt-crossley restitution=0.5 stiffness=1e8"/></custom>
+</mujoco>)");
+  mj_forward(sim.model(), sim.data());
+  const ContactEstimate e = EstimateContact(sim.contacts(), 0);
+  ASSERT_TRUE(e.looked_ahead);
+  const double touch = std::asin(0.4);  // the bob's surface at the wall
+  const double inertia = 0.25 + 0.004 + 0.01 * 0.16 / 3;  // about the hinge, kg m^2
+  const double moment = 1.0 * 0.5 + 0.01 * 0.2;           // sum m_i l_i, kg m
+  const double swing =
+      std::sqrt(2 * 9.81 * moment * (std::cos(touch) - std::cos(0.5)) / inertia);
+  // the look stops at the last step before the touch: one step of swing
+  // (w' L h = g L h ~ 5e-4 m/s) and the capsule's inertia taken as a rod's
+  constexpr double kLookAheadTolerance = 1e-3;  // m/s
+  EXPECT_NEAR(e.impact_velocity, swing * 0.5 * std::cos(touch), kLookAheadTolerance);
+  EXPECT_NEAR(e.effective_mass, inertia / std::pow(0.5 * std::cos(touch), 2), 1e-2);
+  EXPECT_TRUE(std::isfinite(e.contact_duration));
+}
+
 }  // namespace
 }  // namespace contactlaws
