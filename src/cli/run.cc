@@ -33,10 +33,22 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
   }
 }
 
+// The impact log of sim, in rows, committed.
+void WriteImpacts(const Simulation& sim, ImpactRows rows, CsvFile* impacts) {
+  impacts->Header(ImpactColumns());
+  for (const Impact& impact : ImpactsOf(sim.contacts(), rows)) {
+    impacts->Fields(ImpactFields(sim, impact));
+  }
+  impacts->Commit();
+}
+
 }  // namespace
 
-
 int RunCommand(const RunArgs& args) {
+  // one file is written by one writer
+  if (args.output && args.impacts && SamePath(*args.output, *args.impacts)) {
+    Refuse("--impacts", *args.impacts, "is the --output path too: give the two files two paths");
+  }
   const CommonOptions common = ParseCommon(args);
   SimulationOptions options = common.simulation;
   const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
@@ -49,10 +61,6 @@ int RunCommand(const RunArgs& args) {
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
 
-  // one file is written by one writer
-  if (args.output && args.impacts && SamePath(*args.output, *args.impacts)) {
-    Refuse("--impacts", *args.impacts, "is the --output path too: give the two files two paths");
-  }
   // open the outputs before the run: an unwritable path fails now
   std::optional<CsvFile> trajectory;
   std::optional<CsvFile> impacts;
@@ -78,16 +86,11 @@ int RunCommand(const RunArgs& args) {
   for (const std::string& w : RunWarnings(*sim, result)) Warn(scene.path(), w);
 
   // what was computed up to a divergence is valid, and written
-  const double end_time =
-      result.divergence ? result.divergence->time : sim->time();
+  const double end_time = result.divergence ? result.divergence->time : sim->time();
   if (trajectory) trajectory->Commit();
   if (impacts) {
-    impacts->Header(ImpactColumns());
-    const ImpactRows rows = args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions;
-    for (const Impact& impact : ImpactsOf(sim->contacts(), rows)) {
-      impacts->Fields(ImpactFields(*sim, impact));
-    }
-    impacts->Commit();
+    WriteImpacts(*sim, args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions,
+                 &*impacts);
   }
   PrintRunSummary(*sim, end_time, args.output && *args.output == "-" ? stderr : stdout);
   if (result.divergence) {

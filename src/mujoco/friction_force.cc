@@ -47,23 +47,30 @@ void RotationSince(const mjData* d, int body, const double q0[4], mjtNum rotatio
   mju_quat2Vel(rotation, dq, 1.0);
 }
 
+// The slip and spin of body[1] relative to body[0] at the contact point (the
+// world and driven bodies do not turn), into e.
+void SlipAndSpin(const ContactModel& model, const mjData* d, const GeomPair& pair,
+                 const mjContact& con, PointEvaluation* e) {
+  const int b0 = pair.body[0];
+  const int b1 = pair.body[1];
+  mjtNum v0[3], v1[3];
+  PointVelocity(model, d, b0, con.pos, v0);
+  PointVelocity(model, d, b1, con.pos, v1);
+  mju_sub3(e->slip, v1, v0);
+  Project(con.frame, e->slip);
+  auto spin = [&](int b) { return model.FindDrive(b) ? nullptr : d->cvel + 6 * b; };
+  for (int i = 0; i < 3; ++i) {
+    e->spin[i] = (spin(b1) ? spin(b1)[i] : 0.0) - (spin(b0) ? spin(b0)[i] : 0.0);
+  }
+}
+
 }  // namespace
 
 void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e) {
   const mjtNum* n = con.frame;
   const int b0 = pair.body[0];
   const int b1 = pair.body[1];
-  // slip and spin of body[1] relative to body[0] (the world and driven
-  // bodies do not turn)
-  mjtNum v0[3], v1[3];
-  PointVelocity(b0, con.pos, v0);
-  PointVelocity(b1, con.pos, v1);
-  mju_sub3(e->slip, v1, v0);
-  Project(n, e->slip);
-  auto spin = [&](int b) { return model_.FindDrive(b) ? nullptr : d_->cvel + 6 * b; };
-  for (int i = 0; i < 3; ++i) {
-    e->spin[i] = (spin(b1) ? spin(b1)[i] : 0.0) - (spin(b0) ? spin(b0)[i] : 0.0);
-  }
+  SlipAndSpin(model_, d_, pair, con, e);
   const FrictionParams& params = pair.friction;
   if (params.kind == FrictionKind::kNone) return;
 

@@ -73,21 +73,31 @@ FrameRenderer::~FrameRenderer() {
   mjv_freeScene(&scene_);
 }
 
-// An arrow per tagged point, from the point along the force on geom2 (the
-// normal points from geom1 to geom2; the force pushes them apart).
+// An arrow from pos along force (a world vector, N) scaled by force_scale_,
+// in rgba; none when the scene is full or the force is nil.
+void FrameRenderer::AddArrow(const mjModel* m, const double pos[3], const double force[3],
+                             const float rgba[4]) {
+  const double length = force_scale_ * mju_norm3(force);
+  if (scene_.ngeom >= scene_.maxgeom || !(length > 0)) return;
+  mjvGeom* geom = scene_.geoms + scene_.ngeom++;
+  mjv_initGeom(geom, mjGEOM_ARROW, nullptr, nullptr, nullptr, rgba);
+  geom->category = mjCAT_DECOR;
+  const double width = m->vis.scale.forcewidth * m->stat.meansize;
+  mjv_makeConnector(geom, mjGEOM_ARROW, width, pos[0], pos[1], pos[2],
+                    pos[0] + force_scale_ * force[0], pos[1] + force_scale_ * force[1],
+                    pos[2] + force_scale_ * force[2]);
+}
+
+// Arrows per tagged point, from the point: the normal force on geom2 (the
+// normal points from geom1 to geom2; the force pushes them apart) in MuJoCo's
+// contact-force colour, the friction force on it in its friction colour.
 void FrameRenderer::AddForceArrows(const Simulation& sim) {
   const mjModel* m = sim.model();
-  const double width = m->vis.scale.forcewidth * m->stat.meansize;
   for (const PointEvaluation& point : sim.contacts().latest()) {
-    if (scene_.ngeom >= scene_.maxgeom || point.force <= 0) continue;
-    mjvGeom* geom = scene_.geoms + scene_.ngeom++;
-    mjv_initGeom(geom, mjGEOM_ARROW, nullptr, nullptr, nullptr, m->vis.rgba.contactforce);
-    geom->category = mjCAT_DECOR;
-    const double length = point.force * force_scale_;
-    mjv_makeConnector(geom, mjGEOM_ARROW, width, point.pos[0], point.pos[1], point.pos[2],
-                      point.pos[0] + length * point.normal[0],
-                      point.pos[1] + length * point.normal[1],
-                      point.pos[2] + length * point.normal[2]);
+    double normal[3];
+    mju_scl3(normal, point.normal, std::max(point.force, 0.0));
+    AddArrow(m, point.pos, normal, m->vis.rgba.contactforce);
+    AddArrow(m, point.pos, point.friction, m->vis.rgba.contactfriction);
   }
 }
 

@@ -51,6 +51,8 @@ class FrameRenderer {
 
  private:
   void AddForceArrows(const Simulation& sim);
+  void AddArrow(const mjModel* m, const double pos[3], const double force[3],
+                const float rgba[4]);
   void Overlay(const Simulation& sim);
 
   FrameOptions options_;

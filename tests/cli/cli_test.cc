@@ -189,51 +189,6 @@ TEST(CliTest, LawsAsCsvGiveEachLawsCoefficientAndRebound) {
             "contactlaws: --restitution=0x1 has '0x1', which is not a finite number\n");
 }
 
-// A flat box landing on its four corners: one row per collision of the pair,
-// with its four points and their total force; --impacts-per-point gives each
-// corner's own row.
-TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
-  const std::string scene = testing::WriteScene("flat_box", R"(<mujoco>
-  <option timestep="1e-4" integrator="RK4"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="5 5 0.1"/>
-    <body name="box" pos="0 0 0.1"><freejoint/>
-      <geom name="box" type="box" size="0.1 0.06 0.03" mass="1"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:box-floor"
-    data="geom1=box geom2=floor law=hunt-crossley restitution=0.5 stiffness=1e7"/></custom>
-</mujoco>)");
-  const std::string dir = ::testing::TempDir();
-  const Result r = RunCli("run " + scene + " --duration 0.3 --impacts " + dir + "/box.csv");
-  ASSERT_EQ(r.status, 0) << r.output;
-  const Result p = RunCli("run " + scene + " --duration 0.3 --impacts-per-point --impacts " +
-                          dir + "/box_points.csv");
-  ASSERT_EQ(p.status, 0) << p.output;
-  const std::vector<std::string> collisions = Lines(ReadFile(dir + "/box.csv"));
-  const std::vector<std::string> points = Lines(ReadFile(dir + "/box_points.csv"));
-  ASSERT_GE(collisions.size(), 3u) << "the box lands and bounces";
-  // each collision on four corners, each corner a row of its own
-  auto column = [&](const std::string& name) {
-    const std::vector<std::string> header = Split(collisions[0], ',');
-    return static_cast<int>(std::find(header.begin(), header.end(), name) - header.begin());
-  };
-  auto field = [](const std::string& row, int k) { return Split(row, ',').at(k); };
-  EXPECT_EQ(points.size() - 1, 4 * (collisions.size() - 1));
-  for (size_t i = 1; i < collisions.size(); ++i) {
-    EXPECT_EQ(field(collisions[i], column("points")), "4");
-  }
-  for (size_t i = 1; i < points.size(); ++i) EXPECT_EQ(field(points[i], column("points")), "1");
-  // the first collision's largest force is the four corners' together: each
-  // corner carries a quarter (the box lands flat), to the rounding of the sum
-  const int max_force = column("max_force");
-  const double pair_force = std::stod(field(collisions[1], max_force));
-  for (size_t i = 1; i <= 4; ++i) {
-    EXPECT_NEAR(std::stod(field(points[i], max_force)), pair_force / 4, 1e-9 * pair_force)
-        << points[i];
-  }
-  EXPECT_NE(r.output.find("collisions"), std::string::npos) << r.output;
-}
-
 // --laws all runs every law the scene and options can run: one that needs a
 // dissipation nobody gave is left out with one warning; named, it is refused.
 TEST(CliTest, AllLawsLeaveOutALawMissingItsDissipation) {
@@ -253,68 +208,6 @@ TEST(CliTest, AllLawsLeaveOutALawMissingItsDissipation) {
   ASSERT_EQ(given.status, 0) << given.output;
   EXPECT_NE(given.output.find("\nhunt-crossley-constant,0.5,"), std::string::npos)
       << given.output;
-}
-
-// A pair type whose depths MuJoCo gets only roughly is run, with one warning
-// naming the pair and the reason, by run and check alike.
-TEST(CliTest, AnUntrustedPairTypeIsWarnedAbout) {
-  const std::string scene = testing::WriteScene("can_on_box", R"(<mujoco>
-  <worldbody>
-    <body name="base" pos="0 0 0"><geom name="base" type="box" size="0.3 0.3 0.05"/></body>
-    <body name="can" pos="0 0 0.2"><freejoint/>
-      <geom name="can" type="cylinder" size="0.05 0.08" mass="1"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:can-base"
-    data="geom1=can geom2=base law=hunt-crossley restitution=0.5 stiffness=1e7"/></custom>
-</mujoco>)");
-  for (const std::string command : {"run --duration 0.01 ", "check "}) {
-    const Result r = RunCli(command + scene);
-    ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("contactlaws: warning: " + scene +
-                            ": contactlaw:can-base: (can, base): "),
-              std::string::npos)
-        << command << ": " << r.output;
-  }
-}
-
-// A ball resting in contact when the run starts: its contact opens at t = 0
-// (not before), at its rate then; no CSV field is -0, inf or nan.
-TEST(CliTest, AContactOpenAtTheStartOpensThere) {
-  const std::string scene = testing::WriteScene(
-      "resting", testing::DropXml("law=hunt-crossley restitution=0.5 stiffness=1e8", 0.0,
-                                  "RK4", 1e-5, true, 1.0, 0.1 - 1e-6));
-  const std::string dir = ::testing::TempDir();
-  const Result r = RunCli("run " + scene + " --duration 0.02 --output " + dir +
-                          "/resting.csv --impacts " + dir + "/resting_impacts.csv");
-  ASSERT_EQ(r.status, 0) << r.output;
-  const std::vector<std::string> impacts = Lines(ReadFile(dir + "/resting_impacts.csv"));
-  ASSERT_GE(impacts.size(), 2u);
-  const std::vector<std::string> header = Split(impacts[0], ',');
-  const std::vector<std::string> first = Split(impacts[1], ',');
-  auto field = [&](const std::string& name) {
-    return first.at(std::find(header.begin(), header.end(), name) - header.begin());
-  };
-  EXPECT_EQ(field("time_contact"), "0") << impacts[1];
-  for (const char* file : {"/resting.csv", "/resting_impacts.csv"}) {
-    const std::string csv = ReadFile(dir + file);
-    for (const char* bad : {",-0,", ",-0\n", "inf", "nan"}) {
-      EXPECT_EQ(csv.find(bad), std::string::npos) << file << " has " << bad;
-    }
-  }
-}
-
-// --columns picks the trajectory's groups; a bad group is named.
-TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
-  const Result r = RunCli("run " + kBall + " --duration 0.002 --columns pairs,energy --output -");
-  ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_EQ(r.output.substr(0, r.output.find('\n')),
-            "time,ball-floor.depth,ball-floor.depth_rate,ball-floor.force,energy.kinetic,"
-            "energy.potential,energy.elastic,energy.dissipated,energy.total");
-  EXPECT_EQ(RunCli("run " + kBall + " --columns bodies,joint").output,
-            "contactlaws: --columns=bodies,joint has 'joint', which is not a group (bodies, "
-            "joints, pairs, energy)\n");
-  EXPECT_EQ(RunCli("run " + kBall + " --columns energy,energy").output,
-            "contactlaws: --columns=energy,energy names energy twice\n");
 }
 
 TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
