@@ -61,21 +61,19 @@ namespace contactlaws {
 
 // The accuracy the auto timestep delivers by default: the relative error
 // accepted in a collision's rebound (e_post), peak force and contact
-// duration. It reproduces the rule before --accuracy (20 steps per contact).
+// duration.
 inline constexpr double kDefaultAccuracy = 1e-3;
-// The steps per contact of the Hertz family at kDefaultAccuracy, and how
-// they grow: 50 (kDefaultAccuracy / accuracy)^0.45 (below).
-inline constexpr double kDefaultStepsPerContact = 50;
-inline constexpr double kStepsExponent = 0.45;
 
 // How the accuracy sets the steps (README, "The contact-aware timestep"):
-// steps per contact = 20 (tol0 / tol)^(1/2), tol0 = kDefaultAccuracy, for
-// the Hertz family: with its steps cut at touch and separation, RK4 has
-// errors of the second order or higher in the rebound, the duration (each
-// end extrapolated to d = 0) and the peak force (PeakForce), measured below
-// tol on the paper's sweep at tol = 1e-3, 1e-4, 1e-5 (auto_accuracy_test).
-// Kelvin-Voigt's clamp F >= 0 puts a kink inside its contact, which makes
-// its error about 1.65th order: 600 (tol0 / tol)^(2/3) steps.
+// for the Hertz family, steps per contact = 50 (tol0 / tol)^0.45, tol0 =
+// kDefaultAccuracy: with its steps cut at touch and separation, RK4's errors
+// in the rebound, the duration (each end extrapolated to d = 0) and the peak
+// force (PeakForce) are of the second order or higher, measured below tol on
+// the paper's sweep at tol = 1e-3, 1e-4, 1e-5 (auto_accuracy_test).
+// Kelvin-Voigt's clamp F >= 0 puts a kink inside its contact: 200 (tol0 /
+// tol)^(1/2) steps.
+inline constexpr double kDefaultStepsPerContact = 50;
+inline constexpr double kStepsExponent = 0.45;
 inline constexpr double kKelvinVoigtStepsAtDefault = 200;
 // The accepted range of accuracy (the option refuses what is outside).
 inline constexpr double kMaxAccuracy = 0.1;

@@ -72,7 +72,7 @@ bool PrintFriction(const GeomPair& pair, const ContactEstimate& estimate, double
 
 // Tag t resolved, its estimated contact and the timestep it needs; true when
 // the timestep is too coarse for the estimate.
-bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
+bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, bool automatic) {
   const mjModel* m = sim->model();
   const ContactModel& cm = sim->contact_model();
   const double dt = m->opt.timestep;
@@ -122,11 +122,21 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity) {
                "neither can move); give --impact-velocity\n");
     return tangential_coarse;  // nothing to hold the normal's timestep to
   }
-  const double steps = estimate.contact_duration / dt;
-  const bool ok = steps >= kStepsPerContact;
   fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
              Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
              estimate.contact_duration);
+  if (automatic) {
+    // the auto timestep's own rule at its default accuracy (auto_timestep.h)
+    const double per_contact = Law(law.kind).family == LawFamily::kLinear
+                                   ? KelvinVoigtStepsPerContact(kDefaultAccuracy)
+                                   : StepsPerContact(kDefaultAccuracy);
+    fmt::print("  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
+               "contact, accuracy {})\n",
+               estimate.contact_duration / per_contact, per_contact, kDefaultAccuracy);
+    return tangential_coarse;
+  }
+  const double steps = estimate.contact_duration / dt;
+  const bool ok = steps >= kStepsPerContact;
   fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
              ok ? "ok" : "TOO COARSE", estimate.timestep());
   return !ok || tangential_coarse;
@@ -155,7 +165,11 @@ int CheckCommand(const CheckArgs& args) {
   }
   if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
-  if (args.timestep) options.timestep = ParsePositive("--timestep", *args.timestep, "s");
+  // auto: the contact steps are the auto timestep's; otherwise a fixed step
+  const bool automatic = args.timestep && *args.timestep == "auto";
+  if (args.timestep && !automatic) {
+    options.timestep = ParsePositive("--timestep", *args.timestep, "s");
+  }
   std::optional<double> impact_velocity;
   if (args.impact_velocity) {
     impact_velocity = ParsePositive("--impact-velocity", *args.impact_velocity, "m/s");
@@ -169,7 +183,7 @@ int CheckCommand(const CheckArgs& args) {
   int coarse = 0;
   const int tags = static_cast<int>(sim->contact_model().tags().size());
   fmt::print("\n{} contactlaw tag(s)\n", tags);
-  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity);
+  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, automatic);
   PrintDrives(*sim);
   if (coarse) {
     fmt::print("\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);

@@ -168,7 +168,8 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
             "override every tag's restitution");
   AddNumber(c->check_cmd, "--dissipation", &c->check.dissipation, kDissipationHelp);
   AddFriction(c->check_cmd, &c->check.friction, &c->check.mu);
-  AddNumber(c->check_cmd, "--timestep", &c->check.timestep, "s (default: the scene's)");
+  c->check_cmd->add_option("--timestep", c->check.timestep,
+                           "s (default: the scene's), or auto: the steps it would take");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");
 

@@ -140,5 +140,16 @@ TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
             "contactlaws: --columns=energy,energy names energy twice\n");
 }
 
+// check takes --timestep auto as run does, and says what steps it would take.
+TEST(CliTest, CheckTakesTheAutoTimestep) {
+  const Result r = RunCli("check " + kBall + " --timestep auto");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("  --timestep auto: steps of 2.66e-05 s near and in this contact (50 "
+                          "per contact, accuracy 0.001)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("TOO COARSE"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace contactlaws
