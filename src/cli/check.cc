@@ -159,10 +159,7 @@ void PrintDrives(const Simulation& sim) {
 
 int CheckCommand(const CheckArgs& args) {
   SimulationOptions options;
-  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
-  if (args.restitution) {
-    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
-  }
+  ParseLawOverrides(args.law, args.restitution, &options.overrides);
   if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
   // auto: the contact steps are the auto timestep's; otherwise a fixed step

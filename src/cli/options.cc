@@ -135,6 +135,12 @@ void ParseFrictionOverrides(const std::optional<std::string>& friction,
   }
 }
 
+void ParseLawOverrides(const std::optional<std::string>& law,
+                       const std::optional<std::string>& restitution, Overrides* overrides) {
+  if (law) overrides->law = ParseLaw("--law", *law);
+  if (restitution) overrides->restitution = ParseRestitution("--restitution", *restitution);
+}
+
 LawKind ParseLaw(std::string_view option, std::string_view name) {
   const std::optional<LawKind> law = ParseLawName(name);
   if (!law) {

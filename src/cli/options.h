@@ -60,6 +60,10 @@ CommonOptions ParseCommon(const CommonArgs& args);
 // "euler", "rk4", "implicit" -> mjtIntegrator.
 int ParseIntegrator(std::string_view name);
 
+// --law and --restitution, when given, into overrides.
+void ParseLawOverrides(const std::optional<std::string>& law,
+                       const std::optional<std::string>& restitution, Overrides* overrides);
+
 // A law name, or Refuse under option.
 LawKind ParseLaw(std::string_view option, std::string_view name);
 

@@ -50,9 +50,7 @@ struct RenderPlan {
 RenderPlan Plan(const RenderArgs& args) {
   RenderPlan plan;
   plan.common = ParseCommon(args);
-  Overrides& overrides = plan.common.simulation.overrides;
-  if (args.law) overrides.law = ParseLaw("--law", *args.law);
-  if (args.restitution) overrides.restitution = ParseRestitution("--restitution", *args.restitution);
+  ParseLawOverrides(args.law, args.restitution, &plan.common.simulation.overrides);
   plan.fps = ParsePositive("--fps", args.fps, "frames per second of video");
   plan.slowmo = ParsePositive("--slowmo", args.slowmo, "video seconds per simulated second");
   plan.frame.width = ParsePixels("--width", args.width);

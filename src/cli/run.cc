@@ -52,10 +52,7 @@ int RunCommand(const RunArgs& args) {
   const CommonOptions common = ParseCommon(args);
   SimulationOptions options = common.simulation;
   const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
-  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
-  if (args.restitution) {
-    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
-  }
+  ParseLawOverrides(args.law, args.restitution, &options.overrides);
   const Scene scene(args.scene);
   std::unique_ptr<Simulation> sim = scene.Make(options);
   std::set<std::string> warned;

@@ -31,10 +31,7 @@ void SetVariable(const char* name, const std::optional<std::string>& value) {
 
 int SimulateCommand(const SimulateArgs& args) {
   SimulationOptions options;
-  if (args.law) options.overrides.law = ParseLaw("--law", *args.law);
-  if (args.restitution) {
-    options.overrides.restitution = ParseRestitution("--restitution", *args.restitution);
-  }
+  ParseLawOverrides(args.law, args.restitution, &options.overrides);
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
   const std::string plugin = FindPlugin();
