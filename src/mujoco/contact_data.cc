@@ -145,8 +145,9 @@ void ContactData::ApplyForces() {
     const int g1 = pair.geom[1];
     if (FarApart(m_, d_, g0, g1)) continue;
 
-    // MuJoCo's narrowphase: dist < 0 is penetration, frame[0..2] the normal
-    // from geom[0] to geom[1], pos midway between the surfaces
+    // the narrowphase (MuJoCo's, or ours for box-box: narrowphase.h): dist < 0
+    // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
+    // midway between the surfaces
     const int count = std::min(Collide(m_, d_, g0, g1, 0, contacts_.data()), pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {

@@ -5,8 +5,6 @@
 #ifndef CONTACTLAWS_TESTS_CLI_CLI_TEST_UTIL_H_
 #define CONTACTLAWS_TESTS_CLI_CLI_TEST_UTIL_H_
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -17,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "mujoco_test_util.h"
+#include "process_util.h"
 
 namespace contactlaws::testing {
 
@@ -26,26 +25,11 @@ struct Result {
 };
 
 inline Result RunCli(const std::string& arguments) {
-  const std::string command =
-      std::string(CONTACTLAWS_CLI) + " " + arguments + " 2>&1";
-  Result result;
-  std::FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  const ShellResult r = RunShell(std::string(CONTACTLAWS_CLI) + " " + arguments + " 2>&1");
+  return {r.status, r.out};
 }
 
 inline const std::string kBall = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";
-
-inline std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 inline std::string WriteScene(const std::string& name, const std::string& xml) {
   const std::string path = ::testing::TempDir() + "/" + name + ".xml";

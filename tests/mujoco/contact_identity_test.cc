@@ -161,10 +161,11 @@ TEST_F(ContactIdentityTest, EveryCornerOfATiltedBoxIsItsOwnPoint) {
   }
 }
 
-// A cylinder lands tilted and rocks on its rim: its contact point runs along
-// the rim, and stays one point while it does. Each collision of the pair
-// opens at the approach rate of the cylinder's lowest point.
-TEST_F(ContactIdentityTest, ACylinderRockingOnItsRimKeepsItsPoint) {
+// A cylinder lands tilted and rocks on its rim, its contact point running
+// along the rim: each collision of the pair opens at the approach rate of
+// the cylinder's lowest point, and every point episode lies inside one.
+// (What the point's identity itself must keep, the box's corners test.)
+TEST_F(ContactIdentityTest, ACylinderRockingOnItsRimCollidesAtItsLowestPointsRate) {
   UniqueModel m = Load(R"(<mujoco>
   <option timestep="1e-4" integrator="RK4"/>
   <worldbody>

@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "process_util.h"
+
 namespace contactlaws::testing {
 
 struct ProgramResult {
@@ -31,26 +33,15 @@ inline std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "/plugin_" + std::to_string(getpid()) + "_" + name;
 }
 
-inline std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Runs `environment command` through the shell.
 inline ProgramResult RunProgram(const std::string& environment, const std::string& command) {
   const std::string err_path = TempPath("stderr.txt");
-  const std::string line = environment + " " + command + " 2>" + err_path;
+  const ShellResult r = RunShell(environment + " " + command + " 2>" + err_path);
   ProgramResult result;
-  std::FILE* pipe = popen(line.c_str(), "r");
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.out.append(buffer, n);
-  const int status = pclose(pipe);
-  if (WIFEXITED(status)) result.status = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-  result.err = ReadText(err_path);
+  result.status = r.status;
+  result.signal = r.signal;
+  result.out = r.out;
+  result.err = ReadFile(err_path);
   return result;
 }
 

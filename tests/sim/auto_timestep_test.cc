@@ -7,8 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -16,17 +14,13 @@
 
 #include "contactlaws/contactlaws.h"
 #include "mujoco_test_util.h"
+#include "process_util.h"
 #include "sim/drop_reference.h"
 
 namespace contactlaws {
 namespace {
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::ReadFile;
 
 using testing::Drop;
 using testing::IntegrateDrop;
