@@ -90,8 +90,14 @@ struct Impact {
   // it as their v0 once it exceeds the touch speed, so that d'/v0 stays
   // below 1 and the law does not turn plastic (d'/v0 in the hundreds).
   double max_approach_velocity = 0;
-  // Compressed faster than it touched: max_approach_velocity > impact_velocity.
-  bool chained() const { return max_approach_velocity > impact_velocity; }
+  // The law's v0 at the touch: impact_velocity raised to the pair's
+  // min_impact_velocity (for a collision, the largest of its opening points').
+  double touch_v0 = 0;
+  // Compressed faster than the law's v0 at its touch: a contact that opened
+  // at rest and settles within the v0 floor is not chained.
+  bool chained() const {
+    return max_approach_velocity > std::max(impact_velocity, touch_v0);
+  }
   // separation / the largest approach speed (closed only): an impact's touch
   // speed, a chained contact's pulse
   double restitution_post() const {

@@ -128,6 +128,7 @@ void EpisodeLog::Open(double t, const PointEvaluation& e) {
   impact.tag = e.tag;
   impact.index = ++tag_count_[impact.tag];
   impact.impact_velocity = e.touch_velocity;
+  impact.touch_v0 = e.impact_velocity;
   impact.time_contact = TouchTime(e, t);
   OpenTangentialSide(e, &impact);
   const int index = static_cast<int>(impacts_.size());
@@ -216,6 +217,7 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
       if (opening && e.touch) {
         collision.time_contact = std::min(collision.time_contact, TouchTime(e, t));
         collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
+        collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
       }
     }
     force_[pair].Add(t, force);

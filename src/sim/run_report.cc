@@ -19,7 +19,8 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
     const Impact* first = nullptr;
     int count = 0;
     for (const Impact& c : collisions) {
-      if (c.pair != p || !(c.max_approach_velocity > kChainFactor * c.impact_velocity)) continue;
+      const double touch = std::max(c.impact_velocity, c.touch_v0);
+      if (c.pair != p || !(c.max_approach_velocity > kChainFactor * touch)) continue;
       if (!first) first = &c;
       ++count;
     }
@@ -30,7 +31,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
         "touching bodies; the law's v0 was the largest approach rate, and e_post is taken "
         "against it (README, Touching chains)",
         PairName(sim, p), count, count == 1 ? "" : "s", first->time_contact,
-        first->impact_velocity, first->max_approach_velocity, kChainFactor));
+        first->impact_velocity, first->max_approach_velocity));
   }
   return warnings;
 }

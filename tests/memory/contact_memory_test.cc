@@ -201,6 +201,24 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   EXPECT_EQ(collisions.impacts().at(1).index, 2);
 }
 
+// Chained: compressed faster than the law's v0 at the touch. A contact that
+// opened at rest and settles within the v0 floor (1e-3 m/s here) is not.
+TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
+  Impact settling;
+  settling.impact_velocity = 0;
+  settling.touch_v0 = 1e-3;  // the floor
+  settling.max_approach_velocity = 4e-4;
+  EXPECT_FALSE(settling.chained());
+  Impact pulsed = settling;
+  pulsed.max_approach_velocity = 0.5;  // a pulse came through
+  EXPECT_TRUE(pulsed.chained());
+  pulsed.separation_velocity = 0.4;
+  EXPECT_DOUBLE_EQ(pulsed.restitution_post(), 0.8);  // against the pulse's rate
+  Impact impact;  // an impact's rate only falls after its touch
+  impact.impact_velocity = impact.touch_v0 = impact.max_approach_velocity = 2.0;
+  EXPECT_FALSE(impact.chained());
+}
+
 TEST(DissipationLedgerTest, TrapezoidOfThePower) {
   DissipationLedger ledger;
   PointEvaluation p = Point(0, 0, 1e-3, 1, 1, /*episode=*/0);  // not a touch
