@@ -60,8 +60,11 @@ struct PointEvaluation {
   // (body[0] gets their opposites), at pos
   double friction[3] = {0, 0, 0};         // N
   double friction_torque[3] = {0, 0, 0};  // N m
-  double friction_energy = 0;             // J, stored by the stick springs
-  double friction_power = 0;              // W, dissipated
+  double friction_energy = 0;  // J, stored by the stick springs (or bristles)
+  // W, the power friction takes from the bodies: -F.slip - T.spin. Less what
+  // the springs store, it is dissipated (DissipationLedger): sliding under a
+  // rising load stretches the spring, so -F.slip alone would count too much.
+  double friction_power = 0;
   double slip[3] = {0, 0, 0};   // m/s, body[1] relative to body[0] at pos, tangential
   double spin[3] = {0, 0, 0};   // rad/s, body[1] relative to body[0]
   FrictionState friction_state;  // to commit
@@ -264,7 +267,9 @@ class DissipationLedger {
   // [touch, t] with the touch's power, not [previous commit, t] from zero.
   void Commit(double t, const std::vector<PointEvaluation>& points);
 
-  // J, up to the latest evaluation (points, at time t).
+  // J, up to the latest evaluation (points, at time t): the laws' dissipated
+  // power and friction's power on the bodies, integrated, less the energy the
+  // friction springs of points hold now.
   double Dissipated(double t, const std::vector<PointEvaluation>& points) const;
 
  private:

@@ -102,8 +102,6 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& params);
 // dF/dd of the normal law's elastic part at depth d > 0, N/m: n K d^(n-1),
 // or k (Kelvin-Voigt).
 double NormalStiffness(const LawParams& law, double depth);
-// d(dF/dd)/dd, N/m^2.
-double NormalStiffnessSlope(const LawParams& law, double depth);
 
 // mu at slip speed s (m/s) while sliding: mu_k (coulomb), Andersson's
 // mu_k + (mu_s - mu_k) exp(-(s / v_s)^2) (stribeck, lugre), the regularized
@@ -120,7 +118,6 @@ struct CappedSpringInput {
   double rate[3] = {0, 0, 0};       // its rate (m/s or rad/s)
   double stiffness = 0;             // k now (N/m or N m/rad)
   double committed_stiffness = 0;   // k at the last commit
-  double stiffness_rate = 0;        // dk/dt now
   double damping = 0;               // c (N s/m or N m s/rad), while sticking
   double stick_limit = 0;           // cap while sticking (N or N m)
   double slide_limit = 0;           // cap while sliding
@@ -131,7 +128,6 @@ struct CappedSpringOutput {
   double spring[3] = {0, 0, 0};  // the spring's value, to commit (rescaled to the cap)
   bool sliding = false;
   double stored_energy = 0;      // |spring|^2 / (2k), J
-  double dissipated_power = 0;   // W, >= 0
 };
 CappedSpringOutput CappedSpring(const CappedSpringInput& in);
 
@@ -146,15 +142,16 @@ struct FrictionInput {
   bool was_sliding = false;
   double stiffness = 0;             // k_t now, N/m
   double committed_stiffness = 0;   // k_t at the commit
-  double stiffness_rate = 0;        // dk_t/dt, N/(m s)
   double damping = 0;               // c_t, N s/m
 };
 struct FrictionOutput {
   double force[3] = {0, 0, 0};  // on body[1], N
   double state[3] = {0, 0, 0};  // to commit (spring force, or z)
   bool sliding = false;
-  double stored_energy = 0;     // J
-  double dissipated_power = 0;  // W
+  // J, in the stick spring or the bristles. No dissipated power: what the
+  // bodies lose to friction, less the change of this, is dissipated (the
+  // ledger's identity, contact_memory.h), for any change of the load.
+  double stored_energy = 0;
 };
 FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInput& in);
 

@@ -39,7 +39,6 @@ FrictionOutput Regularized(const FrictionParams& p, const FrictionInput& in) {
   const double magnitude = RegularizedMu(p, speed) * in.normal_force;
   for (int i = 0; i < 3; ++i) out.force[i] = -magnitude * in.slip[i] / speed;
   out.sliding = true;
-  out.dissipated_power = magnitude * speed;
   return out;
 }
 
@@ -68,8 +67,6 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
   }
   out.sliding = Norm(z) > 0.5 * g / sigma0;
   out.stored_energy = 0.5 * fn * sigma0 * Dot(z, z);
-  // what the bodies lose, less what the bristles store
-  out.dissipated_power = -Dot(out.force, in.slip) - fn * sigma0 * Dot(z, zdot);
   return out;
 }
 
@@ -78,11 +75,6 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
 double NormalStiffness(const LawParams& law, double depth) {
   if (Law(law.kind).family == LawFamily::kLinear) return law.linear_stiffness;
   return law.exponent * law.stiffness * std::pow(depth, law.exponent - 1);
-}
-
-double NormalStiffnessSlope(const LawParams& law, double depth) {
-  if (Law(law.kind).family == LawFamily::kLinear || law.exponent == 1) return 0;
-  return law.exponent * (law.exponent - 1) * law.stiffness * std::pow(depth, law.exponent - 2);
 }
 
 double SlidingMu(const FrictionParams& params, double speed) {
@@ -116,17 +108,12 @@ CappedSpringOutput CappedSpring(const CappedSpringInput& in) {
     // sliding: the force sits at the cap, and so does the committed spring
     out.sliding = true;
     for (int i = 0; i < 3; ++i) out.force[i] = out.spring[i] = total[i] * limit / size;
-    out.dissipated_power = -Dot(out.force, in.rate);
   } else {
     // stick: the spring holds, its damper acts
     for (int i = 0; i < 3; ++i) {
       out.spring[i] = trial[i];
       out.force[i] = total[i];
     }
-    // the damper's power, and what a changing stiffness takes from the
-    // spring (|F|^2 |dk/dt| / 2k^2: loading at a fixed force, unloading scaled)
-    out.dissipated_power = in.damping * Dot(in.rate, in.rate);
-    if (k > 0) out.dissipated_power += Dot(trial, trial) * std::abs(in.stiffness_rate) / (2 * k * k);
   }
   if (k > 0) out.stored_energy = Dot(out.spring, out.spring) / (2 * k);
   return out;
@@ -149,7 +136,6 @@ FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInpu
   }
   spring.stiffness = in.stiffness;
   spring.committed_stiffness = in.committed_stiffness;
-  spring.stiffness_rate = in.stiffness_rate;
   spring.damping = in.damping;
   spring.stick_limit = params.mu_static * in.normal_force;
   spring.slide_limit = SlidingMu(params, Norm(in.slip)) * in.normal_force;
@@ -162,7 +148,6 @@ FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInpu
   }
   out.sliding = s.sliding;
   out.stored_energy = s.stored_energy;
-  out.dissipated_power = s.dissipated_power + params.viscous * Dot(in.slip, in.slip);
   return out;
 }
 

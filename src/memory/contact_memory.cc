@@ -275,6 +275,8 @@ double DissipationLedger::Dissipated(double t, const std::vector<PointEvaluation
   if (has_committed_ && t > committed_time_) {
     energy += 0.5 * (DissipatedPower(points) + committed_power_) * (t - committed_time_);
   }
+  // what friction took from the bodies and its springs still hold is not lost
+  for (const PointEvaluation& e : points) energy -= e.friction_energy;
   return energy;
 }
 

@@ -96,10 +96,6 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   // k_t: the tag's, or Mindlin's share of the normal law's stiffness here
   in.stiffness = params.tangential_stiffness.value_or(kMindlinRatio *
                                                       NormalStiffness(pair.params, e->depth));
-  in.stiffness_rate = params.tangential_stiffness
-                          ? 0.0
-                          : kMindlinRatio * NormalStiffnessSlope(pair.params, e->depth) *
-                                e->depth_rate;
   in.committed_stiffness = committed.stiffness;
   in.damping =
       params.tangential_damping.value_or(2 * std::sqrt(in.stiffness * pair.friction_mass));
@@ -112,7 +108,8 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   }
   mju_copy3(e->friction, out.force);
   e->friction_energy = out.stored_energy;
-  e->friction_power = out.dissipated_power;
+  // the power friction takes from the bodies (the ledger: contact_memory.h)
+  e->friction_power = -mju_dot3(out.force, e->slip);
   FrictionState& next = e->friction_state;
   mju_copy3(next.spring, out.state);
   next.sliding = out.sliding;
@@ -176,7 +173,7 @@ void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState
     e->friction_state.torque_stiffness[part] = in.stiffness;
     e->friction_state.torque_sliding[part] = out.sliding;
     e->friction_energy += out.stored_energy;
-    e->friction_power += out.dissipated_power;
+    e->friction_power -= mju_dot3(out.force, in.rate);
   }
 }
 
