@@ -193,6 +193,7 @@ class ContactData {
   std::vector<mjtNum> current_qvel_;
   std::vector<mjtNum> previous_qvel_;
   double current_time_ = 0;
+  double step_start_time_ = 0;  // d->time at BeforeStep
   double previous_time_ = 0;
   bool has_current_ = false;
   bool has_previous_ = false;

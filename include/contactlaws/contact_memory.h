@@ -289,7 +289,7 @@ struct Divergence {
   Kind kind = Kind::kNonFinite;
   double time = 0;       // s: the start of the step that diverged
   // The deepest tagged contact at that state, relative to its limit (-1: none
-  // in contact), its depth and depth rate.
+  // in contact, or kMujocoReset: the state is lost), its depth and depth rate.
   int pair = -1;
   double depth = 0;        // m
   double depth_rate = 0;   // m/s

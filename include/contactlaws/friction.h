@@ -90,7 +90,9 @@ struct FrictionParams {
   // c_t, N s/m >= 0; unset: 2 sqrt(k_t m), m the pair's mass (ContactModel)
   std::optional<double> tangential_damping;
   double bristle_stiffness = kDefaultBristleStiffness;  // sigma0, 1/m > 0 (x F_n)
-  std::optional<double> bristle_damping;  // sigma1, s/m >= 0; unset: sqrt(sigma0 x 1 m)
+  // sigma1, s/m >= 0 (x F_n); unset: critical for the bristles at the load and
+  // the pair's mass m, 2 sqrt(sigma0 F_n m) N s/m (see FrictionInput::mass)
+  std::optional<double> bristle_damping;
   double viscous = 0;      // sigma2, N s/m >= 0 (stribeck, lugre)
   double torsional = 0;    // m >= 0: torsional torque cap / F_n (condim >= 4)
   double rolling = 0;      // m >= 0: rolling torque cap / F_n (condim 6)
@@ -143,6 +145,10 @@ struct FrictionInput {
   double stiffness = 0;             // k_t now, N/m
   double committed_stiffness = 0;   // k_t at the commit
   double damping = 0;               // c_t, N s/m
+  // kg, the pair's effective mass: LuGre's bristles are critically damped with
+  // it unless bristle_damping is given (sigma1 = sqrt(sigma0) of Canudas de
+  // Wit's 1 kg example, x F_n, is 40x critical under a 500 N impact: stiff)
+  double mass = 0;
 };
 struct FrictionOutput {
   double force[3] = {0, 0, 0};  // on body[1], N

@@ -51,7 +51,11 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
   const double speed = Norm(in.slip);
   const double g = std::max(StribeckMu(p, speed), 1e-300);
   const double sigma0 = p.bristle_stiffness;
-  const double sigma1 = p.bristle_damping.value_or(std::sqrt(sigma0));
+  const double fn = in.normal_force;
+  // the bristles' damper, N s/m: the tag's sigma1 F_n, or critical for the
+  // bristle spring sigma0 F_n on the pair's mass
+  const double bristle_damping = p.bristle_damping ? *p.bristle_damping * fn
+                                                   : 2 * std::sqrt(sigma0 * fn * in.mass);
   const double du = Norm(in.stretch);
   const double decay = std::exp(-sigma0 * du / g);
   double z[3], zdot[3];
@@ -60,9 +64,8 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
     z[i] = steady + (in.committed[i] - steady) * decay;
   }
   for (int i = 0; i < 3; ++i) zdot[i] = in.slip[i] - sigma0 * speed * z[i] / g;
-  const double fn = in.normal_force;
   for (int i = 0; i < 3; ++i) {
-    out.force[i] = -(fn * (sigma0 * z[i] + sigma1 * zdot[i]) + p.viscous * in.slip[i]);
+    out.force[i] = -(fn * sigma0 * z[i] + bristle_damping * zdot[i] + p.viscous * in.slip[i]);
     out.state[i] = z[i];
   }
   out.sliding = Norm(z) > 0.5 * g / sigma0;

@@ -40,7 +40,8 @@ const std::vector<FrictionInfo>& FrictionModels() {
        "F = -(F_n (s0 z + s1 z') + s2 v), z' = v - s0 |v| z / mu(v), mu(v) as stribeck",
        "the bristle deflection z (m), a vector in the tangent plane, committed per step",
        "mu_static, mu_kinetic, stribeck_velocity, bristle_stiffness s0 (1/m > 0, x F_n; default "
-       "1e5), bristle_damping s1 (s/m >= 0, x F_n; default sqrt(s0 m)), viscous s2 (N s/m >= 0)",
+       "1e5), bristle_damping s1 (s/m >= 0, x F_n; default: critical, 2 sqrt(s0 m / F_n) with m the "
+       "pair's mass), viscous s2 (N s/m >= 0)",
        "C. Canudas de Wit, H. Olsson, K. J. Astrom, P. Lischinsky, IEEE Trans. Autom. Control "
        "40:419-425 (1995)"},
     };

@@ -64,6 +64,7 @@ void ContactData::Step() {
 void ContactData::BeforeStep() {
   // the time went back: mj_resetData (or a keyframe) since the last step
   if (has_current_ && d_->time < current_time_) Reset();
+  step_start_time_ = d_->time;
   for (int i = 0; i < 3; ++i) bad_state_warnings_[i] = d_->warning[kBadStateWarnings[i]].number;
   for (const Drive& drive : model_.drives()) {
     drive.Position(d_->time, d_->mocap_pos + 3 * drive.mocap);
@@ -277,9 +278,14 @@ void ContactData::CheckDivergence() {
   if (!kind) return;
   Divergence& divergence = divergence_.emplace();
   divergence.kind = *kind;
-  divergence.time = has_capture_ ? captured_time_ : current_time_;
+  // a reset state reads time 0: the step that found it started before
+  divergence.time = *kind == Divergence::Kind::kMujocoReset ? step_start_time_
+                    : has_capture_                          ? captured_time_
+                                                            : current_time_;
   divergence.what = std::move(what);
-  if (deepest) {
+  // a reset before the hook's capture: the capture is of the reset state
+  const bool capture_before_reset = has_capture_ && captured_time_ == step_start_time_;
+  if (deepest && (*kind != Divergence::Kind::kMujocoReset || capture_before_reset)) {
     divergence.pair = deepest->pair;
     divergence.depth = deepest->depth;
     divergence.depth_rate = deepest->depth_rate;

@@ -97,6 +97,7 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   in.stiffness = params.tangential_stiffness.value_or(kMindlinRatio *
                                                       NormalStiffness(pair.params, e->depth));
   in.committed_stiffness = committed.stiffness;
+  in.mass = pair.friction_mass;
   in.damping =
       params.tangential_damping.value_or(2 * std::sqrt(in.stiffness * pair.friction_mass));
 

@@ -49,6 +49,8 @@ std::string DivergenceMessage(const Simulation& sim, const Divergence& divergenc
                           ? fmt::format("{}: depth {:.4g} m, depth rate {:.4g} m/s",
                                         PairName(sim, divergence.pair), divergence.depth,
                                         divergence.depth_rate)
+                      : divergence.kind == Divergence::Kind::kMujocoReset
+                          ? std::string("the contacts before MuJoCo's reset are lost")
                           : std::string("no tagged pair in contact");
   // the likely cause: the tag that diverged, else the first tag the
   // timestep does not resolve, else the first tag

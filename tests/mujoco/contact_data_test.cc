@@ -367,5 +367,23 @@ TEST_F(HooksTest, DivergenceIsFoundAndNamed) {
   }
 }
 
+TEST_F(HooksTest, AResetAtTheStartOfAStepIsDatedThereNotAtZero) {
+  UniqueModel m = Load(testing::DropXml("law=hertz stiffness=1e7", 1.0, "RK4", 1e-4));
+  ContactModel cm(m.get(), "drop");
+  mjData* d = MakeData(m.get());
+  mj_resetDataKeyframe(m.get(), d, 0);
+  ContactData contacts(cm, d);
+  while (d->time < 0.01) contacts.Step();
+  const double before = d->time;
+  d->qvel[2] = 2 * mjMAXVAL;  // MuJoCo's check at the step's start resets the data
+  contacts.Step();
+  ASSERT_TRUE(contacts.divergence());
+  EXPECT_EQ(contacts.divergence()->kind, Divergence::Kind::kMujocoReset);
+  EXPECT_DOUBLE_EQ(contacts.divergence()->time, before);
+  EXPECT_EQ(contacts.divergence()->pair, -1);  // the reset state says nothing of the contacts
+  ExpectMujocoWarning("Nan, Inf or huge value in QVEL");
+  d->warning[mjWARN_BADQVEL].number = 0;
+}
+
 }  // namespace
 }  // namespace contactlaws
