@@ -110,7 +110,8 @@ struct TangentialEstimate {
   double stiffness = 0;     // N/m: k_t, or LuGre's sigma0 F_n; 0 for regularized
   double mass = 0;          // kg, GeomPair::friction_mass
   double normal_force = 0;  // N, the load assumed
-  double duration = std::numeric_limits<double>::infinity();  // s, TangentialDuration (infinite: none, or not estimated)
+  // s, TangentialDuration (infinite: none, or not estimated)
+  double duration = std::numeric_limits<double>::infinity();
   // "stick spring (coulomb, k_t 1e+07 N/m, mass 1 kg)": what sets it
   std::string what;
   // The period 2 duration in kStepsPerContact steps (a critically damped

@@ -50,7 +50,8 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
   if (automatic) {
     // the auto timestep's own rule at its default accuracy (auto_timestep.h)
     fmt::print("  tangential: {}: period {:.4g} s: --timestep auto: steps of <= {:.3g} s in "
-               "contact\n", t.what, 2 * t.duration, t.duration / StepsPerContact(kDefaultAccuracy));
+               "contact\n",
+               t.what, 2 * t.duration, 2 * t.duration / StepsPerContact(kDefaultAccuracy));
     return false;
   }
   const double step = t.timestep();

@@ -2,8 +2,9 @@
 //
 // contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]:
 // MuJoCo's own viewer, mujoco-simulate, with libcontactlaws_plugin.so
-// preloaded and the overrides in its environment. The scene's tags and the overrides are checked first,
-// as run checks them, so a refusal is the same line and no window opens.
+// preloaded and the overrides in its environment. The scene's tags and the
+// overrides are checked first, as run checks them, so a refusal is the same
+// line and no window opens.
 
 #include <unistd.h>
 

@@ -123,7 +123,7 @@ void LeaveOutLawsMissingADissipation(SweepInputs* in) {
   for (const LawKind law : in->laws) {
     if (ReadsDissipation(law)) {
       try {
-        RunSpec spec{law, std::nullopt};
+        RunSpec spec{law, std::nullopt, std::nullopt};
         in->scene->Make(OptionsFor(in->common.simulation, spec));
       } catch (const Error&) {
         Warn(in->scene->path(), fmt::format("--laws all leaves out {}: it needs a dissipation "

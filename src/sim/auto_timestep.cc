@@ -151,7 +151,9 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
       duration = std::min(duration, M_PI * std::sqrt(pair.friction_inertia / k));
     }
   }
-  return duration / options_.steps_per_contact;
+  // its period 2 duration, as a contact's duration, in steps_per_contact
+  // steps (the fixed-step rule: kStepsPerContact in either)
+  return 2 * duration / options_.steps_per_contact;
 }
 
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {

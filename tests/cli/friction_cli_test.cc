@@ -75,9 +75,8 @@ TEST(FrictionCliTest, CompareRunsEachFrictionModel) {
   ASSERT_EQ(summary.size(), 1u + FrictionModels().size());
   EXPECT_EQ(summary[0].rfind("law,restitution,friction,impacts,", 0), 0u) << summary[0];
   for (size_t i = 0; i < FrictionModels().size(); ++i) {
-    EXPECT_EQ(summary[1 + i].rfind(fmt::format("hunt-crossley,0.5,{},", FrictionModels()[i].name), 0),
-              0u)
-        << summary[1 + i];
+    const std::string run = fmt::format("hunt-crossley,0.5,{},", FrictionModels()[i].name);
+    EXPECT_EQ(summary[1 + i].rfind(run, 0), 0u) << summary[1 + i];
   }
   const std::vector<std::string> impacts = Lines(ReadFile(dir + "1/impacts.csv"));
   EXPECT_EQ(impacts[0].rfind("law,restitution,friction,pair,geom1,", 0), 0u) << impacts[0];
@@ -168,9 +167,9 @@ TEST(FrictionCliTest, AStickSpringTooStiffForTheTimestepIsWarnedBeforeTheRun) {
                                 " --duration 0.001");
   EXPECT_EQ(mindlin.output.find("stick spring"), std::string::npos) << mindlin.output;
   // LuGre's bristles: sigma0 F_n = 1e7 x 9.81 N/m on 1 kg
-  const Result bristles = RunCli("run " + SlidingBall("stiff_bristles",
-                                                      "friction=lugre mu=0.3 bristle_stiffness=1e7") +
-                                 " --duration 0.001");
+  const std::string lugre =
+      SlidingBall("stiff_bristles", "friction=lugre mu=0.3 bristle_stiffness=1e7");
+  const Result bristles = RunCli("run " + lugre + " --duration 0.001");
   EXPECT_NE(bristles.output.find("of its bristles (lugre, sigma0 F_n 9.81e+07 N/m, F_n 9.81 N, "
                                  "mass 1 kg)"),
             std::string::npos)
@@ -233,7 +232,8 @@ TEST(FrictionCliTest, BadFrictionInputIsNamedInOneLine) {
 </mujoco>)");
   r = RunCli("run " + belt + " --duration 0.001");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.output, "contactlaws: " + belt + ": contactdrive:belt: speed=nan is not a finite number\n");
+  EXPECT_EQ(r.output,
+            "contactlaws: " + belt + ": contactdrive:belt: speed=nan is not a finite number\n");
   // and the options
   r = RunCli("run " + frictionless + " --mu -0.1");
   EXPECT_EQ(r.output, "contactlaws: --mu=-0.1 must be >= 0\n");

@@ -100,7 +100,8 @@ TEST(TagsTest, TorqueCapsAreLengthsAtLeastZero) {
   EXPECT_EQ(PairTagError(ok + "rolling_friction=inf"),
             "s.xml: contactlaw:t: rolling_friction=inf is not a finite number");
   EXPECT_EQ(PairTagError(ok + "rolling_fricton=0.1"),
-            "s.xml: contactlaw:t: unknown key 'rolling_fricton' (did you mean 'rolling_friction'?)");
+            "s.xml: contactlaw:t: unknown key 'rolling_fricton' (did you mean "
+            "'rolling_friction'?)");
 }
 
 TEST(TagsTest, ALinearDriveNeedsAFiniteSpeed) {
