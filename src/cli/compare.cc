@@ -2,6 +2,8 @@
 
 #include "cli/commands.h"
 
+#include <memory>
+
 #include <fmt/format.h>
 
 #include "cli/csv_file.h"
@@ -110,6 +112,14 @@ class CompareFiles {
   CsvFile summary_;
 };
 
+// True when a tagged pair of model can have friction (its larger condim > 1).
+bool HasFriction(const ContactModel& model) {
+  for (const GeomPair& pair : model.pairs()) {
+    if (pair.condim > 1) return true;
+  }
+  return false;
+}
+
 // One run's line of the printed table.
 struct TableRow {
   RunSpec spec;
@@ -157,8 +167,12 @@ int CompareCommand(const SweepArgs& args) {
   const std::vector<std::vector<TimestepAdvice>> advices =
       Prepare(*in.scene, options, specs, in.common.auto_timestep.has_value());
 
-  CompareFiles files(args.output_dir,
-                     in.scene->Make(OptionsFor(options, specs.front()))->Columns(), frictions);
+  const std::unique_ptr<Simulation> first = in.scene->Make(OptionsFor(options, specs.front()));
+  if (frictions && !HasFriction(first->contact_model())) {
+    Warn(in.scene->path(), "--frictions: every tagged pair is frictionless (condim 1, as in "
+                           "MuJoCo): the friction models do not act");
+  }
+  CompareFiles files(args.output_dir, first->Columns(), frictions);
   SweepOptions sweep;
   sweep.advance.duration = in.common.duration;
   sweep.advance.sample_rate = in.common.sample_rate;

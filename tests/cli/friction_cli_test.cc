@@ -107,6 +107,19 @@ TEST(FrictionCliTest, CompareRunsEachFrictionModel) {
             0u);
 }
 
+TEST(FrictionCliTest, CompareWarnsWhenNoPairHasFriction) {
+  const std::string scene = SlidingBall("compare_condim1", "", R"(condim="1")");
+  const Result r = RunCli("compare " + scene + " --laws hunt-crossley --frictions none,coulomb " +
+                          "--quiet --duration 0.01 --output-dir " + ::testing::TempDir() +
+                          "/condim1");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.rfind("contactlaws: warning: " + scene + ": --frictions: every tagged pair "
+                           "is frictionless (condim 1, as in MuJoCo): the friction models do "
+                           "not act\n", 0),
+            0u)
+      << r.output;
+}
+
 TEST(FrictionCliTest, CompareRefusesABadFrictionList) {
   const std::string scene = SlidingBall("compare_bad_frictions", "mu=0.3");
   const struct {
