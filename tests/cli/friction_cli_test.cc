@@ -120,6 +120,20 @@ TEST(FrictionCliTest, CompareWarnsWhenNoPairHasFriction) {
       << r.output;
 }
 
+// laws lists every friction model and the torque caps' keys with their unit
+TEST(FrictionCliTest, LawsListsTheFrictionModelsAndTheTorqueCaps) {
+  const Result r = RunCli("laws");
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const FrictionInfo& model : FrictionModels()) {
+    EXPECT_NE(r.output.find("\n" + std::string(model.name) + "\n  "), std::string::npos)
+        << model.name;
+  }
+  for (const char* expected : {"torsional_friction x F_n (condim >= 4)",
+                               "rolling_friction x F_n (condim 6): tag keys, m >= 0"}) {
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  }
+}
+
 TEST(FrictionCliTest, CompareRefusesABadFrictionList) {
   const std::string scene = SlidingBall("compare_bad_frictions", "mu=0.3");
   const struct {
