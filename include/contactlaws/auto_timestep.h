@@ -30,7 +30,15 @@
 //      d = 0: the first state after the separation, from which the impact
 //      log reads the separation speed, is then not slowed by gravity over
 //      a part of a fine step (a first-order error in the rebound).
-//   4. The step is the smallest asked for, at most max_step (none by
+//   4. A pair in contact with friction also asks for its tangential step:
+//      the period of its stick spring (2 pi sqrt(m / k_t), m the pair's
+//      friction_mass), LuGre's bristles or the regularized curve (twice
+//      TangentialDuration), or of its rolling and torsional springs, divided
+//      by steps_per_contact, as the normal contact's duration is (the fixed
+//      step's rule likewise asks 20 steps of either). With Mindlin's k_t the
+//      period is ~2x the normal contact's duration: it binds only for a
+//      stiffer spring.
+//   5. The step is the smallest asked for, at most max_step (none by
 //      default: free flight under gravity alone is a parabola, which RK4
 //      integrates exactly, so the gap closure of rule 2 is what limits it),
 //      and grows at most by `growth` from one step to the next. A scene with
@@ -84,7 +92,7 @@ struct AutoTimestepOptions {
   // under Euler or implicit integration, the flight step.
   double accuracy = kDefaultAccuracy;
   // s: an optional cap on every step (none by default: the dynamics bound
-  // the flight step, rule 4 above).
+  // the flight step, rule 5 above).
   double max_step = std::numeric_limits<double>::infinity();
   // Overrides of what the accuracy sets (0: from the accuracy): the fine
   // step is the estimated contact duration / steps_per_contact (Hertz
@@ -128,6 +136,12 @@ class AutoTimestep {
   // The step a pair in contact allows at evaluation e: its fine step, cut to
   // end just past d = 0 when it separates within it.
   double ContactStep(const ContactData::Evaluation& e) const;
+  // The step the friction of a pair in contact allows at evaluation e: the
+  // period 2 TangentialDuration (stick spring, bristles or regularized curve,
+  // at e's stiffness and normal force, on the pair's friction_mass), and that
+  // of its rolling and torsional springs, over steps_per_contact; infinite
+  // without friction.
+  double TangentialStep(const ContactData::Evaluation& e) const;
   // The bound of the flight step: the scene's own timestep when it has
   // dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;

@@ -7,7 +7,9 @@
 #ifndef CONTACTLAWS_ESTIMATE_H_
 #define CONTACTLAWS_ESTIMATE_H_
 
+#include <limits>
 #include <optional>
+#include <string>
 
 #include "contactlaws/contact_data.h"
 
@@ -99,6 +101,25 @@ struct TagEstimate {
 };
 TagEstimate EstimateTag(const ContactData& contacts, int tag,
                         std::optional<double> impact_velocity = std::nullopt);
+
+// The tangential dynamics of a pair with friction, before the run: its
+// TangentialDuration at the pair's weight (friction_mass |gravity|) on the
+// pair's friction_mass, the stick spring's k_t given by the tag or Mindlin's
+// at the estimated elastic depth of normal (or the overlap at the start).
+struct TangentialEstimate {
+  double stiffness = 0;     // N/m: k_t, or LuGre's sigma0 F_n; 0 for regularized
+  double mass = 0;          // kg, GeomPair::friction_mass
+  double normal_force = 0;  // N, the load assumed
+  // s, TangentialDuration (infinite: none, or not estimated)
+  double duration = std::numeric_limits<double>::infinity();
+  // "stick spring (coulomb, k_t 1e+07 N/m, mass 1 kg)": what sets it
+  std::string what;
+  // The period 2 duration in kStepsPerContact steps (a critically damped
+  // spring: 2 pi sqrt(m / k) / 20).
+  double timestep() const { return 2 * duration / kStepsPerContact; }
+};
+TangentialEstimate EstimateTangential(const ContactModel& model, int pair,
+                                      const ContactEstimate& normal);
 
 }  // namespace contactlaws
 

@@ -110,6 +110,21 @@ double NormalStiffness(const LawParams& law, double depth);
 // curve (regularized).
 double SlidingMu(const FrictionParams& params, double speed);
 
+// The time scale of a contact's tangential dynamics, s: what the contact
+// duration is to the normal law (the auto timestep and the timestep advice
+// divide it into steps). pi / r, r the fastest rate (1/s) of the spring k and
+// damper c the contact puts on mass m (kg): r = sqrt(k / m) when c <= 2
+// sqrt(k m), else c / 2m + sqrt((c / 2m)^2 - k / m). The spring and damper:
+//   coulomb, stribeck: k_t = stiffness (N/m), c_t (default 2 sqrt(k_t m):
+//     critical, r = sqrt(k_t / m)) plus viscous;
+//   lugre: the bristles sigma0 F_n, sigma1 F_n plus viscous;
+//   regularized: no spring; its curve's slope at zero slip, 2 mu_s F_n / v_t,
+//     is a damper (r = 2 mu_s F_n / (v_t m)).
+// Infinite for none, and where nothing stiffens the contact (no load, no
+// stiffness, an infinite mass).
+double TangentialDuration(const FrictionParams& params, double stiffness, double mass,
+                          double normal_force);
+
 // A 3-vector spring of the stick state (the tangential force, or a rolling
 // or torsional torque), capped at a limit. Incremental: the committed value,
 // scaled down with the stiffness when it fell since the commit (an

@@ -22,12 +22,26 @@ struct TimestepAdvice {
   TagEstimate shortest;
   double steps = 0;     // per estimated contact duration (inf: not estimated)
   bool coarse = false;  // steps < kStepsPerContact
+  // the friction of the shortest pair: its stick spring (or bristles, or
+  // regularized curve), and whether the timestep is above its timestep()
+  TangentialEstimate tangential;
+  bool tangential_coarse = false;
 };
 std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim);
 
 // "contactlaw:TAG (g1, g2): timestep H s puts S steps in the estimated
 // contact duration T s (>= 20 needed): use --timestep H' or smaller".
 std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+
+// "contactlaw:TAG (g1, g2): timestep H s puts S steps in the period P s of
+// its stick spring (coulomb, k_t ...) (>= 20 needed): use --timestep H' or
+// smaller".
+std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+
+// Every warning of advice (a fixed timestep's): CoarseTimestepWarning and
+// TangentialTimestepWarning of each tag that needs them.
+std::vector<std::string> TimestepWarnings(const Simulation& sim,
+                                          const std::vector<TimestepAdvice>& advice);
 
 // "t = T s: contactlaw:TAG (g1, g2): depth D m, depth rate R m/s: WHAT;
 // likely cause: ..." for a run stopped at divergence; advice from before the

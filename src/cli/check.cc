@@ -32,8 +32,11 @@ void PrintSettings(const Simulation& sim) {
 }
 
 // The friction of a tag's pair, and the step its tangential dynamics need
-// (kStepsPerContact steps per period); true when the timestep is too coarse.
-bool PrintFriction(const GeomPair& pair, const ContactEstimate& estimate, double dt) {
+// (EstimateTangential: kStepsPerContact steps per period); true when the
+// timestep is too coarse.
+bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
+                   double dt, bool automatic) {
+  const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   if (f.kind == FrictionKind::kNone) {
     fmt::print("  friction none{}\n", pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
@@ -43,30 +46,18 @@ bool PrintFriction(const GeomPair& pair, const ContactEstimate& estimate, double
              f.mu_static, f.mu_kinetic, pair.condim,
              f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
              f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
-  const double mass = pair.friction_mass;
-  const double g = 9.81;  // the load per kg the estimates assume, m/s^2
-  double period = 0;
-  std::string what;
-  if (f.kind == FrictionKind::kRegularized) {
-    // the curve's slope 2 mu_s F_n / v_t is a damper: dt < m v_t / (mu_s F_n)
-    period = kStepsPerContact * f.transition_velocity / (std::max(f.mu_static, 1e-300) * g);
-    what = fmt::format("regularized slope 2 mu_s F_n / v_t, v_t {} m/s", f.transition_velocity);
-  } else if (f.kind == FrictionKind::kLuGre) {
-    period = 2 * M_PI / std::sqrt(f.bristle_stiffness * g);
-    what = fmt::format("bristles sigma0 F_n, sigma0 {} 1/m", f.bristle_stiffness);
-  } else {
-    // the deepest the contact gets: the estimate's, or its overlap now
-    const double depth = std::max(std::isfinite(estimate.max_depth) ? estimate.max_depth : 0.0,
-                                  estimate.gap ? -*estimate.gap : 0.0);
-    const double k = f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
-    period = 2 * M_PI * std::sqrt(mass / k);
-    what = fmt::format("stick spring k_t {:.4g} N/m{}, mass {:.4g} kg", k,
-                       f.tangential_stiffness ? "" : " (Mindlin, at the max depth)", mass);
+  const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
+  if (automatic) {
+    // the auto timestep's own rule at its default accuracy (auto_timestep.h)
+    fmt::print("  tangential: {}: period {:.4g} s: --timestep auto: steps of <= {:.3g} s in "
+               "contact\n",
+               t.what, 2 * t.duration, 2 * t.duration / StepsPerContact(kDefaultAccuracy));
+    return false;
   }
-  const double step = period / kStepsPerContact;
+  const double step = t.timestep();
   const bool ok = !(std::isfinite(step)) || dt <= step;
-  fmt::print("  tangential: {}: {} (needs timestep <= {:.3g} s)\n", what,
-             ok ? "ok" : "TOO COARSE", step);
+  fmt::print("  tangential: {}: period {:.4g} s: {} (needs timestep <= {:.3g} s)\n", t.what,
+             2 * t.duration, ok ? "ok" : "TOO COARSE", step);
   return !ok;
 }
 
@@ -116,7 +107,7 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, boo
           : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
                         "speed");
   fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
-  const bool tangential_coarse = PrintFriction(pair, estimate, dt);
+  const bool tangential_coarse = PrintFriction(cm, worst, estimate, dt, automatic);
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");

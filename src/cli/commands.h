@@ -42,6 +42,8 @@ struct SimulateArgs {
   std::string scene;
   std::optional<std::string> law;
   std::optional<std::string> restitution;
+  std::optional<std::string> friction;
+  std::optional<std::string> mu;
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.

@@ -2,6 +2,8 @@
 
 #include "cli/commands.h"
 
+#include <memory>
+
 #include <fmt/format.h>
 
 #include "cli/csv_file.h"
@@ -13,39 +15,69 @@ namespace contactlaws::cli {
 namespace {
 
 // A law that reads no restitution once (an elastic one at e = 1); every other
-// law at each restitution (the scene's if none given).
+// law at each restitution (the scene's if none given); each of those with
+// every friction model of --frictions (the scene's if none given).
 std::vector<RunSpec> CompareSpecs(const std::vector<LawKind>& laws,
-                                  const std::vector<double>& restitutions) {
+                                  const std::vector<double>& restitutions,
+                                  const std::vector<FrictionKind>& frictions) {
   std::vector<RunSpec> specs;
+  auto add = [&](LawKind law, std::optional<double> e) {
+    if (frictions.empty()) specs.push_back({law, e, std::nullopt});
+    for (const FrictionKind friction : frictions) specs.push_back({law, e, friction});
+  };
   for (const LawKind law : laws) {
     if (!ReadsRestitution(law)) {
-      specs.push_back({law, IsElastic(law) ? std::optional<double>(1.0) : std::nullopt});
+      add(law, IsElastic(law) ? std::optional<double>(1.0) : std::nullopt);
     } else if (restitutions.empty()) {
-      specs.push_back({law, std::nullopt});
+      add(law, std::nullopt);
     } else {
-      for (const double e : restitutions) specs.push_back({law, e});
+      for (const double e : restitutions) add(law, e);
     }
   }
   return specs;
 }
 
+// law, restitution, and friction when the runs compare friction models.
+std::vector<std::string> RunColumns(bool frictions) {
+  std::vector<std::string> columns = {"law", "restitution"};
+  if (frictions) columns.emplace_back("friction");
+  return columns;
+}
+
+// The run's fields of RunColumns.
+std::vector<std::string> RunFields(const RunSpec& spec, const std::optional<double>& restitution) {
+  std::vector<std::string> fields = {std::string(LawName(spec.law)), Field(restitution)};
+  if (spec.friction) fields.emplace_back(FrictionName(*spec.friction));
+  return fields;
+}
+
 // The three files of compare, written run by run in order.
 class CompareFiles {
  public:
-  CompareFiles(const std::string& dir, std::vector<std::string> trajectory_columns)
+  // frictions: the runs compare friction models (a friction column after
+  // restitution in each file)
+  CompareFiles(const std::string& dir, const std::vector<std::string>& trajectory_columns,
+               bool frictions)
       : trajectories_(CreateDirectory(dir) + "/trajectories.csv"),
         impacts_(dir + "/impacts.csv"),
         summary_(dir + "/summary.csv") {
-    trajectory_columns.insert(trajectory_columns.begin(), {"law", "restitution"});
-    trajectories_.Header(trajectory_columns);
-    impacts_.Header(ImpactColumns());
-    summary_.Header({"law", "restitution", "impacts", "restitution_post", "max_depth",
-                     "max_force", "contact_duration", "time_to_rest", "dissipated_energy",
-                     "status", "reason"});
+    std::vector<std::string> columns = RunColumns(frictions);
+    columns.insert(columns.end(), trajectory_columns.begin(), trajectory_columns.end());
+    trajectories_.Header(columns);
+    std::vector<std::string> impact_columns = ImpactColumns();
+    if (frictions) impact_columns.insert(impact_columns.begin() + 2, "friction");
+    impacts_.Header(impact_columns);
+    columns = RunColumns(frictions);
+    for (const char* c : {"impacts", "restitution_post", "max_depth", "max_force",
+                          "contact_duration", "time_to_rest", "dissipated_energy", "status",
+                          "reason"}) {
+      columns.emplace_back(c);
+    }
+    summary_.Header(columns);
   }
 
   void Write(const RunSpec& spec, const RunOutput& out) {
-    const std::string law(LawName(spec.law));
+    std::vector<std::string> fields = RunFields(spec, out.restitution);
     if (out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed) {
       // a failed run's rows up to its divergence are valid; an interrupted
       // run's are not written at all
@@ -54,14 +86,15 @@ class CompareFiles {
     }
     const RunSummary& s = out.summary;
     if (out.status == RunOutput::Status::kOk) {
-      summary_.Fields({law, Field(out.restitution), Field(s.impacts), Field(s.restitution_post),
-                       Field(s.max_depth), Field(s.max_force), Field(s.contact_duration),
-                       Field(s.time_to_rest), Field(out.dissipated), "ok", ""});
+      fields.insert(fields.end(), {Field(s.impacts), Field(s.restitution_post),
+                                   Field(s.max_depth), Field(s.max_force),
+                                   Field(s.contact_duration), Field(s.time_to_rest),
+                                   Field(out.dissipated), "ok", ""});
     } else {
       // a failed run's numbers are not to be trusted: only its status
-      summary_.Fields({law, Field(out.restitution), "", "", "", "", "", "", "",
-                       StatusName(out.status), out.reason});
+      fields.insert(fields.end(), {"", "", "", "", "", "", "", StatusName(out.status), out.reason});
     }
+    summary_.Fields(fields);
     trajectories_.Flush();
     impacts_.Flush();
     summary_.Flush();
@@ -79,6 +112,14 @@ class CompareFiles {
   CsvFile summary_;
 };
 
+// True when a tagged pair of model can have friction (its larger condim > 1).
+bool HasFriction(const ContactModel& model) {
+  for (const GeomPair& pair : model.pairs()) {
+    if (pair.condim > 1) return true;
+  }
+  return false;
+}
+
 // One run's line of the printed table.
 struct TableRow {
   RunSpec spec;
@@ -88,18 +129,28 @@ struct TableRow {
   double dissipated;
 };
 
-void PrintTable(const std::vector<TableRow>& rows) {
-  fmt::print("{:<20} {:>11} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
-             "restitution", "collisions", "first e_post", "max depth (m)", "max force (N)",
-             "duration (s)", "at rest (s)", "dissipated (J)");
+// The run's first cells: law, restitution, and the friction model when the
+// runs compare them.
+std::string RunCells(const RunSpec& spec, const std::string& restitution, bool frictions) {
+  std::string cells = fmt::format("{:<20} {:>11}", LawName(spec.law), restitution);
+  if (frictions) {
+    cells += fmt::format(" {:<11}", spec.friction ? FrictionName(*spec.friction) : "");
+  }
+  return cells;
+}
+
+void PrintTable(const std::vector<TableRow>& rows, bool frictions) {
+  fmt::print("{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
+             "restitution", frictions ? fmt::format(" {:<11}", "friction") : "", "collisions",
+             "first e_post", "max depth (m)", "max force (N)", "duration (s)", "at rest (s)",
+             "dissipated (J)");
   for (const TableRow& r : rows) {
+    const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
     if (r.status != RunOutput::Status::kOk) {
-      fmt::print("{:<20} {:>11} {}\n", LawName(r.spec.law), Field(r.restitution),
-                 StatusName(r.status));
+      fmt::print("{} {}\n", cells, StatusName(r.status));
       continue;
     }
-    fmt::print("{:<20} {:>11} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n",
-               LawName(r.spec.law), Field(r.restitution), r.s.impacts,
+    fmt::print("{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells, r.s.impacts,
                Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
                Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
                r.dissipated);
@@ -111,12 +162,17 @@ void PrintTable(const std::vector<TableRow>& rows) {
 int CompareCommand(const SweepArgs& args) {
   const SweepInputs in = ReadSweepInputs(args, nullptr);
   const SimulationOptions& options = in.common.simulation;
-  const std::vector<RunSpec> specs = CompareSpecs(in.laws, in.restitutions);
+  const std::vector<RunSpec> specs = CompareSpecs(in.laws, in.restitutions, in.frictions);
+  const bool frictions = !in.frictions.empty();
   const std::vector<std::vector<TimestepAdvice>> advices =
       Prepare(*in.scene, options, specs, in.common.auto_timestep.has_value());
 
-  CompareFiles files(args.output_dir,
-                     in.scene->Make(OptionsFor(options, specs.front()))->Columns());
+  const std::unique_ptr<Simulation> first = in.scene->Make(OptionsFor(options, specs.front()));
+  if (frictions && !HasFriction(first->contact_model())) {
+    Warn(in.scene->path(), "--frictions: every tagged pair is frictionless (condim 1, as in "
+                           "MuJoCo): the friction models do not act");
+  }
+  CompareFiles files(args.output_dir, first->Columns(), frictions);
   SweepOptions sweep;
   sweep.advance.duration = in.common.duration;
   sweep.advance.sample_rate = in.common.sample_rate;
@@ -133,7 +189,7 @@ int CompareCommand(const SweepArgs& args) {
                            });
   files.Commit();
 
-  PrintTable(rows);
+  PrintTable(rows, frictions);
   fmt::print("wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n", args.output_dir);
   return status;
 }

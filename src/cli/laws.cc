@@ -55,7 +55,11 @@ void PrintText() {
   fmt::print("\nFriction models (tag key friction=, --friction; docs/friction.md). Convention:\n"
              "slip v of geom2's body relative to geom1's at the contact point, force F on it\n"
              "opposing the slip, normal force F_n from the law; default coulomb when the pair\n"
-             "has friction (condim > 1), mu from the geoms' friction (the larger, as MuJoCo).\n");
+             "has friction (condim > 1), mu from the geoms' friction (the larger, as MuJoCo).\n"
+             "Every model but none adds, as MuJoCo's condim has them, a torsional torque\n"
+             "capped at torsional_friction x F_n (condim >= 4) and a rolling torque capped at\n"
+             "rolling_friction x F_n (condim 6): tag keys, m >= 0 (default: the geoms' second\n"
+             "and third friction coefficients, the larger), sticking as sliding does.\n");
   for (const FrictionInfo& model : FrictionModels()) {
     fmt::print("\n{}\n  {}\n  state:      {}\n  parameters: {}\n  reference:  {}\n", model.name,
                model.formula, model.state, model.parameters, model.reference);

@@ -146,6 +146,11 @@ void AddSweeps(CLI::App* app, Commands* c) {
   c->compare_cmd->add_option("--output-dir", c->compare.output_dir,
                              "writes trajectories.csv, impacts.csv, summary.csv")
       ->capture_default_str();
+  c->compare_cmd->add_option(
+      "--frictions", c->compare.frictions,
+      fmt::format("M1,M2,... or all ({}): each run with each friction model (a friction column "
+                  "in the files); not with --friction",
+                  FrictionNameList()));
   c->compare_cmd->add_flag("--impacts-per-point", c->compare.impacts_per_point,
                            "impacts.csv with a row per contact episode of each contact point");
 
@@ -196,6 +201,7 @@ void AddViewers(CLI::App* app, Commands* c) {
   c->simulate_cmd->add_option("scene", c->simulate.scene, "MJCF scene with contactlaw tags")
       ->required();
   AddOverrides(c->simulate_cmd, &c->simulate.law, &c->simulate.restitution);
+  AddFriction(c->simulate_cmd, &c->simulate.friction, &c->simulate.mu);
 
   CLI::App* cmd = c->render_cmd = app->add_subcommand(
       "render", "the run drawn offscreen (no window): a video, a GIF or PNG files");

@@ -125,7 +125,9 @@ void ParseFrictionOverrides(const std::optional<std::string>& friction,
   if (friction) {
     overrides->friction = ParseFrictionName(*friction);
     if (!overrides->friction) {
-      Refuse("--friction", *friction, fmt::format("is not a friction model ({})", FrictionNameList()));
+      Refuse("--friction", *friction,
+             fmt::format("is not a friction model ({}){}", FrictionNameList(),
+                         FrictionSuggestion(*friction)));
     }
   }
   if (mu) {
@@ -164,6 +166,26 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
     laws.push_back(*law);
   }
   return laws;
+}
+
+std::vector<FrictionKind> ParseFrictionList(std::string_view option, std::string_view text) {
+  std::vector<FrictionKind> models;
+  if (text == "all") {
+    for (const FrictionInfo& model : FrictionModels()) models.push_back(model.kind);
+    return models;
+  }
+  for (std::string_view name : Split(text, ',')) {
+    const std::optional<FrictionKind> model = ParseFrictionName(name);
+    if (!model) {
+      Refuse(option, text, fmt::format("has '{}', which is not a friction model (all, {}){}", name,
+                                       FrictionNameList(), FrictionSuggestion(name)));
+    }
+    if (std::find(models.begin(), models.end(), *model) != models.end()) {
+      Refuse(option, text, fmt::format("names {} twice", name));
+    }
+    models.push_back(*model);
+  }
+  return models;
 }
 
 double ParseDissipation(std::string_view text) {

@@ -74,6 +74,9 @@ std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text
 void ParseFrictionOverrides(const std::optional<std::string>& friction,
                             const std::optional<std::string>& mu, Overrides* overrides);
 
+// "all" (every friction model, in table order) or "M1,M2,..." (no repeats).
+std::vector<FrictionKind> ParseFrictionList(std::string_view option, std::string_view text);
+
 // --dissipation: a number >= 0 (s/m).
 double ParseDissipation(std::string_view text);
 

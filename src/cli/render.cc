@@ -79,8 +79,9 @@ int RenderCommand(const RenderArgs& args) {
   if (plan.frame.camera) render::FindCamera(model.get(), args.scene, *plan.frame.camera);
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
-  for (const TimestepAdvice& a : AdviseTimestep(sim.get())) {
-    if (a.coarse && !plan.common.auto_timestep) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  if (!plan.common.auto_timestep) {
+    for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);
   }
 
   signal(SIGPIPE, SIG_IGN);  // an ffmpeg that stops is an error of fwrite, not a signal

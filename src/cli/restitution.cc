@@ -74,7 +74,7 @@ int RestitutionCommand(const SweepArgs& args) {
   const Scene& scene = *in.scene;
   std::vector<RunSpec> specs;
   for (const LawKind law : in.laws) {
-    for (const double e : in.restitutions) specs.push_back({law, e});
+    for (const double e : in.restitutions) specs.push_back({law, e, std::nullopt});
   }
   const std::vector<std::vector<TimestepAdvice>> advices =
       Prepare(scene, options, specs, in.common.auto_timestep.has_value());

@@ -65,8 +65,8 @@ int RunCommand(const RunArgs& args) {
   if (args.impacts) impacts.emplace(*args.impacts);
 
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
-  for (const TimestepAdvice& a : advice) {
-    if (a.coarse && !auto_timestep) Warn(scene.path(), CoarseTimestepWarning(*sim, a));
+  if (!auto_timestep) {
+    for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);
   }
   if (trajectory) trajectory->Header(sim->Columns());
   AdvanceOptions advance;

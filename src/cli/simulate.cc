@@ -1,9 +1,10 @@
 // Copyright contactlaws authors.
 //
-// contactlaws simulate SCENE [--law L] [--restitution E]: MuJoCo's own viewer,
-// mujoco-simulate, with libcontactlaws_plugin.so preloaded and the overrides
-// in its environment. The scene's tags and the overrides are checked first,
-// as run checks them, so a refusal is the same line and no window opens.
+// contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]:
+// MuJoCo's own viewer, mujoco-simulate, with libcontactlaws_plugin.so
+// preloaded and the overrides in its environment. The scene's tags and the
+// overrides are checked first, as run checks them, so a refusal is the same
+// line and no window opens.
 
 #include <unistd.h>
 
@@ -32,6 +33,7 @@ void SetVariable(const char* name, const std::optional<std::string>& value) {
 int SimulateCommand(const SimulateArgs& args) {
   SimulationOptions options;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
+  ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
   const std::string plugin = FindPlugin();
@@ -41,6 +43,8 @@ int SimulateCommand(const SimulateArgs& args) {
   SetVariable("LD_PRELOAD", preloaded && *preloaded ? plugin + ":" + preloaded : plugin);
   SetVariable("CONTACTLAWS_LAW", args.law);
   SetVariable("CONTACTLAWS_RESTITUTION", args.restitution);
+  SetVariable("CONTACTLAWS_FRICTION", args.friction);
+  SetVariable("CONTACTLAWS_MU", args.mu);
   const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};
   execv(viewer.c_str(), const_cast<char* const*>(argv));
   throw Error(fmt::format("simulate: could not start {}", viewer));

@@ -64,8 +64,8 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
   try {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
     out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
-    const std::vector<std::string> prefix = {std::string(LawName(spec.law)),
-                                             Field(out.restitution)};
+    std::vector<std::string> prefix = {std::string(LawName(spec.law)), Field(out.restitution)};
+    if (spec.friction) prefix.emplace_back(FrictionName(*spec.friction));
     std::function<void(const std::vector<double>&)> on_row;
     if (sweep.record) {
       on_row = [&](const std::vector<double>& row) {
@@ -89,7 +89,10 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     out.warnings = RunWarnings(*sim, result);
     if (sweep.record) {
       for (const Impact& impact : ImpactsOf(sim->contacts(), sweep.impact_rows)) {
-        AppendFields(&out.impacts, ImpactFields(*sim, impact));
+        std::vector<std::string> fields = ImpactFields(*sim, impact);
+        // law, restitution, then the friction model as in the trajectories
+        if (spec.friction) fields.emplace(fields.begin() + 2, FrictionName(*spec.friction));
+        AppendFields(&out.impacts, fields);
       }
     }
     for (const Impact& impact : sim->contacts().impacts()) {
@@ -120,7 +123,7 @@ void LeaveOutLawsMissingADissipation(SweepInputs* in) {
   for (const LawKind law : in->laws) {
     if (ReadsDissipation(law)) {
       try {
-        RunSpec spec{law, std::nullopt};
+        RunSpec spec{law, std::nullopt, std::nullopt};
         in->scene->Make(OptionsFor(in->common.simulation, spec));
       } catch (const Error&) {
         Warn(in->scene->path(), fmt::format("--laws all leaves out {}: it needs a dissipation "
@@ -140,6 +143,14 @@ SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restituti
   SweepInputs in;
   in.common = ParseCommon(args);
   in.laws = ParseLawList("--laws", args.laws);
+  if (args.frictions) {
+    if (args.friction) {
+      Refuse("--frictions", *args.frictions,
+             fmt::format("goes without --friction={} (each run takes one of the list)",
+                         *args.friction));
+    }
+    in.frictions = ParseFrictionList("--frictions", *args.frictions);
+  }
   in.jobs = Jobs(args.jobs);
   if (args.restitution || default_restitutions) {
     in.restitutions =
@@ -151,13 +162,16 @@ SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restituti
 }
 
 std::string Describe(const RunSpec& spec) {
-  return spec.restitution ? fmt::format("{} e={}", LawName(spec.law), *spec.restitution)
-                          : std::string(LawName(spec.law));
+  std::string what = spec.restitution ? fmt::format("{} e={}", LawName(spec.law), *spec.restitution)
+                                      : std::string(LawName(spec.law));
+  if (spec.friction) what += fmt::format(" friction={}", FrictionName(*spec.friction));
+  return what;
 }
 
 SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
   options.overrides.law = spec.law;
   options.overrides.restitution = spec.restitution;
+  if (spec.friction) options.overrides.friction = spec.friction;
   return options;
 }
 
@@ -179,9 +193,7 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
     WarnAboutTags(sim->contact_model(), &warned);
     advices.push_back(AdviseTimestep(sim.get()));
     if (auto_timestep) continue;  // the steps will resolve the contacts
-    for (const TimestepAdvice& advice : advices.back()) {
-      if (!advice.coarse) continue;
-      const std::string text = CoarseTimestepWarning(*sim, advice);
+    for (const std::string& text : TimestepWarnings(*sim, advices.back())) {
       if (warned.insert(text).second) {
         Warn(scene.path(), specs.size() > 1 ? Describe(spec) + ": " + text : text);
       }

@@ -23,12 +23,14 @@ namespace contactlaws::cli {
 struct RunSpec {
   LawKind law = LawKind::kHertz;
   std::optional<double> restitution;  // nullopt: the scene's
+  std::optional<FrictionKind> friction;  // nullopt: the scene's (compare --frictions)
 };
 
 // The options of compare and restitution as given.
 struct SweepArgs : CommonArgs {
   std::string laws = "all";
   std::optional<std::string> restitution;  // list or range
+  std::optional<std::string> frictions;    // compare: M1,M2,... or all
   std::string output_dir = "results";      // compare
   std::string output = "-";                // restitution
   bool quiet = false;
@@ -38,10 +40,11 @@ struct SweepArgs : CommonArgs {
 
 // What compare and restitution read the same way, in this order (so that the
 // first bad option is the one refused): the common options, --laws, --jobs,
-// --restitution, the scene.
+// --frictions, --restitution, the scene.
 struct SweepInputs {
   CommonOptions common;
   std::vector<LawKind> laws;
+  std::vector<FrictionKind> frictions;  // empty: none given (the scene's)
   int jobs = 1;
   std::vector<double> restitutions;  // empty: none given, and no default
   std::unique_ptr<Scene> scene;
@@ -50,10 +53,11 @@ struct SweepInputs {
 // default_restitutions: the list when --restitution is absent (nullptr: none).
 SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restitutions);
 
-// "flores e=0.5", or the law alone for the scene's restitution.
+// "flores e=0.5", or the law alone for the scene's restitution; then
+// " friction=lugre" for a run of compare --frictions.
 std::string Describe(const RunSpec& spec);
 
-// options with spec's law and restitution as overrides.
+// options with spec's law, restitution and friction model as overrides.
 SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec);
 
 // --jobs: the number of cores when absent, else a whole number >= 1.

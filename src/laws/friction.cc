@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace contactlaws {
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double Dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double Norm(const double a[3]) { return std::sqrt(Dot(a, a)); }
@@ -89,6 +92,36 @@ double SlidingMu(const FrictionParams& params, double speed) {
     case FrictionKind::kNone: return 0;
   }
   return 0;
+}
+
+double TangentialDuration(const FrictionParams& p, double stiffness, double mass,
+                          double normal_force) {
+  const double fn = std::max(normal_force, 0.0);
+  double k = 0, c = p.viscous;
+  switch (p.kind) {
+    case FrictionKind::kNone: return kInfinity;
+    case FrictionKind::kCoulomb:
+    case FrictionKind::kStribeck:
+      k = stiffness;
+      c += p.tangential_damping.value_or(2 * std::sqrt(k * mass));
+      break;
+    case FrictionKind::kLuGre:
+      k = p.bristle_stiffness * fn;
+      c += p.bristle_damping.value_or(std::sqrt(p.bristle_stiffness)) * fn;
+      break;
+    case FrictionKind::kRegularized:
+      c = 2 * p.mu_static * fn / p.transition_velocity;
+      break;
+  }
+  if (!(mass > 0) || !std::isfinite(mass) || !std::isfinite(k) || !std::isfinite(c)) {
+    return kInfinity;
+  }
+  // the fastest rate of m x'' + c x' + k x = 0
+  const double half = c / (2 * mass);
+  const double omega2 = k / mass;
+  const double rate = half * half <= omega2 ? std::sqrt(omega2)
+                                            : half + std::sqrt(half * half - omega2);
+  return rate > 0 ? M_PI / rate : kInfinity;
 }
 
 CappedSpringOutput CappedSpring(const CappedSpringInput& in) {

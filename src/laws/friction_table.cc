@@ -81,8 +81,7 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
     return ParamError{"mu_kinetic", p.mu_kinetic, "must be >= 0"};
   }
   if (p.mu_kinetic > p.mu_static) {
-    return ParamError{"mu_kinetic", p.mu_kinetic,
-                      "must be <= mu_static (" + std::to_string(p.mu_static) + ")"};
+    return ParamError{"mu_kinetic", p.mu_kinetic, "must be in [0, mu_static]"};
   }
   const std::pair<const char*, double> positive[] = {
       {"transition_velocity", p.transition_velocity},

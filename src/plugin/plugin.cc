@@ -25,6 +25,12 @@ std::string ActivationLine(const std::string& source, const ContactModel& laws) 
     line += fmt::format("{}{} ({}, {}: {}", separator, tag.label, tag.geom1, tag.geom2,
                         LawName(tag.law));
     if (!IsElastic(tag.law)) line += fmt::format(", e = {}", tag.restitution);
+    // the friction of the tag's first pair (a group tag's pairs may differ)
+    const FrictionParams& f = laws.pairs()[tag.pairs.front()].friction;
+    if (f.kind != FrictionKind::kNone) {
+      line += fmt::format(", {} mu {}", FrictionName(f.kind), f.mu_static);
+      if (f.mu_kinetic != f.mu_static) line += fmt::format("/{}", f.mu_kinetic);
+    }
     line += ")";
     separator = "; ";
   }
@@ -50,10 +56,29 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
     const std::optional<double> e = ParseNumber(text);
     if (!e) {
       result.refusal = fmt::format("{}={} is not a finite number", kRestitutionVariable, text);
+      return result;
     } else if (!(*e >= 0 && *e <= 1)) {
       result.refusal = fmt::format("{}={} must be in [0, 1]", kRestitutionVariable, *e);
+      return result;
+    }
+    result.overrides.restitution = *e;
+  }
+  if (const char* name = std::getenv(kFrictionVariable)) {
+    result.overrides.friction = ParseFrictionName(name);
+    if (!result.overrides.friction) {
+      result.refusal = fmt::format("{}={} is not a friction model ({}){}", kFrictionVariable, name,
+                                   FrictionNameList(), FrictionSuggestion(name));
+      return result;
+    }
+  }
+  if (const char* text = std::getenv(kMuVariable)) {
+    const std::optional<double> mu = ParseNumber(text);
+    if (!mu) {
+      result.refusal = fmt::format("{}={} is not a finite number", kMuVariable, text);
+    } else if (!(*mu >= 0)) {
+      result.refusal = fmt::format("{}={} must be >= 0", kMuVariable, *mu);
     } else {
-      result.overrides.restitution = *e;
+      result.overrides.mu = *mu;
     }
   }
   return result;

@@ -8,7 +8,7 @@
 // thread).
 //
 // Policy: whatever the plugin refuses (a model's tags, a bad
-// CONTACTLAWS_LAW or CONTACTLAWS_RESTITUTION) is one line on stderr, the
+// CONTACTLAWS_LAW, _RESTITUTION, _FRICTION or _MU) is one line on stderr, the
 // line `contactlaws run` prints, and the model is left to MuJoCo's own
 // contact; the program goes on.
 
@@ -30,9 +30,12 @@
 namespace contactlaws::plugin {
 
 // The environment variables the plugin reads (once, at the first tagged
-// model): the overrides of `contactlaws run --law ... --restitution ...`.
+// model): the overrides of `contactlaws run --law ... --restitution ...
+// --friction ... --mu ...`.
 inline constexpr const char* kLawVariable = "CONTACTLAWS_LAW";
 inline constexpr const char* kRestitutionVariable = "CONTACTLAWS_RESTITUTION";
+inline constexpr const char* kFrictionVariable = "CONTACTLAWS_FRICTION";
+inline constexpr const char* kMuVariable = "CONTACTLAWS_MU";
 
 // The overrides in the environment, or the one-line refusal of a bad value
 // (named as `VARIABLE=VALUE requirement`, as the options are).

@@ -352,6 +352,9 @@ void ContactModel::AddFriction(int g1, int g2, const PairTagSpec& spec,
         "{}: {} is not read: the pair is frictionless (condim 1, as in MuJoCo)", pair_name,
         *friction.ignored_key)));
   }
+  if (friction.unread_cap) {
+    warnings_.push_back(resolve.Message(fmt::format("{}: {}", pair_name, *friction.unread_cap)));
+  }
   pair->friction = friction.params;
   pair->condim = friction.condim;
   pair->friction_mass = PairFrictionMass(model_, pair->body[0], pair->body[1]);

@@ -35,8 +35,18 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const Frictio
     p.mu_static = spec.mu ? *spec.mu : spec.mu_static.value_or(geom_mu);
     p.mu_kinetic = spec.mu ? *spec.mu : spec.mu_kinetic.value_or(p.mu_static);
   }
-  if (out.condim >= 4) p.torsional = std::max(f1[1], f2[1]);
-  if (out.condim >= 6) p.rolling = std::max(f1[2], f2[2]);
+  // the torque caps: the tag's, else the geoms' (the larger), where condim
+  // has them
+  if (out.condim >= 4) p.torsional = spec.torsional_friction.value_or(std::max(f1[1], f2[1]));
+  if (out.condim >= 6) p.rolling = spec.rolling_friction.value_or(std::max(f1[2], f2[2]));
+  const bool torsional_unread = spec.torsional_friction && out.condim < 4;
+  if (torsional_unread || (spec.rolling_friction && out.condim < 6)) {
+    out.unread_cap = fmt::format(
+        "{}={} is not read: the pair's condim is {} ({} resistance needs condim {}, as in MuJoCo)",
+        torsional_unread ? "torsional_friction" : "rolling_friction",
+        torsional_unread ? *spec.torsional_friction : *spec.rolling_friction, out.condim,
+        torsional_unread ? "torsional" : "rolling", torsional_unread ? ">= 4" : "6");
+  }
   if (spec.transition_velocity) p.transition_velocity = *spec.transition_velocity;
   if (spec.stribeck_velocity) p.stribeck_velocity = *spec.stribeck_velocity;
   p.tangential_stiffness = spec.tangential_stiffness;
@@ -46,8 +56,10 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const Frictio
   if (spec.viscous) p.viscous = *spec.viscous;
   if (const std::optional<ParamError> e = ValidateFrictionParams(p)) {
     out.error = fmt::format("{}={} {}", e->key, e->value, e->requirement);
-    if (e->key == "mu_kinetic" && !spec.mu_static) {
-      out.error += " (mu_static from the geoms' friction)";
+    if (e->key == "mu_kinetic" && p.mu_kinetic > p.mu_static) {
+      out.error = fmt::format("mu_kinetic={} must be in [0, mu_static={}]{}", p.mu_kinetic,
+                              p.mu_static,
+                              spec.mu_static ? "" : " (mu_static from the geoms' friction)");
     }
   }
   return out;

@@ -23,6 +23,10 @@ struct PairFriction {
   // set when the tag gives friction keys to a frictionless pair (condim 1):
   // the key, for the warning
   std::optional<std::string> ignored_key;
+  // set when the tag gives a torque cap the pair's condim does not have
+  // (torsional_friction below 4, rolling_friction below 6): "KEY=VALUE is
+  // not read: ...", for the warning
+  std::optional<std::string> unread_cap;
   // what is wrong, "KEY=VALUE RANGE", or empty
   std::string error;
 };

@@ -119,13 +119,9 @@ bool ParseFrictionKey(const TagContext& ctx, const KeyValue& kv, FrictionTagSpec
   if (k == "friction") {
     f->kind = ParseFrictionName(kv.value);
     if (!f->kind) {
-      std::vector<std::string_view> names;
-      for (const FrictionInfo& model : FrictionModels()) names.push_back(model.name);
-      const std::string_view hint = NearestWord(kv.value, names.data(), names.size());
       ctx.FailValue(k, kv.value,
-                    fmt::format("is not a friction model{} ({})",
-                                hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint),
-                                FrictionNameList()));
+                    fmt::format("is not a friction model ({}){}", FrictionNameList(),
+                                FrictionSuggestion(kv.value)));
     }
   } else if (k == "mu" || k == "mu_static" || k == "mu_kinetic") {
     (k == "mu" ? f->mu : k == "mu_static" ? f->mu_static : f->mu_kinetic) = non_negative("");
@@ -142,6 +138,9 @@ bool ParseFrictionKey(const TagContext& ctx, const KeyValue& kv, FrictionTagSpec
     f->bristle_damping = non_negative(" (s/m, per newton of normal force)");
   } else if (k == "viscous") {
     f->viscous = non_negative(" (N s/m)");
+  } else if (k == "torsional_friction" || k == "rolling_friction") {
+    (k == "torsional_friction" ? f->torsional_friction : f->rolling_friction) =
+        non_negative(" (m, the torque cap over the normal force)");
   } else {
     return false;
   }
@@ -204,6 +203,14 @@ std::string Lower(std::string_view text) {
 std::string LawSuggestion(std::string_view name) {
   std::vector<std::string_view> names;
   for (const LawInfo& law : Laws()) names.push_back(law.name);
+  const std::string lower = Lower(name);
+  const std::string_view nearest = NearestWord(lower, names.data(), names.size());
+  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
+}
+
+std::string FrictionSuggestion(std::string_view name) {
+  std::vector<std::string_view> names;
+  for (const FrictionInfo& model : FrictionModels()) names.push_back(model.name);
   const std::string lower = Lower(name);
   const std::string_view nearest = NearestWord(lower, names.data(), names.size());
   return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);

@@ -25,7 +25,7 @@ namespace contactlaws {
 inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
 inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
 
-inline constexpr std::array<std::string_view, 26> kPairKeys = {
+inline constexpr std::array<std::string_view, 28> kPairKeys = {
     "geom1",         "geom2",    "law",      "restitution",
     "stiffness",     "exponent", "linear_stiffness", "damping",
     "dissipation",   "min_impact_velocity", "allow_tension", "youngs1",
@@ -33,7 +33,7 @@ inline constexpr std::array<std::string_view, 26> kPairKeys = {
     // friction (friction.h)
     "friction", "mu", "mu_static", "mu_kinetic", "stribeck_velocity", "transition_velocity",
     "tangential_stiffness", "tangential_damping", "bristle_stiffness", "bristle_damping",
-    "viscous"};
+    "viscous", "torsional_friction", "rolling_friction"};
 
 inline constexpr std::array<std::string_view, 7> kDriveKeys = {
     "body", "motion", "axis", "amplitude", "omega", "phase", "speed"};
@@ -49,6 +49,9 @@ struct FrictionTagSpec {
   std::optional<double> bristle_stiffness;     // 1/m > 0
   std::optional<double> bristle_damping;       // s/m >= 0
   std::optional<double> viscous;               // N s/m >= 0
+  // the torsional (condim >= 4) and rolling (condim 6) torque caps over F_n,
+  // m >= 0: MuJoCo's second and third friction coefficients (lengths)
+  std::optional<double> torsional_friction, rolling_friction;
   // the first friction key given (for the warning on a frictionless pair)
   std::string first_key;
 };
@@ -98,6 +101,10 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
 // ": did you mean 'hertz'?" for a name close to a law's (letter case aside),
 // else "".
 std::string LawSuggestion(std::string_view name);
+
+// ": did you mean 'coulomb'?" for a name close to a friction model's (letter
+// case aside), else "".
+std::string FrictionSuggestion(std::string_view name);
 
 // Refuses (Error naming source and the tag) a <text> name whose prefix is
 // within a typo of contactlaw: or contactdrive: (ContactLaw:, contactlaws:),

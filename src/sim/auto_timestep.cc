@@ -134,17 +134,40 @@ double AutoTimestep::FlightStep() const {
   return step;
 }
 
+double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
+  const GeomPair& pair = contacts_.model().pairs()[e.pair];
+  const FrictionParams& f = pair.friction;
+  if (f.kind == FrictionKind::kNone) return kInfinity;
+  // the stick spring (or bristles, or regularized curve) at this point's
+  // stiffness and load, on the pair's mass
+  double duration =
+      TangentialDuration(f, e.friction_state.stiffness, pair.friction_mass, e.force);
+  // the rolling and torsional springs, critically damped on the pair's
+  // moment of inertia
+  const double lengths[2] = {f.torsional, f.rolling};
+  for (int part = 0; part < 2; ++part) {
+    const double k = e.friction_state.torque_stiffness[part];
+    if (lengths[part] > 0 && k > 0) {
+      duration = std::min(duration, M_PI * std::sqrt(pair.friction_inertia / k));
+    }
+  }
+  // its period 2 duration, as a contact's duration, in steps_per_contact
+  // steps (the fixed-step rule: kStepsPerContact in either)
+  return 2 * duration / options_.steps_per_contact;
+}
+
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   const double fine = FineStep(e.pair, e.impact_velocity);
+  const double tangential = TangentialStep(e);
   // a separation slower than the law's floor of v0 (a resting contact's
   // chatter) is left to the fine step
   const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
-  if (!(-e.depth_rate > floor)) return fine;
+  if (!(-e.depth_rate > floor)) return std::min(fine, tangential);
   const GeomPair& pair = contacts_.model().pairs()[e.pair];
   const double closing = GravityClosingAcceleration(contacts_.model(), pair, e.normal);
   const double overshoot = kSeparationOvershoot * fine;
   const double separation = TimeToSeparate(e.depth, -e.depth_rate, closing) + overshoot;
-  return std::min(separation, fine);
+  return std::min({separation, fine, tangential});
 }
 
 double AutoTimestep::ApproachStep(int p, bool* fine) const {

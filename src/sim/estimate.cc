@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "contactlaws/hertz.h"
 #include "contactlaws/kinematics.h"
 #include "contactlaws/model_io.h"
@@ -184,6 +186,36 @@ TagEstimate EstimateTag(const ContactData& contacts, int tag,
     }
   }
   return shortest;
+}
+
+TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
+                                      const ContactEstimate& normal) {
+  const GeomPair& pair = cm.pairs()[pair_index];
+  const FrictionParams& f = pair.friction;
+  TangentialEstimate t;
+  t.mass = pair.friction_mass;
+  t.normal_force = t.mass * mju_norm3(cm.model()->opt.gravity);
+  if (f.kind == FrictionKind::kNone) return t;
+  const std::string model(FrictionName(f.kind));
+  if (f.kind == FrictionKind::kRegularized) {
+    t.what = fmt::format("regularized curve ({}, slope 2 mu_s F_n / v_t, v_t {} m/s, F_n {:.4g} N, "
+                         "mass {:.4g} kg)", model, f.transition_velocity, t.normal_force, t.mass);
+  } else if (f.kind == FrictionKind::kLuGre) {
+    t.stiffness = f.bristle_stiffness * t.normal_force;
+    t.what = fmt::format("bristles ({}, sigma0 F_n {:.4g} N/m, F_n {:.4g} N, mass {:.4g} kg)",
+                         model, t.stiffness, t.normal_force, t.mass);
+  } else {
+    // the deepest the contact gets: the estimate's, or its overlap now
+    const double depth = std::max(std::isfinite(normal.max_depth) ? normal.max_depth : 0.0,
+                                  normal.gap ? -*normal.gap : 0.0);
+    t.stiffness =
+        f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
+    t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,
+                         t.stiffness, f.tangential_stiffness ? "" : " (Mindlin, at the max depth)",
+                         t.mass);
+  }
+  t.duration = TangentialDuration(f, t.stiffness, t.mass, t.normal_force);
+  return t;
 }
 
 }  // namespace contactlaws

@@ -29,6 +29,8 @@ std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
     a.shortest = EstimateTag(sim->contacts(), t);
     a.steps = a.shortest.StepsPerContact(dt);
     a.coarse = a.steps < kStepsPerContact;
+    a.tangential = EstimateTangential(sim->contact_model(), a.shortest.pair, a.shortest.estimate);
+    a.tangential_coarse = dt > a.tangential.timestep();
     advice.push_back(a);
   }
   return advice;
@@ -41,6 +43,26 @@ std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& a
       PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.steps,
       advice.shortest.estimate.contact_duration, kStepsPerContact,
       advice.shortest.estimate.timestep());
+}
+
+std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+  const TangentialEstimate& t = advice.tangential;
+  const double period = 2 * t.duration;
+  return fmt::format(
+      "{}: timestep {} s puts {:.3g} steps in the period {:.4g} s of its {} (>= {} needed): "
+      "use --timestep {:.3g} or smaller (see contactlaws check)",
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep,
+      period / sim.model()->opt.timestep, period, t.what, kStepsPerContact, t.timestep());
+}
+
+std::vector<std::string> TimestepWarnings(const Simulation& sim,
+                                          const std::vector<TimestepAdvice>& advice) {
+  std::vector<std::string> warnings;
+  for (const TimestepAdvice& a : advice) {
+    if (a.coarse) warnings.push_back(CoarseTimestepWarning(sim, a));
+    if (a.tangential_coarse) warnings.push_back(TangentialTimestepWarning(sim, a));
+  }
+  return warnings;
 }
 
 std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,

@@ -128,5 +128,28 @@ TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
   EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_stiffness");
 }
 
+// The tangential time scale: pi / omega of a critically damped stick spring,
+// pi over the fastest rate of an over-damped one, pi tau of regularized's
+// damper; infinite without friction or load.
+TEST(FrictionKernelTest, TangentialDurationIsPiOverTheFastestRate) {
+  FrictionParams p = Params(FrictionKind::kCoulomb);
+  const double m = 2, k = 8e4, fn = 19.62;
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn), M_PI * std::sqrt(m / k));
+  // c = 10 sqrt(k m): rates of m s^2 + c s + k = 0, the larger one
+  p.tangential_damping = 10 * std::sqrt(k * m);
+  const double half = *p.tangential_damping / (2 * m);
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn), M_PI / (half + std::sqrt(half * half - k / m)));
+  p = Params(FrictionKind::kRegularized);
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn),
+                   M_PI * m * p.transition_velocity / (2 * p.mu_static * fn));
+  p = Params(FrictionKind::kLuGre);
+  p.bristle_damping = 0;
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn),
+                   M_PI * std::sqrt(m / (p.bristle_stiffness * fn)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(p, k, m, 0)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kNone), k, m, fn)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kCoulomb), k, INFINITY, fn)));
+}
+
 }  // namespace
 }  // namespace contactlaws

@@ -113,9 +113,10 @@ TEST(PluginTest, PreloadedBallReboundsAtTheLawsExactRebound) {
   // the two mjData of one model: the same run, bit for bit
   EXPECT_EQ(with.runs.at("tagged0").at("z"), with.runs.at("tagged1").at("z"));
   EXPECT_EQ(with.runs.at("tagged0").at("vz"), with.runs.at("tagged1").at("vz"));
-  // one activation line, naming the file and the pair
+  // one activation line, naming the file and the pair (friction: MuJoCo's
+  // default geom friction 1, condim 3)
   EXPECT_EQ(with.program.err, fmt::format("contactlaws: plugin: {}: ball-floor (ball, floor: "
-                                          "flores, e = 0.9)\n", tagged));
+                                          "flores, e = 0.9, coulomb mu 1)\n", tagged));
 }
 
 TEST(PluginTest, WithoutThePluginMujocoContactActs) {
@@ -154,6 +155,35 @@ TEST(PluginTest, BadEnvironmentValueIsOneLineAndMujocoContactActs) {
   const Outcome law = RunPlain(Preload() + " CONTACTLAWS_LAW=stokes", tagged);
   EXPECT_EQ(law.program.err, fmt::format("contactlaws: CONTACTLAWS_LAW=stokes is not a law ({})\n",
                                          LawNameList()));
+}
+
+// CONTACTLAWS_FRICTION and CONTACTLAWS_MU: --friction and --mu, read by the
+// same parsers; a bad one is one line and leaves the model to MuJoCo.
+TEST(PluginTest, EnvironmentOverridesTheFriction) {
+  const std::string tagged = BallScene("flores", Tag("flores", "0.9"));
+  const Outcome with =
+      RunPlain(Preload() + " CONTACTLAWS_FRICTION=lugre CONTACTLAWS_MU=0.3", tagged);
+  EXPECT_EQ(with.program.err, fmt::format("contactlaws: plugin: {}: ball-floor (ball, floor: "
+                                          "flores, e = 0.9, lugre mu 0.3)\n", tagged));
+  EXPECT_EQ(Number(with.runs.at("tagged0"), "solver_contacts"), 0);
+  const Outcome none = RunPlain(Preload() + " CONTACTLAWS_FRICTION=none", tagged);
+  EXPECT_EQ(none.program.err, fmt::format("contactlaws: plugin: {}: ball-floor (ball, floor: "
+                                          "flores, e = 0.9)\n", tagged));
+  const struct {
+    std::string environment;
+    std::string line;
+  } bad[] = {
+      {"CONTACTLAWS_FRICTION=lugra",
+       "contactlaws: CONTACTLAWS_FRICTION=lugra is not a friction model (" + FrictionNameList() +
+           "): did you mean 'lugre'?\n"},
+      {"CONTACTLAWS_MU=-0.5", "contactlaws: CONTACTLAWS_MU=-0.5 must be >= 0\n"},
+      {"CONTACTLAWS_MU=high", "contactlaws: CONTACTLAWS_MU=high is not a finite number\n"},
+  };
+  for (const auto& b : bad) {
+    const Outcome refused = RunPlain(Preload() + " " + b.environment, tagged);
+    EXPECT_EQ(refused.program.err, b.line) << b.environment;
+    EXPECT_GE(Number(refused.runs.at("tagged0"), "solver_contacts"), 1) << b.environment;
+  }
 }
 
 TEST(PluginTest, RefusedTagsPrintRunsLineAndLeaveTheModelToMujoco) {

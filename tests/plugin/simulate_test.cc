@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "contactlaws/friction.h"
 #include "plugin_test_util.h"
 
 namespace contactlaws {
@@ -36,10 +37,11 @@ TEST(SimulateTest, MujocoSimulateRunsTheBallWithThePlugin) {
   }
   const ProgramResult r = RunProgram(
       "", fmt::format("xvfb-run -a -s '-screen 0 1024x768x24' timeout -s INT {} {} simulate {} "
-                      "--restitution 0.7", kViewerSeconds, CONTACTLAWS_CLI, kBall));
+                      "--restitution 0.7 --friction stribeck --mu 0.4", kViewerSeconds,
+                      CONTACTLAWS_CLI, kBall));
   EXPECT_EQ(r.status, kStillRunningStatus) << "signal " << r.signal << "\n" << r.err;
   EXPECT_NE(r.err.find(fmt::format("contactlaws: plugin: {}: ball-floor (ball, floor: flores, "
-                                   "e = 0.7)\n", kBall)),
+                                   "e = 0.7, stribeck mu 0.4)\n", kBall)),
             std::string::npos)
       << r.err;
 }
@@ -57,6 +59,15 @@ TEST(SimulateTest, RefusedOverrideIsRunsLineBeforeAnyWindow) {
       "PATH=/nonexistent", fmt::format("{} simulate {} --restitution 1.5", CONTACTLAWS_CLI, kBall));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "contactlaws: --restitution=1.5 must be in [0, 1]\n");
+  const ProgramResult friction = RunProgram(
+      "PATH=/nonexistent", fmt::format("{} simulate {} --friction lugra", CONTACTLAWS_CLI, kBall));
+  EXPECT_EQ(friction.status, 2);
+  EXPECT_EQ(friction.err, "contactlaws: --friction=lugra is not a friction model (" +
+                              FrictionNameList() + "): did you mean 'lugre'?\n");
+  const ProgramResult mu = RunProgram(
+      "PATH=/nonexistent", fmt::format("{} simulate {} --mu -1", CONTACTLAWS_CLI, kBall));
+  EXPECT_EQ(mu.status, 2);
+  EXPECT_EQ(mu.err, "contactlaws: --mu=-1 must be >= 0\n");
 }
 
 }  // namespace

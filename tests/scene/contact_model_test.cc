@@ -156,6 +156,35 @@ TEST_F(SceneTest, FrictionComesFromTheGeomsAsMujocoCombinesThem) {
   EXPECT_EQ(over.pairs()[1].friction.kind, FrictionKind::kNone);
 }
 
+// The tag's torque caps replace the geoms' where condim has them, and are
+// warned about where it does not.
+TEST_F(SceneTest, TorqueCapKeysOverrideTheGeomsWhereCondimHasThem) {
+  UniqueModel m = LoadModelString(R"(<mujoco>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1" friction="0.3 0.01 0.002" condim="6"/>
+    <geom name="floor4" type="plane" size="1 1 0.1" pos="0 0 -1" condim="4"/>
+    <body name="ball" pos="0 0 0.2"><freejoint/>
+      <geom name="ball" type="sphere" size="0.1" friction="0.7 0.005 0.004"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz stiffness=1
+      torsional_friction=0.03 rolling_friction=0.001"/>
+    <text name="contactlaw:q" data="geom1=ball geom2=floor4 law=hertz stiffness=1
+      torsional_friction=0.02 rolling_friction=0.005"/>
+  </custom>
+</mujoco>)", "caps.xml");
+  const ContactModel cm(m.get(), "caps.xml");
+  EXPECT_EQ(cm.pairs()[0].friction.torsional, 0.03);
+  EXPECT_EQ(cm.pairs()[0].friction.rolling, 0.001);
+  // condim 4: torsion from the tag, no rolling, and the rolling key warned about
+  EXPECT_EQ(cm.pairs()[1].friction.torsional, 0.02);
+  EXPECT_EQ(cm.pairs()[1].friction.rolling, 0.0);
+  ASSERT_EQ(cm.warnings().size(), 1u);
+  EXPECT_EQ(cm.warnings()[0],
+            "caps.xml: contactlaw:q: (ball, floor4): rolling_friction=0.005 is not read: the "
+            "pair's condim is 4 (rolling resistance needs condim 6, as in MuJoCo)");
+}
+
 TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   SimulationOptions options;
   options.overrides.law = LawKind::kKelvinVoigt;

@@ -71,8 +71,8 @@ TEST(TagsTest, FrictionKeysAreReadAndBadOnesNamed) {
   EXPECT_EQ(spec.friction.viscous, 0.1);
   const std::string ok = "geom1=a geom2=b law=hertz stiffness=1 ";
   EXPECT_EQ(PairTagError(ok + "friction=coulmb"),
-            "s.xml: contactlaw:t: friction=coulmb is not a friction model (did you mean "
-            "'coulomb'?) (" + FrictionNameList() + ")");
+            "s.xml: contactlaw:t: friction=coulmb is not a friction model (" +
+                FrictionNameList() + "): did you mean 'coulomb'?");
   EXPECT_EQ(PairTagError(ok + "mu=-0.1"), "s.xml: contactlaw:t: mu=-0.1 must be >= 0");
   EXPECT_EQ(PairTagError(ok + "mu_static=0.3 mu_kinetic=0.5"),
             "s.xml: contactlaw:t: mu_kinetic=0.5 must be in [0, mu_static=0.3]");
@@ -83,6 +83,25 @@ TEST(TagsTest, FrictionKeysAreReadAndBadOnesNamed) {
   EXPECT_EQ(PairTagError(ok + "bristle_stiffness=-1"),
             "s.xml: contactlaw:t: bristle_stiffness=-1 must be > 0 (1/m, per newton of normal "
             "force)");
+}
+
+// torsional_friction and rolling_friction: lengths (MuJoCo's second and
+// third friction coefficients), >= 0 and finite.
+TEST(TagsTest, TorqueCapsAreLengthsAtLeastZero) {
+  const std::string ok = "geom1=a geom2=b law=hertz stiffness=1 ";
+  const PairTagSpec spec =
+      ParsePairTag("s.xml", "contactlaw:t", ok + "torsional_friction=0.02 rolling_friction=0");
+  EXPECT_EQ(spec.friction.torsional_friction, 0.02);
+  EXPECT_EQ(spec.friction.rolling_friction, 0.0);
+  EXPECT_EQ(spec.friction.first_key, "torsional_friction");
+  EXPECT_EQ(PairTagError(ok + "torsional_friction=-0.01"),
+            "s.xml: contactlaw:t: torsional_friction=-0.01 must be >= 0 (m, the torque cap over "
+            "the normal force)");
+  EXPECT_EQ(PairTagError(ok + "rolling_friction=inf"),
+            "s.xml: contactlaw:t: rolling_friction=inf is not a finite number");
+  EXPECT_EQ(PairTagError(ok + "rolling_fricton=0.1"),
+            "s.xml: contactlaw:t: unknown key 'rolling_fricton' (did you mean "
+            "'rolling_friction'?)");
 }
 
 TEST(TagsTest, ALinearDriveNeedsAFiniteSpeed) {
