@@ -41,13 +41,17 @@ BELT = {"speed": 0.1, "k": 100.0, "m": 1.0, "mu_s": 0.6, "mu_k": 0.4}
 ROLL = {"v0": 2.0, "mu": 0.3, "R": 0.1}
 # the belt's models and the incline's, in plotting order, with their colours
 MODELS = {
-    "coulomb": "tab:blue",
-    "stribeck": "tab:orange",
-    "lugre": "tab:green",
-    "regularized": "tab:red",
-    "mujoco": "black",
+    "coulomb": ("tab:blue", "-"),
+    "stribeck": ("tab:orange", "--"),
+    "lugre": ("tab:green", ":"),
+    "regularized": ("tab:red", "-"),
+    "mujoco": ("black", "-"),
 }
-LABELS = {"mujoco": "MuJoCo's own (condim 3)"}
+LABELS = {"mujoco": "MuJoCo's own (condim 3)",
+          "regularized": "regularized (1e-5 s step, a shorter run)"}
+# the belt's friction axis: LuGre's first sample, as the belt starts under
+# the resting block, is its bristle damping s1 z' = s1 F_n v_b (~300 N)
+BELT_FORCE_LIMITS = (-1, 8)
 # Speeds and displacements below this are rounding: drawn at it (log scale)
 FLOOR = 1e-15
 
@@ -72,10 +76,21 @@ def belt(results):
         run = read(results / "friction" / f"belt_{model}.csv",
                    ["block.x", "block.vx", "block-belt.friction_x"])
         t = run["time"]
-        style = {"color": MODELS[model], "lw": 1.1, "label": model}
+        colour, ls = MODELS[model]
+        style = {"color": colour, "ls": ls, "lw": 1.2,
+                 "label": LABELS.get(model, model)}
         axes[0].plot(t, 100 * run["block.x"], **style)
         axes[1].plot(t, run["block.vx"], **style)
-        axes[2].plot(t, run["block-belt.friction_x"], **style)
+        force = run["block-belt.friction_x"]
+        axes[2].plot(t, force, **style)
+        if model == "lugre" and force.max() > BELT_FORCE_LIMITS[1]:
+            axes[2].annotate(
+                f"lugre: {force.max():.0f} N at the start (bristle damping "
+                "s1 z' as the belt starts under the block)",
+                xy=(t[force.argmax()], BELT_FORCE_LIMITS[1]),
+                xytext=(0.1, 0.8 * BELT_FORCE_LIMITS[1]), fontsize=7.5,
+                color=colour, arrowprops={"arrowstyle": "->",
+                                          "color": colour})
         # the slip while carried (within 2 mm/s of the belt)
         slip = speed - run["block.vx"]
         carried = np.abs(slip) < 2e-3
@@ -92,18 +107,20 @@ def belt(results):
     axes[1].set_ylabel("block velocity (m/s)")
     for mu, name in ((BELT["mu_s"], "mu_s m g"), (BELT["mu_k"], "mu_k m g")):
         axes[2].axhline(mu * m * G, color="grey", ls=":", lw=0.9)
-        axes[2].text(0.01, mu * m * G, f"  {name}", va="bottom", fontsize=8,
-                     color="grey")
+        axes[2].text(1.0, mu * m * G, f"{name}  ", va="bottom", ha="right",
+                     fontsize=8, color="grey",
+                     transform=axes[2].get_yaxis_transform())
+    axes[2].set_ylim(*BELT_FORCE_LIMITS)
     axes[2].set_ylabel("friction on the block (N)")
-    axes[3].set_ylabel("slip while carried,\nbelt - block (mm/s)")
+    axes[3].set_ylabel("slip on the belt while\ncarried (mm/s)")
     axes[3].set_xlabel("time (s)")
-    axes[3].text(0.01, 0.95,
-                 "coulomb, stribeck: the stick spring stretching as the "
-                 "spring's load grows (k v_b / k_t), not creep;\n"
-                 "regularized: slip carries the load (transition velocity "
-                 "1e-4 m/s); lugre: the bristles deflecting",
-                 transform=axes[3].transAxes, va="top", fontsize=7.5)
-    axes[0].legend(loc="lower right", fontsize=8)
+    axes[3].set_title(
+        "belt - block while within 2 mm/s of the belt. coulomb, stribeck: "
+        "the stick spring stretching as the load grows\n(k v_b / k_t), "
+        "not creep; regularized: slip carries the load (transition "
+        "velocity 1e-4 m/s); lugre: the bristles", fontsize=8)
+    axes[3].set_ylim(-0.3, 0.5)
+    axes[1].legend(loc="lower left", fontsize=8)
     axes[0].set_title("A block on a belt (0.1 m/s) held by a spring: "
                       "stick-slip (mjcf/friction_belt.xml)")
     for ax in axes:
@@ -122,7 +139,7 @@ def slide_roll(results):
     t = run["time"]
     ax.plot(t, run["ball.vx"], color="tab:blue", lw=1.6, label="v (centre)")
     ax.plot(t, radius * run["ball.wy"], color="tab:orange", lw=1.6,
-            label="w R (spin)")
+            ls="--", label="w R (spin x radius)")
     ax.axhline(5 / 7 * v0, color="grey", ls=":", lw=1)
     ax.text(t[-1], 5 / 7 * v0, f"5/7 v0 = {5 / 7 * v0:.4f} m/s",
             ha="right", va="bottom", fontsize=8)
@@ -150,40 +167,50 @@ def slide_roll(results):
 
 
 def incline(results):
-    fig, (ax_x, ax_v) = plt.subplots(1, 2, figsize=(11, 4.6))
-    for model, colour in MODELS.items():
+    fig, (ax_v, ax_x) = plt.subplots(1, 2, figsize=(11, 4.8))
+    for model, (colour, ls) in MODELS.items():
         run = read(results / "friction" / f"incline_{model}.csv",
                    ["block.x", "block.vx"])
-        t, x = run["time"], run["block.x"]
-        settled = t >= SETTLED
-        label = LABELS.get(model, model)
-        drift = np.maximum(np.abs(x[settled] - x[settled][0]), FLOOR)
-        ax_x.plot(t[settled], drift, color=colour, lw=1.4, label=label)
-        ax_v.plot(t, np.maximum(np.abs(run["block.vx"]), FLOOR),
-                  color=colour, lw=1.4, label=label)
-    ax_x.set_title(f"displacement down the slope since t = {SETTLED} s",
-                   fontsize=10)
-    ax_x.set_ylabel("|x(t) - x(0.2 s)| (m)")
+        t, x, v = run["time"][1:], run["block.x"][1:], run["block.vx"][1:]
+        style = {"color": colour, "ls": ls, "lw": 1.5,
+                 "label": LABELS.get(model, model)}
+        ax_v.plot(t, np.maximum(np.abs(v), FLOOR), **style)
+        if model in CREEPERS:
+            ax_v.text(t[-1], abs(v[-1]), f"{abs(v[-1]):.2g} m/s",
+                      va="bottom", ha="right", fontsize=8, color=colour)
+        late = t > SINCE
+        x0 = np.interp(SINCE, t, x)
+        ax_x.plot(t[late], np.maximum(np.abs(x[late] - x0), FLOOR), **style)
     ax_v.set_title("speed down the slope", fontsize=10)
     ax_v.set_ylabel("|v| (m/s)")
-    for ax in (ax_x, ax_v):
+    ax_v.text(0.55, 3e-12,
+              "coulomb, stribeck, lugre: the block settling\n"
+              "(e-fold 0.1 s) and held: < 1e-9 m in 10 s\n"
+              "after it (docs/friction.md)", fontsize=8)
+    ax_x.set_title(f"displacement down the slope since t = {SINCE} s",
+                   fontsize=10)
+    ax_x.set_ylabel(f"|x(t) - x({SINCE} s)| (m)")
+    for ax in (ax_v, ax_x):
         ax.set_yscale("log")
         ax.set_ylim(FLOOR / 2, 1e-1)
         ax.set_xlabel("time (s)")
         ax.grid(alpha=0.3, which="both")
         ax.axhline(FLOOR, color="grey", lw=0.6)
-        ax.text(ax.get_xlim()[1], FLOOR, f"{FLOOR:g}: zero to rounding ",
-                ha="right", va="bottom", fontsize=7, color="grey")
-    ax_v.legend(loc="center right", fontsize=8)
+        ax.text(1.0, FLOOR, f"{FLOOR:g}: zero to rounding ", ha="right",
+                va="bottom", fontsize=7, color="grey",
+                transform=ax.get_yaxis_transform())
+    ax_v.legend(loc="lower left", fontsize=8)
     fig.suptitle("A block on an incline, tan(theta) = 0.3 < mu_s = 0.5: who "
-                 "creeps (mjcf/friction_incline.xml; regularized at "
-                 "1e-5 s, the rest at 1e-4 s)", fontsize=10)
+                 "creeps (mjcf/friction_incline.xml, 1e-4 s, RK4)",
+                 fontsize=10)
     fig.tight_layout()
     save(fig, results / "friction_incline.png")
 
 
-# The incline runs start at the block's static depth: settled after this, s
-SETTLED = 0.2
+# the incline's models that creep, their speed written at the end
+CREEPERS = ("regularized", "mujoco")
+# the displacement panel starts here, s: the settling mostly done
+SINCE = 0.3
 
 
 def creep(t0, t1, paths):
