@@ -183,13 +183,14 @@ def incline(results):
         ax_x.plot(t[late], np.maximum(np.abs(x[late] - x0), FLOOR), **style)
     ax_v.set_title("speed down the slope", fontsize=10)
     ax_v.set_ylabel("|v| (m/s)")
-    ax_v.text(0.55, 3e-12,
-              "coulomb, stribeck, lugre: the block settling\n"
-              "(e-fold 0.1 s) and held: < 1e-9 m in 10 s\n"
-              "after it (docs/friction.md)", fontsize=8)
+    ax_v.text(0.5, 3e-12,
+              "coulomb, stribeck, lugre: the block\nsettling (e-fold 0.1 s) and held:\n"
+              "< 1e-9 m in 10 s after it\n(docs/friction.md)", fontsize=8)
     ax_x.set_title(f"displacement down the slope since t = {SINCE} s",
                    fontsize=10)
     ax_x.set_ylabel(f"|x(t) - x({SINCE} s)| (m)")
+    ax_x.text(0.5, 1e-8, "coulomb, stribeck, lugre: the rest of the\n"
+              "settling, then still", fontsize=8)
     for ax in (ax_v, ax_x):
         ax.set_yscale("log")
         ax.set_ylim(FLOOR / 2, 1e-1)
