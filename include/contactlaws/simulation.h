@@ -47,12 +47,13 @@ struct MujocoWarning {
 inline constexpr double kEnergyGrowthTolerance = 1e-2;
 
 // The groups of trajectory columns (Simulation::Columns), each on or off.
+// friction came last: an initializer of the first four keeps its meaning.
 struct ColumnGroups {
   bool bodies = true;    // every moving body: position, velocity; orientation, spin
   bool joints = true;    // every hinge and slide joint: coordinate and rate
   bool pairs = true;     // every tag: depth, depth rate, force
-  bool friction = true;  // every tag: its friction force
   bool energy = true;    // the energy ledger
+  bool friction = true;  // every tag: its friction force (columns before energy's)
 };
 
 // The groups' names, in the order of their columns.
