@@ -63,7 +63,9 @@ struct VisibleContactsOverflow {
 struct TagReading {
   double depth = 0;       // m, 0 when out of contact
   double depth_rate = 0;  // m/s, 0 when out of contact
-  double force = 0;       // N
+  double force = 0;       // N, normal
+  // N, world frame: the friction force on the tag's geom1 (GeomPair::named[0])
+  double friction[3] = {0, 0, 0};
 };
 
 class ContactData {

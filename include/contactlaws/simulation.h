@@ -7,6 +7,7 @@
 #ifndef CONTACTLAWS_SIMULATION_H_
 #define CONTACTLAWS_SIMULATION_H_
 
+#include <array>
 #include <memory>
 #include <cstdint>
 #include <optional>
@@ -46,15 +47,21 @@ struct MujocoWarning {
 inline constexpr double kEnergyGrowthTolerance = 1e-2;
 
 // The groups of trajectory columns (Simulation::Columns), each on or off.
+// friction came last: an initializer of the first four keeps its meaning.
 struct ColumnGroups {
-  bool bodies = true;  // every moving body: position, velocity; orientation, spin
-  bool joints = true;  // every hinge and slide joint: coordinate and rate
-  bool pairs = true;   // every tag: depth, depth rate, force
-  bool energy = true;  // the energy ledger
+  bool bodies = true;    // every moving body: position, velocity; orientation, spin
+  bool joints = true;    // every hinge and slide joint: coordinate and rate
+  bool pairs = true;     // every tag: depth, depth rate, force
+  bool energy = true;    // the energy ledger
+  bool friction = true;  // every tag: its friction force (columns before energy's)
 };
 
-// "bodies,joints,pairs,energy" (any of them, no repeats) as ColumnGroups;
-// nullopt, with the word at fault in *bad, for anything else.
+// The groups' names, in the order of their columns.
+inline constexpr std::array<const char*, 5> kColumnGroupNames = {"bodies", "joints", "pairs",
+                                                                 "friction", "energy"};
+
+// "bodies,joints,pairs,friction,energy" (any of them, no repeats) as
+// ColumnGroups; nullopt, with the word at fault in *bad, for anything else.
 std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad);
 
 struct SimulationOptions {
@@ -98,6 +105,9 @@ class Simulation {
   //   joints: for every hinge and slide joint <joint>.q .v (rad and rad/s, or
   //     m and m/s);
   //   pairs: for every tag <label>.depth .depth_rate .force;
+  //   friction: for every tag <label>.friction_x .friction_y .friction_z (N,
+  //     world frame: the friction force of its points on its geom1; 0 without
+  //     friction or out of contact);
   //   energy: energy.kinetic .potential .elastic .dissipated .total.
   std::vector<std::string> Columns() const;
 

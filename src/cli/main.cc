@@ -66,7 +66,7 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();
     cmd->add_option("--columns", args->columns,
-                    "trajectory column groups: any of bodies,joints,pairs,energy (default: all)");
+                    "trajectory column groups: any of bodies,joints,pairs,friction,energy (default: all)");
   }
 }
 

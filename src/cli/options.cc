@@ -67,11 +67,12 @@ ColumnGroups ParseColumns(std::string_view text) {
   std::string bad;
   const std::optional<ColumnGroups> groups = ParseColumnGroups(text, &bad);
   if (groups) return *groups;
-  const bool known = bad == "bodies" || bad == "joints" || bad == "pairs" || bad == "energy";
+  const bool known = std::find(kColumnGroupNames.begin(), kColumnGroupNames.end(), bad) !=
+                     kColumnGroupNames.end();
   Refuse("--columns", text,
          known ? fmt::format("names {} twice", bad)
-               : fmt::format("has '{}', which is not a group (bodies, joints, pairs, energy)",
-                             bad));
+               : fmt::format("has '{}', which is not a group ({})", bad,
+                             fmt::join(kColumnGroupNames, ", ")));
 }
 
 CommonOptions ParseCommon(const CommonArgs& args) {

@@ -325,6 +325,11 @@ TagReading ContactData::Reading(int tag) const {
       reading.depth_rate = e.depth_rate;
     }
     reading.force += e.force;
+    // e.friction acts on the pair's geom[1]; geom1 of the tag gets its opposite
+    // when it is geom[0]
+    const GeomPair& pair = model_.pairs()[e.pair];
+    const double sign = pair.named[0] == pair.geom[1] ? 1.0 : -1.0;
+    for (int i = 0; i < 3; ++i) reading.friction[i] += sign * e.friction[i];
   }
   return reading;
 }

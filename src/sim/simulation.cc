@@ -84,6 +84,9 @@ std::vector<std::string> Simulation::Columns() const {
   for (size_t t = 0; columns_.pairs && t < contact_model_->tags().size(); ++t) {
     add(contact_model_->tags()[t].label, {"depth", "depth_rate", "force"});
   }
+  for (size_t t = 0; columns_.friction && t < contact_model_->tags().size(); ++t) {
+    add(contact_model_->tags()[t].label, {"friction_x", "friction_y", "friction_z"});
+  }
   if (columns_.energy) add("energy", {"kinetic", "potential", "elastic", "dissipated", "total"});
   return columns;
 }
@@ -152,6 +155,10 @@ void Simulation::Sample(std::vector<double>* row) {
     const TagReading r = contacts_->Reading(t);
     row->insert(row->end(), {r.depth, r.depth_rate, r.force});
   }
+  for (int t = 0; columns_.friction && t < static_cast<int>(contact_model_->tags().size()); ++t) {
+    const TagReading r = contacts_->Reading(t);
+    row->insert(row->end(), r.friction, r.friction + 3);
+  }
   if (columns_.energy) {
     const EnergyLedger e = Energy();
     row->insert(row->end(), {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
@@ -159,12 +166,13 @@ void Simulation::Sample(std::vector<double>* row) {
 }
 
 std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad) {
-  ColumnGroups groups{false, false, false, false};
+  ColumnGroups groups{false, false, false, false, false};
   const std::pair<const char*, bool ColumnGroups::*> names[] = {
-      {"bodies", &ColumnGroups::bodies},
-      {"joints", &ColumnGroups::joints},
-      {"pairs", &ColumnGroups::pairs},
-      {"energy", &ColumnGroups::energy}};
+      {kColumnGroupNames[0], &ColumnGroups::bodies},
+      {kColumnGroupNames[1], &ColumnGroups::joints},
+      {kColumnGroupNames[2], &ColumnGroups::pairs},
+      {kColumnGroupNames[3], &ColumnGroups::friction},
+      {kColumnGroupNames[4], &ColumnGroups::energy}};
   size_t start = 0;
   while (start <= text.size()) {
     const size_t end = std::min(text.find(',', start), text.size());

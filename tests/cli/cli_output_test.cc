@@ -135,7 +135,7 @@ TEST(CliTest, ColumnsPickTheTrajectorysGroups) {
             "energy.potential,energy.elastic,energy.dissipated,energy.total");
   EXPECT_EQ(RunCli("run " + kBall + " --columns bodies,joint").output,
             "contactlaws: --columns=bodies,joint has 'joint', which is not a group (bodies, "
-            "joints, pairs, energy)\n");
+            "joints, pairs, friction, energy)\n");
   EXPECT_EQ(RunCli("run " + kBall + " --columns energy,energy").output,
             "contactlaws: --columns=energy,energy names energy twice\n");
 }

@@ -121,7 +121,8 @@ TEST(CliTest, RunWritesTheTrajectoryAndImpactLog) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,ball.qw,ball.qx,ball.qy,"
             "ball.qz,ball.wx,ball.wy,ball.wz,ball-floor.depth,ball-floor.depth_rate,"
-            "ball-floor.force,energy.kinetic,energy.potential,energy.elastic,"
+            "ball-floor.force,ball-floor.friction_x,ball-floor.friction_y,"
+            "ball-floor.friction_z,energy.kinetic,energy.potential,energy.elastic,"
             "energy.dissipated,energy.total");
   // 0 to 0.5 s at 100 rows per second: 51 rows and the header
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 52);
@@ -223,7 +224,8 @@ TEST(CliTest, CompareWritesTheThreeLongFormatFiles) {
   EXPECT_EQ(trajectories[0],
             "law,restitution,time,ball.x,ball.y,ball.z,ball.vx,ball.vy,ball.vz,ball.qw,"
             "ball.qx,ball.qy,ball.qz,ball.wx,ball.wy,ball.wz,ball-floor.depth,"
-            "ball-floor.depth_rate,ball-floor.force,energy.kinetic,energy.potential,"
+            "ball-floor.depth_rate,ball-floor.force,ball-floor.friction_x,"
+            "ball-floor.friction_y,ball-floor.friction_z,energy.kinetic,energy.potential,"
             "energy.elastic,energy.dissipated,energy.total");
   EXPECT_EQ(trajectories[1].rfind("hertz,1,0,", 0), 0u) << trajectories[1];
   EXPECT_EQ(trajectories[12].rfind("flores,0.5,0,", 0), 0u) << trajectories[12];

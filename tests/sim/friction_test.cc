@@ -13,56 +13,27 @@
 #include <gtest/gtest.h>
 
 #include "mujoco_test_util.h"
+#include "sim/friction_scenes.h"
 
 namespace contactlaws {
 namespace {
 
 class FrictionTest : public testing::MujocoTest {};
 
-constexpr double kG = 9.81;          // m/s^2
-constexpr double kRadius = 0.1;      // ball, m
-constexpr double kHalf = 0.05;       // block half size, m
-constexpr double kStiffness = 1e6;   // N/m^1.5
-constexpr double kTimestep = 1e-4;   // s
-
-// The depth at which K d^1.5 carries load (N), m.
-double StaticDepth(double load) { return std::pow(load / kStiffness, 2.0 / 3.0); }
-
-// A scene: gravity (gx, 0, -gz), a floor, and one body (a ball or a block,
-// 1 kg) resting on it at its static depth with velocity qvel (6 numbers);
-// friction_keys added to the tag.
-std::string Scene(bool ball, double gx, double gz, const std::string& qvel,
-                  const std::string& friction_keys, const std::string& geom_extra = "") {
-  const double z = ball ? kRadius - StaticDepth(gz) : kHalf - StaticDepth(gz / 4);
-  const std::string geom =
-      ball ? fmt::format(R"(type="sphere" size="{}")", kRadius)
-           : fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf);
-  return fmt::format(R"(<mujoco>
-  <option timestep="{0}" integrator="RK4" gravity="{1} 0 {2}"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="50 50 0.1" {7}/>
-    <body name="body" pos="0 0 {3}"><freejoint/>
-      <geom name="body" {4} mass="1" {7}/></body>
-  </worldbody>
-  <keyframe><key qpos="0 0 {3} 1 0 0 0" qvel="{5}"/></keyframe>
-  <custom><text name="contactlaw:contact" data="geom1=body geom2=floor law=hunt-crossley
-    restitution=0.5 stiffness={6} {8}"/></custom>
-</mujoco>)",
-                     kTimestep, gx, -gz, z, geom, qvel, kStiffness, geom_extra, friction_keys);
-}
-
-// Steps sim until time t.
-void RunUntil(Simulation& sim, double t) {
-  while (sim.time() < t - 0.5 * kTimestep) sim.Step();
-}
-
-double X(const Simulation& sim) { return sim.data()->qpos[0]; }
-double Vx(const Simulation& sim) { return sim.data()->qvel[0]; }
+using testing::FrictionScene;
+using testing::Incline;
+using testing::kG;
+using testing::kRadius;
+using testing::Lever;
+using testing::RunUntil;
+using testing::StaticDepth;
+using testing::Vx;
+using testing::X;
 
 TEST_F(FrictionTest, BlockStopsAfterTheKineticDistanceAndDissipatesItsEnergy) {
   constexpr double kMu = 0.4;
   constexpr double kV0 = 1.0;
-  Simulation& sim = MakeSimulation(Scene(false, 0, kG, "1 0 0 0 0 0", "mu=0.4"));
+  Simulation& sim = MakeSimulation(FrictionScene(false, 0, kG, "1 0 0 0 0 0", "mu=0.4"));
   mj_forward(sim.model(), sim.data());
   const double start = sim.Energy().total();
   RunUntil(sim, 0.5);
@@ -87,18 +58,14 @@ TEST_F(FrictionTest, BlockStopsAfterTheKineticDistanceAndDissipatesItsEnergy) {
               e.dissipated, start, e.total());
 }
 
-// The lever of a ball resting at depth d: the contact point sits midway
-// between the surfaces, R - d/2 below the centre.
-double Lever(double load) { return kRadius - 0.5 * StaticDepth(load); }
-
 // v and w r of a ball launched at v0 with spin w0 (about +y: > 0 rolls
 // forwards) once it rolls: angular momentum about the contact point is kept.
 TEST_F(FrictionTest, BallSlidesThenRollsAtFiveSeventhsOfItsSpeed) {
   constexpr double kMu = 0.3;
   constexpr double kV0 = 2.0;
   for (const double w0 : {0.0, -10.0}) {
-    Simulation& sim = MakeSimulation(
-        Scene(true, 0, kG, fmt::format("{} 0 0 0 {} 0", kV0, w0), fmt::format("mu={}", kMu)));
+    Simulation& sim = MakeSimulation(FrictionScene(
+        true, 0, kG, fmt::format("{} 0 0 0 {} 0", kV0, w0), fmt::format("mu={}", kMu)));
     const double r = Lever(kG);
     // I = 2/5 m R^2: v (m r + I/r) = m v0 r + I w0
     const double inertia = 0.4 * kRadius * kRadius;
@@ -118,12 +85,6 @@ TEST_F(FrictionTest, BallSlidesThenRollsAtFiveSeventhsOfItsSpeed) {
       EXPECT_NEAR(Vx(sim), 5.0 / 7.0 * kV0, StaticDepth(kG) / kRadius * kV0);
     }
   }
-}
-
-// Gravity tilted by theta about y: an incline along +x.
-std::string Incline(bool ball, double tan_theta, const std::string& keys) {
-  const double c = 1 / std::sqrt(1 + tan_theta * tan_theta);
-  return Scene(ball, kG * tan_theta * c, kG * c, "0 0 0 0 0 0", keys);
 }
 
 TEST_F(FrictionTest, CoulombHoldsABlockOnAnInclineWithoutCreep) {
@@ -196,17 +157,7 @@ TEST_F(FrictionTest, ObliqueImpactInGrossSlidingMatchesTheImpulseLaw) {
   // gravity off; 1 m/s down, 2 m/s along x, no spin: gross sliding, since
   // 2 > 7/2 mu (1 + e) v_n
   constexpr double kMu = 0.2;
-  const double z = kRadius + 1e-4;
-  Simulation& sim = MakeSimulation(fmt::format(R"(<mujoco>
-  <option timestep="{0}" integrator="RK4" gravity="0 0 0"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="50 50 0.1"/>
-    <body name="ball" pos="0 0 {1}"><freejoint/><geom name="ball" type="sphere" size="0.1" mass="1"/></body>
-  </worldbody>
-  <keyframe><key qpos="0 0 {1} 1 0 0 0" qvel="2 0 -1 0 0 0"/></keyframe>
-  <custom><text name="contactlaw:c" data="geom1=ball geom2=floor law=hunt-crossley restitution=0.5
-    stiffness={2} mu={3}"/></custom>
-</mujoco>)", kTimestep, z, kStiffness, kMu));
+  Simulation& sim = MakeSimulation(testing::ObliqueImpact(2, kMu));
   while (sim.contacts().impacts().empty() || sim.contacts().impacts()[0].open) sim.Step();
   const Impact& impact = sim.contacts().impacts()[0];
   const double e = impact.restitution_post();
@@ -233,7 +184,7 @@ TEST_F(FrictionTest, RollingAndTorsionalResistanceSlowTheSpinAtTheirCapsRate) {
   // condim 6: rolling l_r = 2 mm, torsional l_t = 5 mm
   const std::string geom = R"(condim="6" friction="0.5 0.005 0.002")";
   // rolling at 1 m/s: (I + m R^2) w' = -l_r m g
-  Simulation& roll = MakeSimulation(Scene(true, 0, kG, "1 0 0 0 10 0", "", geom));
+  Simulation& roll = MakeSimulation(FrictionScene(true, 0, kG, "1 0 0 0 10 0", "", geom));
   RunUntil(roll, 1.0);
   const double w1 = roll.data()->qvel[4];
   RunUntil(roll, 2.0);
@@ -242,7 +193,7 @@ TEST_F(FrictionTest, RollingAndTorsionalResistanceSlowTheSpinAtTheirCapsRate) {
   constexpr double kRateTolerance = 1e-2;  // relative
   EXPECT_NEAR(w1 - roll.data()->qvel[4], rolling_rate, kRateTolerance * rolling_rate);
   // spinning about the normal: I w' = -l_t m g
-  Simulation& spin = MakeSimulation(Scene(true, 0, kG, "0 0 0 0 0 10", "", geom));
+  Simulation& spin = MakeSimulation(FrictionScene(true, 0, kG, "0 0 0 0 0 10", "", geom));
   RunUntil(spin, 0.2);
   const double s1 = spin.data()->qvel[5];
   RunUntil(spin, 0.5);

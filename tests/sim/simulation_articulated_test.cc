@@ -73,7 +73,7 @@ TEST_F(ArticulatedTest, TheTrajectoryHasEveryMovingBodyJointAndSpin) {
 
   // groups leave their columns out
   SimulationOptions only_joints;
-  only_joints.columns = {false, true, false, false};
+  only_joints.columns = {false, true, false, false, false};
   Simulation& joints = MakeSimulation(PendulumXml("law=hertz stiffness=1e8", 2.0), only_joints);
   EXPECT_EQ(joints.Columns(), (std::vector<std::string>{"time", "swing.q", "swing.v"}));
 }
