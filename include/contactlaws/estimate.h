@@ -103,9 +103,10 @@ TagEstimate EstimateTag(const ContactData& contacts, int tag,
                         std::optional<double> impact_velocity = std::nullopt);
 
 // The tangential dynamics of a pair with friction, before the run: its
-// TangentialDuration at the pair's weight (friction_mass |gravity|) on the
-// pair's friction_mass, the stick spring's k_t given by the tag or Mindlin's
-// at the estimated elastic depth of normal (or the overlap at the start).
+// TangentialDuration on the pair's friction_mass, at the estimated elastic
+// depth of normal (or the overlap at the start): the stick spring's k_t given
+// by the tag or Mindlin's there, and the load the larger of the pair's weight
+// (friction_mass |gravity|) and the law's spring force there.
 struct TangentialEstimate {
   double stiffness = 0;     // N/m: k_t, or LuGre's sigma0 F_n; 0 for regularized
   double mass = 0;          // kg, GeomPair::friction_mass
@@ -117,6 +118,9 @@ struct TangentialEstimate {
   // The period 2 duration in kStepsPerContact steps (a critically damped
   // spring: 2 pi sqrt(m / k) / 20).
   double timestep() const { return 2 * duration / kStepsPerContact; }
+  // "period 0.0002 s", or for a damper (regularized: no spring, no period)
+  // "lag 1e-05 s", the step it needs
+  std::string Span() const;
 };
 TangentialEstimate EstimateTangential(const ContactModel& model, int pair,
                                       const ContactEstimate& normal);

@@ -117,13 +117,18 @@ double SlidingMu(const FrictionParams& params, double speed);
 // sqrt(k m), else c / 2m + sqrt((c / 2m)^2 - k / m). The spring and damper:
 //   coulomb, stribeck: k_t = stiffness (N/m), c_t (default 2 sqrt(k_t m):
 //     critical, r = sqrt(k_t / m)) plus viscous;
-//   lugre: the bristles sigma0 F_n, sigma1 F_n plus viscous;
-//   regularized: no spring; its curve's slope at zero slip, 2 mu_s F_n / v_t,
-//     is a damper (r = 2 mu_s F_n / (v_t m)).
+//   lugre: the bristles sigma0 F_n, BristleDamping plus viscous;
+//   regularized: no spring; its curve's slope at zero slip, c = 2 mu_s F_n /
+//     v_t, is a damper, with no period: the duration is 10 m / c, so that
+//     the 20 steps per period of the callers are its lag m / c each.
 // Infinite for none, and where nothing stiffens the contact (no load, no
 // stiffness, an infinite mass).
 double TangentialDuration(const FrictionParams& params, double stiffness, double mass,
                           double normal_force);
+
+// LuGre's bristle damper, N s/m: the tag's sigma1 x F_n, or critical for the
+// bristle spring sigma0 F_n on the pair's mass, 2 sqrt(sigma0 F_n m).
+double BristleDamping(const FrictionParams& params, double normal_force, double mass);
 
 // A 3-vector spring of the stick state (the tangential force, or a rolling
 // or torsional torque), capped at a limit. Incremental: the committed value,

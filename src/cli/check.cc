@@ -49,15 +49,14 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
   const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
   if (automatic) {
     // the auto timestep's own rule at its default accuracy (auto_timestep.h)
-    fmt::print("  tangential: {}: period {:.4g} s: --timestep auto: steps of <= {:.3g} s in "
-               "contact\n",
-               t.what, 2 * t.duration, 2 * t.duration / StepsPerContact(kDefaultAccuracy));
+    fmt::print("  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n", t.what,
+               t.Span(), 2 * t.duration / StepsPerContact(kDefaultAccuracy));
     return false;
   }
   const double step = t.timestep();
   const bool ok = !(std::isfinite(step)) || dt <= step;
-  fmt::print("  tangential: {}: period {:.4g} s: {} (needs timestep <= {:.3g} s)\n", t.what,
-             2 * t.duration, ok ? "ok" : "TOO COARSE", step);
+  fmt::print("  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
+             ok ? "ok" : "TOO COARSE", step);
   return !ok;
 }
 

@@ -45,6 +45,15 @@ FrictionOutput Regularized(const FrictionParams& p, const FrictionInput& in) {
   return out;
 }
 
+}  // namespace
+
+double BristleDamping(const FrictionParams& p, double normal_force, double mass) {
+  return p.bristle_damping ? *p.bristle_damping * normal_force
+                           : 2 * std::sqrt(p.bristle_stiffness * normal_force * mass);
+}
+
+namespace {
+
 // The bristles of LuGre, in displacement form: dz = du - sigma0 |du| z / g,
 // g = mu(|v|) (the load scales the force, not z). Integrated exactly along
 // the straight stretch since the commit, so that a stiff bristle is stable
@@ -55,10 +64,7 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
   const double g = std::max(StribeckMu(p, speed), 1e-300);
   const double sigma0 = p.bristle_stiffness;
   const double fn = in.normal_force;
-  // the bristles' damper, N s/m: the tag's sigma1 F_n, or critical for the
-  // bristle spring sigma0 F_n on the pair's mass
-  const double bristle_damping = p.bristle_damping ? *p.bristle_damping * fn
-                                                   : 2 * std::sqrt(sigma0 * fn * in.mass);
+  const double bristle_damping = BristleDamping(p, fn, in.mass);
   const double du = Norm(in.stretch);
   const double decay = std::exp(-sigma0 * du / g);
   double z[3], zdot[3];
@@ -107,7 +113,7 @@ double TangentialDuration(const FrictionParams& p, double stiffness, double mass
       break;
     case FrictionKind::kLuGre:
       k = p.bristle_stiffness * fn;
-      c += p.bristle_damping.value_or(std::sqrt(p.bristle_stiffness)) * fn;
+      c += BristleDamping(p, fn, mass);
       break;
     case FrictionKind::kRegularized:
       c = 2 * p.mu_static * fn / p.transition_velocity;
@@ -115,6 +121,14 @@ double TangentialDuration(const FrictionParams& p, double stiffness, double mass
   }
   if (!(mass > 0) || !std::isfinite(mass) || !std::isfinite(k) || !std::isfinite(c)) {
     return kInfinity;
+  }
+  if (k == 0) {
+    // a damper has no period: a step follows its lag m / c when it is no
+    // longer than the lag (RK4 is stable to 2.8 m / c; on the incline 1e-5 s,
+    // one lag, gives the creep of 2.5e-6 s to 1e-9): the duration whose 20
+    // steps per period (2 x duration, the callers' rule) are one lag
+    constexpr double kLagsPerDuration = 10;
+    return c > 0 ? kLagsPerDuration * mass / c : kInfinity;
   }
   // the fastest rate of m x'' + c x' + k x = 0
   const double half = c / (2 * mass);

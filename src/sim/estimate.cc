@@ -188,13 +188,26 @@ TagEstimate EstimateTag(const ContactData& contacts, int tag,
   return shortest;
 }
 
+std::string TangentialEstimate::Span() const {
+  return stiffness > 0 ? fmt::format("period {:.4g} s", 2 * duration)
+                       : fmt::format("lag {:.4g} s", timestep());
+}
+
 TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
                                       const ContactEstimate& normal) {
   const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   TangentialEstimate t;
   t.mass = pair.friction_mass;
-  t.normal_force = t.mass * mju_norm3(cm.model()->opt.gravity);
+  // the deepest the contact gets: the estimate's, or its overlap now
+  const double depth = std::max(std::isfinite(normal.max_depth) ? normal.max_depth : 0.0,
+                                normal.gap ? -*normal.gap : 0.0);
+  // the load: the pair's weight, or the spring's force there if larger (an
+  // impact: the bristles and the regularized curve stiffen with the load)
+  ContactState deepest;
+  deepest.depth = depth;
+  t.normal_force = std::max(t.mass * mju_norm3(cm.model()->opt.gravity),
+                            depth > 0 ? EvaluateLaw(pair.params, deepest).elastic : 0.0);
   if (f.kind == FrictionKind::kNone) return t;
   const std::string model(FrictionName(f.kind));
   if (f.kind == FrictionKind::kRegularized) {
@@ -205,9 +218,6 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
     t.what = fmt::format("bristles ({}, sigma0 F_n {:.4g} N/m, F_n {:.4g} N, mass {:.4g} kg)",
                          model, t.stiffness, t.normal_force, t.mass);
   } else {
-    // the deepest the contact gets: the estimate's, or its overlap now
-    const double depth = std::max(std::isfinite(normal.max_depth) ? normal.max_depth : 0.0,
-                                  normal.gap ? -*normal.gap : 0.0);
     t.stiffness =
         f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
     t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,

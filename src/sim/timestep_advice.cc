@@ -47,12 +47,14 @@ std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& a
 
 std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
   const TangentialEstimate& t = advice.tangential;
-  const double period = 2 * t.duration;
-  return fmt::format(
-      "{}: timestep {} s puts {:.3g} steps in the period {:.4g} s of its {} (>= {} needed): "
-      "use --timestep {:.3g} or smaller (see contactlaws check)",
-      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep,
-      period / sim.model()->opt.timestep, period, t.what, kStepsPerContact, t.timestep());
+  const double dt = sim.model()->opt.timestep;
+  const std::string needs =
+      t.stiffness > 0 ? fmt::format("puts {:.3g} steps in the {} of its {} (>= {} needed)",
+                                    2 * t.duration / dt, t.Span(), t.what, kStepsPerContact)
+                      : fmt::format("is longer than the {} of its {} (a step each)", t.Span(),
+                                    t.what);
+  return fmt::format("{}: timestep {} s {}: use --timestep {:.3g} or smaller (see contactlaws check)",
+                     PairName(sim, advice.shortest.pair), dt, needs, t.timestep());
 }
 
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
