@@ -136,6 +136,21 @@ ContactForce EvaluateLaw(const LawParams& params, const ContactState& state);
 // Elastic energy stored at depth d (J): K d^(n+1)/(n+1), or k d^2/2.
 double ElasticEnergy(const LawParams& params, double depth);
 
+// The law's damping at state as a damper, c = dF/dd' (N s/m, 0 for an
+// elastic law or no depth). The hysteresis family's c = a K d^n / v0 is
+// largest where v0 is smallest: a contact that settles with v0 at
+// min_impact_velocity under a load is a stiff damper, and an explicit step
+// longer than about 2.8 of its lags m / c (RK4) hangs it in a false state or
+// makes it chatter. Points of a pair add (their dampers act in parallel).
+double DampingCoefficient(const LawParams& params, const ContactState& state);
+
+// The lag m / c (s) of a contact at rest under load (N) on mass m (kg): c at
+// the depth where the law's spring carries the load, d' = 0, v0 =
+// min_impact_velocity. For the hysteresis family c = a load / v0, however
+// the load is shared among points. Infinite for an elastic law, no load or
+// an infinite mass.
+double RestingDamperLag(const LawParams& params, double load, double mass);
+
 // The dimensionless hysteresis coefficient a of the Hertz family, for which
 // F = K d^n (1 + a d'/v0): 0 for hertz, the law's a(e) otherwise.
 // Not defined for kelvin-voigt nor for the constant-dissipation family, whose

@@ -60,6 +60,26 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
   return !ok;
 }
 
+// The lag of the law's damping at rest under the pair's weight (a contact
+// settling at the v0 floor: TimestepAdvice::resting_lag); true when the
+// timestep is too coarse for it.
+bool PrintResting(const LawParams& law, const ContactEstimate& estimate, double gravity,
+                  double dt, bool automatic) {
+  const double load = estimate.effective_mass * gravity;
+  if (!std::isfinite(load)) return false;
+  const double lag = RestingDamperLag(law, load, estimate.effective_mass);
+  if (!std::isfinite(lag)) return false;
+  TimestepAdvice advice;
+  advice.resting_lag = lag;
+  const bool ok = automatic || dt <= advice.resting_step();
+  fmt::print("  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
+             "{} (needs timestep <= {:.3g} s{})\n",
+             lag, load, law.min_impact_velocity,
+             automatic ? "--timestep auto keeps to it" : ok ? "ok" : "TOO COARSE",
+             advice.resting_step(), ok ? "" : ", or a larger min_impact_velocity");
+  return !ok;
+}
+
 // Tag t resolved, its estimated contact and the timestep it needs; true when
 // the timestep is too coarse for the estimate.
 bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, bool automatic) {
@@ -106,7 +126,9 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, boo
           : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
                         "speed");
   fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
-  const bool tangential_coarse = PrintFriction(cm, worst, estimate, dt, automatic);
+  const bool tangential_coarse =
+      PrintFriction(cm, worst, estimate, dt, automatic) |
+      PrintResting(law, estimate, mju_norm3(m->opt.gravity), dt, automatic);
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");
@@ -137,6 +159,12 @@ void PrintDrives(const Simulation& sim) {
   const ContactModel& cm = sim.contact_model();
   fmt::print("\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
   for (const Drive& drive : cm.drives()) {
+    if (drive.motion == Drive::Motion::kLinear) {
+      fmt::print("contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
+                 drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
+                 drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.speed);
+      continue;
+    }
     fmt::print("contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
                "* t + {} rad), top speed {:.6g} m/s\n",
                drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contactlaws/hertz.h"
 #include "contactlaws/hysteresis.h"
@@ -160,6 +161,33 @@ double ElasticEnergy(const LawParams& p, double depth) {
     return 0.5 * p.linear_stiffness * depth * depth;
   }
   return HertzEnergy(p.stiffness, p.exponent, depth);
+}
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}  // namespace
+
+double DampingCoefficient(const LawParams& p, const ContactState& state) {
+  if (!(state.depth > 0)) return 0;
+  // every law is linear in d' away from its clamp: a small step in d'
+  // (a thousandth of v0) measures c
+  ContactState faster = state;
+  const double delta =
+      1e-3 * std::max({std::abs(state.depth_rate), state.impact_velocity, p.min_impact_velocity});
+  faster.depth_rate += delta;
+  return std::max(0.0, (EvaluateLaw(p, faster).total - EvaluateLaw(p, state).total) / delta);
+}
+
+double RestingDamperLag(const LawParams& p, double load, double mass) {
+  if (!(load > 0)) return kInfinity;
+  ContactState rest;
+  rest.depth = Law(p.kind).family == LawFamily::kLinear
+                   ? load / p.linear_stiffness
+                   : std::pow(load / p.stiffness, 1.0 / p.exponent);
+  rest.impact_velocity = p.min_impact_velocity;
+  rest.effective_mass = mass;
+  const double c = DampingCoefficient(p, rest);
+  return c > 0 && mass > 0 && std::isfinite(mass) ? mass / c : kInfinity;
 }
 
 }  // namespace contactlaws

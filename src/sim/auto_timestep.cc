@@ -111,6 +111,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     top_acceleration_.push_back(accel);
   }
   in_contact_.assign(cm.pairs().size(), 0);
+  pair_damping_.assign(cm.pairs().size(), 0.0);
 }
 
 double AutoTimestep::FineStep(int pair, double v) const {
@@ -154,6 +155,15 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
   // its period 2 duration, as a contact's duration, in steps_per_contact
   // steps (the fixed-step rule: kStepsPerContact in either)
   return 2 * duration / options_.steps_per_contact;
+}
+
+ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
+  ContactState state;
+  state.depth = e.depth;
+  state.depth_rate = e.depth_rate;
+  state.impact_velocity = e.impact_velocity;
+  state.effective_mass = effective_mass_[e.pair];
+  return state;
 }
 
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
@@ -246,6 +256,15 @@ double AutoTimestep::Next(double until) {
       in_contact_[e.pair] = 1;
       ++in_contact;
     }
+    pair_damping_[e.pair] += DampingCoefficient(cm.pairs()[e.pair].params, State(e));
+  }
+  // the laws' damping as dampers, a pair's points in parallel: a step no
+  // longer than its lag m / c (a contact settling at the v0 floor is stiff:
+  // DampingCoefficient)
+  for (const ContactData::Evaluation& e : contacts_.latest()) {
+    double& c = pair_damping_[e.pair];
+    if (c > 0) step = std::min(step, effective_mass_[e.pair] / c);
+    c = 0;
   }
 
   // the other pairs: the time to close a fraction of their gap, from the

@@ -31,6 +31,12 @@ std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
     a.coarse = a.steps < kStepsPerContact;
     a.tangential = EstimateTangential(sim->contact_model(), a.shortest.pair, a.shortest.estimate);
     a.tangential_coarse = dt > a.tangential.timestep();
+    const GeomPair& pair = sim->contact_model().pairs()[a.shortest.pair];
+    const double mass = a.shortest.estimate.effective_mass;
+    a.resting_load = mass * mju_norm3(sim->model()->opt.gravity);
+    a.resting_lag = std::isfinite(mass) ? RestingDamperLag(pair.params, a.resting_load, mass)
+                                        : std::numeric_limits<double>::infinity();
+    a.resting_coarse = dt > a.resting_step();
     advice.push_back(a);
   }
   return advice;
@@ -57,12 +63,23 @@ std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvic
                      PairName(sim, advice.shortest.pair), dt, needs, t.timestep());
 }
 
+std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+  const LawParams& law = sim.contact_model().pairs()[advice.shortest.pair].params;
+  return fmt::format(
+      "{}: timestep {} s is longer than 2 lags of its law's damping at rest (lag {:.3g} s: {} "
+      "under the weight {:.4g} N at the v0 floor min_impact_velocity {} m/s): a resting contact "
+      "would hang or chatter: use --timestep {:.3g} or smaller, or raise min_impact_velocity",
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.resting_lag,
+      LawName(law.kind), advice.resting_load, law.min_impact_velocity, advice.resting_step());
+}
+
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
                                           const std::vector<TimestepAdvice>& advice) {
   std::vector<std::string> warnings;
   for (const TimestepAdvice& a : advice) {
     if (a.coarse) warnings.push_back(CoarseTimestepWarning(sim, a));
     if (a.tangential_coarse) warnings.push_back(TangentialTimestepWarning(sim, a));
+    if (a.resting_coarse) warnings.push_back(RestingTimestepWarning(sim, a));
   }
   return warnings;
 }

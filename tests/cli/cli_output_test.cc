@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "cli/cli_test_util.h"
@@ -149,6 +150,40 @@ TEST(CliTest, CheckTakesTheAutoTimestep) {
             std::string::npos)
       << r.output;
   EXPECT_EQ(r.output.find("TOO COARSE"), std::string::npos) << r.output;
+}
+
+TEST(CliOutputTest, AContactThatWouldHangAtRestIsWarnedBeforeTheRunAndInCheck) {
+  // flores e = 0.2 (a = 6.4) at the v0 floor 1e-3 m/s under 9.81 N: lag
+  // 1e-3 / (6.4 g) = 1.59e-5 s; 1e-4 s is 6 lags (it hangs: auto_timestep_test)
+  const std::string box = R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="box" pos="0 0 0.04996"><freejoint/>
+      <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:box" data="geom1=box geom2=floor law=flores restitution=0.2
+    stiffness=1e7 friction=none {}"/></custom>
+</mujoco>)";
+  const std::string scene = testing::WriteScene("hangs_at_rest", fmt::format(box, ""));
+  const Result run = RunCli("run " + scene + " --duration 0.001");
+  EXPECT_NE(run.output.find("contactlaw:box (box, floor): timestep 0.0001 s is longer than 2 lags "
+                            "of its law's damping at rest (lag 1.59e-05 s: flores under the "
+                            "weight 9.81 N at the v0 floor min_impact_velocity 0.001 m/s)"),
+            std::string::npos)
+      << run.output;
+  const Result check = RunCli("check " + scene);
+  EXPECT_NE(check.output.find("at rest: damping lag 1.59e-05 s under the weight 9.81 N at the v0 "
+                              "floor 0.001 m/s: TOO COARSE (needs timestep <= 3.19e-05 s, or a "
+                              "larger min_impact_velocity)"),
+            std::string::npos)
+      << check.output;
+  // a floor of 1e-2 m/s: ten times the lag, no warning
+  const std::string raised =
+      testing::WriteScene("rests", fmt::format(box, "min_impact_velocity=1e-2"));
+  EXPECT_EQ(RunCli("run " + raised + " --duration 0.001").output.find("at rest"), std::string::npos);
+  const Result fine = RunCli("check " + raised);
+  EXPECT_NE(fine.output.find("at rest: damping lag 0.000159 s"), std::string::npos) << fine.output;
 }
 
 }  // namespace

@@ -193,5 +193,28 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   EXPECT_EQ(error(p)->requirement, "must be given, >= 0 (s/m), for hunt-crossley-constant");
 }
 
+TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
+  // F = K d^n (1 + a d' / v0): c = a K d^n / v0 = a W / v0 at rest under W
+  constexpr double kRelativeTolerance = 1e-9;  // the finite difference of a law linear in d'
+  LawParams p;
+  p.kind = LawKind::kHuntCrossley;
+  p.restitution = 0.5;
+  p.stiffness = 1e7;
+  const double a = HysteresisCoefficient(p.kind, p.restitution);  // 0.75
+  const double m = 2, load = 19.62;
+  const double expected = m * p.min_impact_velocity / (a * load);
+  EXPECT_NEAR(RestingDamperLag(p, load, m), expected, kRelativeTolerance * expected);
+  // however the load is shared: half the load, twice the lag of that point
+  EXPECT_NEAR(RestingDamperLag(p, load / 2, m), 2 * expected, kRelativeTolerance * expected);
+  // a larger floor, a longer lag
+  p.min_impact_velocity = 1e-2;
+  EXPECT_NEAR(RestingDamperLag(p, load, m), 10 * expected, 10 * kRelativeTolerance * expected);
+  // elastic, or no load: no damper
+  p.kind = LawKind::kHertz;
+  EXPECT_TRUE(std::isinf(RestingDamperLag(p, load, m)));
+  p.kind = LawKind::kHuntCrossley;
+  EXPECT_TRUE(std::isinf(RestingDamperLag(p, 0, m)));
+}
+
 }  // namespace
 }  // namespace contactlaws

@@ -222,13 +222,53 @@ TEST(AutoTimestepTest, TheStickSpringIsResolvedAsTheNormalContactIs) {
   // default accuracy)
   const double bound = 2 * M_PI * std::sqrt(1.0 / 1e7) / StepsPerContact(kDefaultAccuracy);
   EXPECT_LE(stick_step, bound * (1 + 1e-12));
-  // the normal contact alone: steps far above what the spring takes; held
-  // to them, the spring does not hold the block
-  EXPECT_GT(normal_step, 10 * bound);
+  // the normal contact alone (its law's damping at rest binds: 1.42e-4 s):
+  // steps well above what the spring takes; held to them, the spring does
+  // not hold the block
+  EXPECT_GT(normal_step, 3 * bound);
   const double unresolved = InclineDrift("tangential_stiffness=1e7", normal_step, &fixed);
   EXPECT_GT(unresolved, 1e3 * kCreepBound);
   std::printf("stick drift %.3g m at steps <= %.3g s; %.3g m at the normal contact's %.3g s\n",
               drift, stick_step, unresolved, normal_step);
+}
+
+// A box placed on a floor at rest: its contacts open with v0 at the law's
+// floor (1e-3 m/s), and flores e = 0.2 (a = 6.4) makes them a damper of lag
+// m v0 / (a m g) = 1.6e-5 s. The auto step keeps to the lag and the box
+// rests on its weight; a fixed step of 6e-5 s (3.8 lags) hangs it.
+double RestingForce(std::optional<double> fixed_step) {
+  constexpr double kDepth = 3.918e-5;  // m: each corner carries m g / 4 at K = 1e7
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="box" pos="0 0 {}"><freejoint/>
+      <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:box" data="geom1=box geom2=floor law=flores restitution=0.2
+    stiffness=1e7 friction=none"/></custom>
+</mujoco>)",
+                                      fixed_step.value_or(1e-3), 0.05 - kDepth);
+  const Scene scene("resting.xml", LoadModelString(xml, "resting.xml"));
+  std::unique_ptr<Simulation> sim = scene.Make({});
+  std::optional<AutoTimestep> stepper;
+  if (!fixed_step) stepper.emplace(sim->contacts());
+  mj_forward(sim->model(), sim->data());
+  constexpr double kEnd = 0.5;  // s: settled either way by 0.1 s
+  while (sim->time() < kEnd - 1e-9 && !sim->contacts().divergence()) {
+    sim->Step(stepper ? stepper->Next(kEnd - sim->time()) : *fixed_step);
+  }
+  double force = 0;
+  for (const auto& e : sim->contacts().latest()) force += e.force;
+  return force;
+}
+
+TEST(AutoTimestepTest, AContactSettlingAtTheV0FloorIsSteppedWithinItsDampersLag) {
+  constexpr double kWeight = 9.81;            // N
+  constexpr double kRestTolerance = 1e-6;     // relative: at rest, the force is the weight
+  EXPECT_NEAR(RestingForce(std::nullopt), kWeight, kRestTolerance * kWeight);
+  // the rule's need: held to 3.8 lags, the contact does not carry the weight
+  EXPECT_GT(std::abs(RestingForce(6e-5) - kWeight), 0.1 * kWeight);
 }
 
 }  // namespace
