@@ -44,6 +44,7 @@ struct SimulateArgs {
   std::optional<std::string> restitution;
   std::optional<std::string> friction;
   std::optional<std::string> mu;
+  std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.

@@ -202,6 +202,10 @@ void AddViewers(CLI::App* app, Commands* c) {
       ->required();
   AddOverrides(c->simulate_cmd, &c->simulate.law, &c->simulate.restitution);
   AddFriction(c->simulate_cmd, &c->simulate.friction, &c->simulate.mu);
+  AddNumber(c->simulate_cmd, "--accuracy", &c->simulate.accuracy,
+            "step with the contact-aware timestep (README) at this relative error in a "
+            "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
+            "fixed timestep)");
 
   CLI::App* cmd = c->render_cmd = app->add_subcommand(
       "render", "the run drawn offscreen (no window): a video, a GIF or PNG files");

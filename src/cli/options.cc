@@ -75,6 +75,15 @@ ColumnGroups ParseColumns(std::string_view text) {
                              fmt::join(kColumnGroupNames, ", ")));
 }
 
+double ParseAccuracy(const std::string& text) {
+  const std::optional<double> value = ParseNumber(text);
+  if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
+    Refuse("--accuracy", value ? fmt::format("{}", *value) : text,
+           fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
+  }
+  return *value;
+}
+
 CommonOptions ParseCommon(const CommonArgs& args) {
   CommonOptions options;
   options.duration = ParsePositive("--duration", args.duration, "s");
@@ -94,13 +103,9 @@ CommonOptions ParseCommon(const CommonArgs& args) {
            "goes with --timestep auto");
   }
   if (args.accuracy) {
-    const std::optional<double> value = ParseNumber(*args.accuracy);
-    if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
-      Refuse("--accuracy", value ? fmt::format("{}", *value) : *args.accuracy,
-             fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
-    }
+    const double value = ParseAccuracy(*args.accuracy);
     if (fixed) {
-      Refuse("--accuracy", fmt::format("{}", *value),
+      Refuse("--accuracy", fmt::format("{}", value),
              fmt::format("goes with --timestep auto, not with the fixed --timestep={}",
                          *args.timestep));
     }
@@ -110,7 +115,7 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     if (args.max_timestep) {
       options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
     }
-    if (args.accuracy) options.auto_timestep->accuracy = *ParseNumber(*args.accuracy);
+    if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
