@@ -34,6 +34,7 @@ struct CheckArgs {
   std::optional<std::string> friction;
   std::optional<std::string> mu;
   std::optional<std::string> timestep;
+  std::optional<std::string> accuracy;  // auto's accuracy; implies --timestep auto
   std::optional<std::string> impact_velocity;
 };
 

@@ -175,6 +175,9 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
   AddFriction(c->check_cmd, &c->check.friction, &c->check.mu);
   c->check_cmd->add_option("--timestep", c->check.timestep,
                            "s (default: the scene's), or auto: the steps it would take");
+  AddNumber(c->check_cmd, "--accuracy", &c->check.accuracy,
+            "with --timestep auto (implied): the accuracy whose steps to show, in (0, 0.1] "
+            "(default 0.001)");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");
 

@@ -75,11 +75,15 @@ ColumnGroups ParseColumns(std::string_view text) {
                              fmt::join(kColumnGroupNames, ", ")));
 }
 
-double ParseAccuracy(const std::string& text) {
+double ParseAccuracy(const std::string& text, const std::optional<std::string>& timestep) {
   const std::optional<double> value = ParseNumber(text);
   if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
     Refuse("--accuracy", value ? fmt::format("{}", *value) : text,
            fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
+  }
+  if (timestep && *timestep != "auto") {
+    Refuse("--accuracy", fmt::format("{}", *value),
+           fmt::format("goes with --timestep auto, not with the fixed --timestep={}", *timestep));
   }
   return *value;
 }
@@ -102,20 +106,13 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     Refuse("--max-timestep", value ? fmt::format("{}", *value) : *args.max_timestep,
            "goes with --timestep auto");
   }
-  if (args.accuracy) {
-    const double value = ParseAccuracy(*args.accuracy);
-    if (fixed) {
-      Refuse("--accuracy", fmt::format("{}", value),
-             fmt::format("goes with --timestep auto, not with the fixed --timestep={}",
-                         *args.timestep));
-    }
-  }
+  if (args.accuracy) ParseAccuracy(*args.accuracy, args.timestep);
   if (auto_timestep) {
     options.auto_timestep.emplace();
     if (args.max_timestep) {
       options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
     }
-    if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy);
+    if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy, args.timestep);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);

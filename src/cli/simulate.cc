@@ -36,7 +36,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SimulationOptions options;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
-  if (args.accuracy) ParseAccuracy(*args.accuracy);
+  if (args.accuracy) ParseAccuracy(*args.accuracy, std::nullopt);
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
   const std::string plugin = FindPlugin();
