@@ -7,13 +7,16 @@
 #   results/laws.csv   each law's a(e) and closed-form rebound (contactlaws laws)
 #   results/fig8/      ball on the driven table, Hertz               (Fig. 8)
 #   results/fig9/      table, HC, LN, Flores at e = 0.9, 0.6, 0.3     (Fig. 9)
-#   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10)
+#   results/table-e0.6/ table, the five laws at e = 0.6              (Fig. 10; Kelvin-Voigt
+#                       run here, the others the rows of fig8/ and fig9/)
 #   results/*.png      the figures (scripts/figures.py)
 #   results/reproduction.txt  the numbers docs/paper-reproduction.md quotes
 #   results/ball.gif, results/ball_table.gif  the two scenes drawn (contactlaws render)
 #   results/friction/  the friction scenes' runs; results/friction_*.png their
 #                      figures (scripts/figures_friction.py, docs/friction.md)
-# Each directory holds trajectories.csv, impacts.csv and summary.csv.
+# Each directory holds trajectories.csv (the columns the figures read), impacts.csv and
+# summary.csv. After the build it takes about N s on 2 cores (docs/paper-reproduction.md,
+# "Timestep").
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -33,6 +36,17 @@ mkdir -p "$out"
 # fixed 1e-5 s took 20 times as long. The accuracy of each stage is stated beside it, and
 # docs/paper-reproduction.md compares its numbers with the fixed 1e-5 s answer.
 # A trajectory keeps only the columns the figures read (--columns).
+
+# The table's runs at the default accuracy (1e-3). Fig. 10's five laws at e = 0.6 are Fig. 8's
+# Hertz run, Fig. 9's three runs at e = 0.6 and Kelvin-Voigt: only Kelvin-Voigt runs for it,
+# first and in the background (its resting contact takes the longest of all the runs), and
+# table-e0.6/ is assembled from the three (a run's rows do not depend on the runs beside it,
+# as with --jobs).
+table_runs=(--duration 10 --timestep auto --columns bodies)
+mkdir -p "$out/table-kv"
+"$cl" compare "$table" --laws kelvin-voigt --restitution 0.6 "${table_runs[@]}" \
+  --output-dir "$out/table-kv" --quiet > "$out/table-kv/log.txt" 2>&1 &
+kv=$!
 
 echo "== Fig. 5: the bouncing ball, Flores, e = 0.9 =="
 # --accuracy 3e-5: the energy ledger (Fig. 11) sums the dissipated power step by step, and
@@ -55,15 +69,6 @@ echo "== Fig. 7 and its companion: post- against pre-impact restitution, every l
 # the closed-form rebound of each law, from the program's own formulas
 "$cl" laws --format csv --restitution 0.01:1.0:0.002 > "$out/laws.csv"
 echo
-# The table's runs at the default accuracy (1e-3). Fig. 10's five laws at e = 0.6 are Fig. 8's
-# Hertz run, Fig. 9's three runs at e = 0.6 and Kelvin-Voigt: only Kelvin-Voigt runs for it
-# (in the background: its resting contact takes the longest), and table-e0.6/ is assembled
-# from the three (each run's rows do not depend on the runs beside it, as with --jobs).
-table_runs=(--duration 10 --timestep auto --columns bodies)
-mkdir -p "$out/table-kv"
-"$cl" compare "$table" --laws kelvin-voigt --restitution 0.6 "${table_runs[@]}" \
-  --output-dir "$out/table-kv" --quiet > "$out/table-kv/log.txt" 2>&1 &
-kv=$!
 echo "== Fig. 8: the ball on the driven table, Hertz =="
 "$cl" compare "$table" --laws hertz "${table_runs[@]}" --output-dir "$out/fig8"
 echo
@@ -82,11 +87,15 @@ for f in trajectories.csv impacts.csv summary.csv; do
 done
 rm -r "$out/table-kv"
 echo
-echo "== Figures; the two scenes drawn (offscreen, no display needed) in the background =="
+echo "== Figures; the two scenes drawn (offscreen, no display needed) beside them =="
 # force arrows at 2e-5 m/N: the ball's 1.2e4 N impact peak is 0.24 m long
 "$cl" render "$ball" --duration 3 --fps 20 --width 320 --height 240 --timestep auto \
-  --force-scale 2e-5 --output "$out/ball.gif" > "$out/render.log" 2>&1 &
-render=$!
+  --force-scale 2e-5 --output "$out/ball.gif" > "$out/render-ball.log" 2>&1 &
+render_ball=$!
+"$cl" render "$table" --law hunt-crossley --restitution 0.6 --duration 4 --fps 20 \
+  --width 320 --height 240 --timestep auto --force-scale 2e-5 --output "$out/ball_table.gif" \
+  > "$out/render-table.log" 2>&1 &
+render_table=$!
 # Debian's python3 has python3-matplotlib; a python3 earlier on PATH may not
 /usr/bin/python3 scripts/figures.py "$out"
 echo
@@ -94,11 +103,11 @@ echo "== The numbers of docs/paper-reproduction.md =="
 /usr/bin/python3 scripts/reproduction.py "$out" | tee "$out/reproduction.txt"
 echo
 echo "== The two scenes drawn =="
-"$cl" render "$table" --law hunt-crossley --restitution 0.6 --duration 4 --fps 20 \
-  --width 320 --height 240 --timestep auto --force-scale 2e-5 --output "$out/ball_table.gif"
-wait "$render" || { cat "$out/render.log"; exit 1; }
-cat "$out/render.log"
-rm "$out/render.log"
+for job in "$render_ball:ball" "$render_table:table"; do
+  wait "${job%%:*}" || { cat "$out/render-${job#*:}.log"; exit 1; }
+  cat "$out/render-${job#*:}.log"
+  rm "$out/render-${job#*:}.log"
+done
 echo
 echo "== Friction: the belt, sliding to rolling, the creep on an incline =="
 # docs/friction.md. The scenes' own steps (1e-4 s, RK4): --timestep auto takes
