@@ -35,7 +35,7 @@ void PrintSettings(const Simulation& sim) {
 // (EstimateTangential: kStepsPerContact steps per period); true when the
 // timestep is too coarse.
 bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                   double dt, bool automatic) {
+                   double dt, std::optional<double> accuracy) {
   const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   if (f.kind == FrictionKind::kNone) {
@@ -47,10 +47,10 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
              f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
              f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
   const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
-  if (automatic) {
-    // the auto timestep's own rule at its default accuracy (auto_timestep.h)
+  if (accuracy) {
+    // the auto timestep's own rule at that accuracy (auto_timestep.h)
     fmt::print("  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n", t.what,
-               t.Span(), 2 * t.duration / StepsPerContact(kDefaultAccuracy));
+               t.Span(), 2 * t.duration / StepsPerContact(*accuracy));
     return false;
   }
   const double step = t.timestep();
@@ -107,7 +107,7 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
           : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
                         "speed");
   fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
-  const bool tangential_coarse = PrintFriction(cm, worst, estimate, dt, automatic);
+  const bool tangential_coarse = PrintFriction(cm, worst, estimate, dt, accuracy);
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");

@@ -153,9 +153,10 @@ TEST(CliTest, CheckTakesTheAutoTimestep) {
   EXPECT_EQ(r.output.find("TOO COARSE"), std::string::npos) << r.output;
 }
 
-// The step of check's "--timestep auto: steps of X s" line.
+// The step of check's "  --timestep auto: steps of X s" line (the normal
+// contact's; the tangential line says it after "tangential: ...").
 double StepsOf(const std::string& output) {
-  const std::string key = "--timestep auto: steps of ";
+  const std::string key = "\n  --timestep auto: steps of ";
   const size_t at = output.find(key);
   return at == std::string::npos ? 0.0 : std::stod(output.substr(at + key.size()));
 }
