@@ -26,6 +26,9 @@ import sys
 GOAL_BOUNCING = 0.80    # bouncing ball, 3 s: hooks / MuJoCo's own contact
 GOAL_BOX_64 = 1.00      # 64 balls: hooks / MuJoCo's own contact
 GOAL_SWEEP_AUTO = 0.10  # sweep: auto timestep / fixed 1e-5 s
+# the goals of issue 12: the cost of coulomb friction on the 64-ball box
+GOAL_FRICTION_OVER_FRICTIONLESS = 1.30  # hooks with coulomb / hooks without friction
+GOAL_FRICTION_OVER_MUJOCO = 0.50        # hooks with coulomb / MuJoCo's own, condim 3
 
 BEGIN = "<!-- bench:begin -->"
 END = "<!-- bench:end -->"
@@ -116,6 +119,17 @@ def tables(entries):
     ]
     out.append(("Goals of issue 5 (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
                 [[q, fmt_ratio(r), f"<= {g:.2f}", verdict(r, g)] for q, r, g in goals]))
+
+    coulomb = per(entries, "BallBox/hooks/64", "steps")
+    friction_goals = [
+        ("64 balls, hooks with coulomb friction / the same hooks frictionless",
+         ratio(coulomb, per(entries, "BallBox/hooks_frictionless/64", "steps")),
+         GOAL_FRICTION_OVER_FRICTIONLESS),
+        ("64 balls, hooks with coulomb friction / MuJoCo's own contact (condim 3)",
+         box64, GOAL_FRICTION_OVER_MUJOCO),
+    ]
+    out.append(("Goals of issue 12 (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
+                [[q, fmt_ratio(r), f"<= {g:.2f}", verdict(r, g)] for q, r, g in friction_goals]))
 
     laws = [[name.split("/", 1)[1], f"{seconds(e) * 1e9:.1f} ns"]
             for name, e in entries.items() if name.startswith("Law/")]

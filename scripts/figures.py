@@ -77,22 +77,26 @@ _BALL = "mjcf/bouncing_ball.xml"
 _TABLE = "mjcf/ball_table.xml"
 COMMANDS = {
     "fig5": f"{_CL} compare {_BALL} --laws flores --restitution 0.9"
-            " --duration 10 --sample-rate 1000 --output-dir {out}/fig5",
+            " --duration 10 --sample-rate 1000 --timestep auto --accuracy 3e-5"
+            " --columns bodies,energy --output-dir {out}/fig5",
     "fig6": f"{_CL} compare {_BALL} --laws flores"
             " --restitution 1.0,0.8,0.6,0.4,0.2 --duration 0.44"
-            " --sample-rate 100000 --output-dir {out}/fig6",
+            " --sample-rate 100000 --timestep auto --accuracy 1e-4"
+            " --columns pairs --output-dir {out}/fig6",
     "fig7.csv": f"{_CL} restitution {_BALL} --laws all --dissipation 0.1"
-                " --restitution 0.05:1.0:0.05 --output {out}/fig7.csv",
+                " --restitution 0.05:1.0:0.05 --timestep auto"
+                " --output {out}/fig7.csv",
     "laws.csv": f"{_CL} laws --format csv --restitution 0.01:1.0:0.002"
                 " > {out}/laws.csv",
     "fig8": f"{_CL} compare {_TABLE} --laws hertz --duration 10"
-            " --output-dir {out}/fig8",
+            " --timestep auto --columns bodies --output-dir {out}/fig8",
     "fig9": f"{_CL} compare {_TABLE}"
             " --laws hunt-crossley,lankarani-nikravesh,flores"
-            " --restitution 0.9,0.6,0.3 --duration 10 --output-dir {out}/fig9",
+            " --restitution 0.9,0.6,0.3 --duration 10 --timestep auto"
+            " --columns bodies --output-dir {out}/fig9",
     "table-e0.6": f"{_CL} compare {_TABLE} --laws {','.join(LAWS)}"
-                  " --restitution 0.6"
-                  " --duration 10 --output-dir {out}/table-e0.6",
+                  " --restitution 0.6 --duration 10 --timestep auto"
+                  " --columns bodies --output-dir {out}/table-e0.6",
 }
 INPUTS = [
     "fig5/trajectories.csv",
@@ -342,7 +346,7 @@ def fig7_restitution(results):
     key_handles = [
         Line2D([], [], color="0.3", marker="o", mfc="none", ls="none",
                label="markers: simulated\n"
-                     "(MuJoCo RK4, gravity on, dt = 1e-5 s)"),
+                     "(MuJoCo RK4, gravity on, auto timestep)"),
         Line2D([], [], color="0.3", lw=1,
                label="lines: closed form\n(gravity neglected)"),
         Line2D([], [], color="k", ls="--", lw=1, label="$e_{post} = e$"),

@@ -80,8 +80,8 @@ def fig12_every_law(results, read_csv, closed_forms, paper_laws, save):
     axes[0, 0].set_ylabel("$e_{post}$ (first rebound)")
     axes[1, 0].set_ylabel("$|e_{post} - e|$")
     fig.suptitle("Companion to Fig. 7: every law of the table on the paper's "
-                 "ball. Markers: simulated (MuJoCo RK4, gravity on, dt = 1e-5 "
-                 "s); lines: closed form (gravity neglected); dashed: "
+                 "ball. Markers: simulated (MuJoCo RK4, gravity on, auto "
+                 "timestep); lines: closed form (gravity neglected); dashed: "
                  "$e_{post} = e$", fontsize=10)
     fig.tight_layout()
     save(fig, results, "fig12_every_law.png")

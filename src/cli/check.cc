@@ -35,7 +35,7 @@ void PrintSettings(const Simulation& sim) {
 // (EstimateTangential: kStepsPerContact steps per period); true when the
 // timestep is too coarse.
 bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                   double dt, bool automatic) {
+                   double dt, std::optional<double> accuracy) {
   const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   if (f.kind == FrictionKind::kNone) {
@@ -47,10 +47,10 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
              f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
              f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
   const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
-  if (automatic) {
-    // the auto timestep's own rule at its default accuracy (auto_timestep.h)
+  if (accuracy) {
+    // the auto timestep's own rule at that accuracy (auto_timestep.h)
     fmt::print("  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n", t.what,
-               t.Span(), 2 * t.duration / StepsPerContact(kDefaultAccuracy));
+               t.Span(), 2 * t.duration / StepsPerContact(*accuracy));
     return false;
   }
   const double step = t.timestep();
@@ -82,7 +82,8 @@ bool PrintResting(const LawParams& law, const ContactEstimate& estimate, double 
 
 // Tag t resolved, its estimated contact and the timestep it needs; true when
 // the timestep is too coarse for the estimate.
-bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, bool automatic) {
+bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
+              std::optional<double> accuracy) {
   const mjModel* m = sim->model();
   const ContactModel& cm = sim->contact_model();
   const double dt = m->opt.timestep;
@@ -127,8 +128,8 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, boo
                         "speed");
   fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
   const bool tangential_coarse =
-      PrintFriction(cm, worst, estimate, dt, automatic) |
-      PrintResting(law, estimate, mju_norm3(m->opt.gravity), dt, automatic);
+      PrintFriction(cm, worst, estimate, dt, accuracy) |
+      PrintResting(law, estimate, mju_norm3(m->opt.gravity), dt, accuracy.has_value());
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");
@@ -137,14 +138,14 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity, boo
   fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
              Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
              estimate.contact_duration);
-  if (automatic) {
-    // the auto timestep's own rule at its default accuracy (auto_timestep.h)
+  if (accuracy) {
+    // the auto timestep's own rule at that accuracy (auto_timestep.h)
     const double per_contact = Law(law.kind).family == LawFamily::kLinear
-                                   ? KelvinVoigtStepsPerContact(kDefaultAccuracy)
-                                   : StepsPerContact(kDefaultAccuracy);
+                                   ? KelvinVoigtStepsPerContact(*accuracy)
+                                   : StepsPerContact(*accuracy);
     fmt::print("  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
                "contact, accuracy {})\n",
-               estimate.contact_duration / per_contact, per_contact, kDefaultAccuracy);
+               estimate.contact_duration / per_contact, per_contact, *accuracy);
     return tangential_coarse;
   }
   const double steps = estimate.contact_duration / dt;
@@ -180,9 +181,12 @@ int CheckCommand(const CheckArgs& args) {
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
-  // auto: the contact steps are the auto timestep's; otherwise a fixed step
-  const bool automatic = args.timestep && *args.timestep == "auto";
-  if (args.timestep && !automatic) {
+  // auto (or --accuracy): the contact steps are the auto timestep's;
+  // otherwise a fixed step
+  std::optional<double> accuracy;
+  if (args.accuracy) accuracy = ParseAccuracy(*args.accuracy, args.timestep);
+  if (args.timestep && *args.timestep == "auto" && !accuracy) accuracy = kDefaultAccuracy;
+  if (args.timestep && !accuracy) {
     options.timestep = ParsePositive("--timestep", *args.timestep, "s");
   }
   std::optional<double> impact_velocity;
@@ -198,7 +202,7 @@ int CheckCommand(const CheckArgs& args) {
   int coarse = 0;
   const int tags = static_cast<int>(sim->contact_model().tags().size());
   fmt::print("\n{} contactlaw tag(s)\n", tags);
-  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, automatic);
+  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, accuracy);
   PrintDrives(*sim);
   if (coarse) {
     fmt::print("\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);

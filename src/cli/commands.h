@@ -34,6 +34,7 @@ struct CheckArgs {
   std::optional<std::string> friction;
   std::optional<std::string> mu;
   std::optional<std::string> timestep;
+  std::optional<std::string> accuracy;  // auto's accuracy; implies --timestep auto
   std::optional<std::string> impact_velocity;
 };
 
@@ -44,6 +45,7 @@ struct SimulateArgs {
   std::optional<std::string> restitution;
   std::optional<std::string> friction;
   std::optional<std::string> mu;
+  std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.

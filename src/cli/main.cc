@@ -175,6 +175,9 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
   AddFriction(c->check_cmd, &c->check.friction, &c->check.mu);
   c->check_cmd->add_option("--timestep", c->check.timestep,
                            "s (default: the scene's), or auto: the steps it would take");
+  AddNumber(c->check_cmd, "--accuracy", &c->check.accuracy,
+            "with --timestep auto (implied): the accuracy whose steps to show, in (0, 0.1] "
+            "(default 0.001)");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");
 
@@ -202,6 +205,10 @@ void AddViewers(CLI::App* app, Commands* c) {
       ->required();
   AddOverrides(c->simulate_cmd, &c->simulate.law, &c->simulate.restitution);
   AddFriction(c->simulate_cmd, &c->simulate.friction, &c->simulate.mu);
+  AddNumber(c->simulate_cmd, "--accuracy", &c->simulate.accuracy,
+            "step with the contact-aware timestep (README) at this relative error in a "
+            "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
+            "fixed timestep)");
 
   CLI::App* cmd = c->render_cmd = app->add_subcommand(
       "render", "the run drawn offscreen (no window): a video, a GIF or PNG files");

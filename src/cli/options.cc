@@ -75,6 +75,19 @@ ColumnGroups ParseColumns(std::string_view text) {
                              fmt::join(kColumnGroupNames, ", ")));
 }
 
+double ParseAccuracy(const std::string& text, const std::optional<std::string>& timestep) {
+  const std::optional<double> value = ParseNumber(text);
+  if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
+    Refuse("--accuracy", value ? fmt::format("{}", *value) : text,
+           fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
+  }
+  if (timestep && *timestep != "auto") {
+    Refuse("--accuracy", fmt::format("{}", *value),
+           fmt::format("goes with --timestep auto, not with the fixed --timestep={}", *timestep));
+  }
+  return *value;
+}
+
 CommonOptions ParseCommon(const CommonArgs& args) {
   CommonOptions options;
   options.duration = ParsePositive("--duration", args.duration, "s");
@@ -93,24 +106,13 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     Refuse("--max-timestep", value ? fmt::format("{}", *value) : *args.max_timestep,
            "goes with --timestep auto");
   }
-  if (args.accuracy) {
-    const std::optional<double> value = ParseNumber(*args.accuracy);
-    if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
-      Refuse("--accuracy", value ? fmt::format("{}", *value) : *args.accuracy,
-             fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
-    }
-    if (fixed) {
-      Refuse("--accuracy", fmt::format("{}", *value),
-             fmt::format("goes with --timestep auto, not with the fixed --timestep={}",
-                         *args.timestep));
-    }
-  }
+  if (args.accuracy) ParseAccuracy(*args.accuracy, args.timestep);
   if (auto_timestep) {
     options.auto_timestep.emplace();
     if (args.max_timestep) {
       options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
     }
-    if (args.accuracy) options.auto_timestep->accuracy = *ParseNumber(*args.accuracy);
+    if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy, args.timestep);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);

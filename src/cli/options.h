@@ -53,6 +53,10 @@ double ParsePositive(std::string_view option, std::string_view text, std::string
 // "bodies,joints,pairs,energy" or any of them: the trajectory's column groups.
 ColumnGroups ParseColumns(std::string_view text);
 
+// --accuracy: a number in (0, kMaxAccuracy], or Refuse; refused too beside a
+// fixed --timestep (timestep: the --timestep given, if any).
+double ParseAccuracy(const std::string& text, const std::optional<std::string>& timestep);
+
 // Validates the common options (overrides but --dissipation left empty; no
 // timestep for auto).
 CommonOptions ParseCommon(const CommonArgs& args);

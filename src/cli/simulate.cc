@@ -1,10 +1,11 @@
 // Copyright contactlaws authors.
 //
-// contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]:
-// MuJoCo's own viewer, mujoco-simulate, with libcontactlaws_plugin.so
-// preloaded and the overrides in its environment. The scene's tags and the
-// overrides are checked first, as run checks them, so a refusal is the same
-// line and no window opens.
+// contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]
+// [--accuracy TOL]: MuJoCo's own viewer, mujoco-simulate, with
+// libcontactlaws_plugin.so preloaded and the overrides in its environment
+// (--accuracy as CONTACTLAWS_ACCURACY: the plugin sets the auto timestep
+// before each step). The scene's tags and the overrides are checked first,
+// as run checks them, so a refusal is the same line and no window opens.
 
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/options.h"
 #include "cli/programs.h"
 
 namespace contactlaws::cli {
@@ -34,6 +36,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SimulationOptions options;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
+  if (args.accuracy) ParseAccuracy(*args.accuracy, std::nullopt);
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
   const std::string plugin = FindPlugin();
@@ -45,6 +48,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SetVariable("CONTACTLAWS_RESTITUTION", args.restitution);
   SetVariable("CONTACTLAWS_FRICTION", args.friction);
   SetVariable("CONTACTLAWS_MU", args.mu);
+  SetVariable("CONTACTLAWS_ACCURACY", args.accuracy);
   const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};
   execv(viewer.c_str(), const_cast<char* const*>(argv));
   throw Error(fmt::format("simulate: could not start {}", viewer));

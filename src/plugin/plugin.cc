@@ -81,6 +81,17 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
       result.overrides.mu = *mu;
     }
   }
+  if (const char* text = std::getenv(kAccuracyVariable)) {
+    const std::optional<double> tol = ParseNumber(text);
+    if (!tol) {
+      result.refusal = fmt::format("{}={} is not a finite number", kAccuracyVariable, text);
+    } else if (!(*tol > 0 && *tol <= kMaxAccuracy)) {
+      result.refusal = fmt::format("{}={} must be in (0, {}]", kAccuracyVariable, *tol,
+                                   kMaxAccuracy);
+    } else {
+      result.accuracy = *tol;
+    }
+  }
   return result;
 }
 
@@ -134,7 +145,13 @@ void Plugin::Made(const mjModel* m, mjData* d) {
   std::lock_guard lock(mutex_);
   const ModelEntry& entry = Resolve(m);
   if (!entry.laws) return;
-  data_[d] = std::make_unique<ManagedData>(*entry.laws, d);
+  auto managed = std::make_unique<ManagedData>(*entry.laws, d);
+  if (environment_->accuracy) {
+    AutoTimestepOptions options;
+    options.accuracy = *environment_->accuracy;
+    managed->auto_step.emplace(managed->contacts, options);
+  }
+  data_[d] = std::move(managed);
 }
 
 void Plugin::Deleting(const mjData* d) {

@@ -23,6 +23,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "contactlaws/auto_timestep.h"
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/visible_contacts.h"
@@ -36,11 +37,23 @@ inline constexpr const char* kLawVariable = "CONTACTLAWS_LAW";
 inline constexpr const char* kRestitutionVariable = "CONTACTLAWS_RESTITUTION";
 inline constexpr const char* kFrictionVariable = "CONTACTLAWS_FRICTION";
 inline constexpr const char* kMuVariable = "CONTACTLAWS_MU";
+// `--accuracy TOL` of run: each managed mjData steps with the contact-aware
+// timestep (AutoTimestep), which the plugin writes into the model's
+// opt.timestep before each of that data's steps. Without it the model's own
+// timestep is left alone.
+inline constexpr const char* kAccuracyVariable = "CONTACTLAWS_ACCURACY";
+
+// The longest step the plugin's auto timestep takes, s: a frame of a 60 Hz
+// display. A viewer draws the state between steps, and a free flight's step
+// (up to the time to close half a gap, 0.3 s for the paper's drop) would
+// freeze the picture and then jump.
+inline constexpr double kPluginMaxStep = 1.0 / 60;
 
 // The overrides in the environment, or the one-line refusal of a bad value
 // (named as `VARIABLE=VALUE requirement`, as the options are).
 struct EnvironmentOverrides {
   Overrides overrides;
+  std::optional<double> accuracy;  // CONTACTLAWS_ACCURACY: step with AutoTimestep
   std::optional<std::string> refusal;
 };
 EnvironmentOverrides ReadEnvironmentOverrides();
@@ -52,6 +65,7 @@ bool HasTags(const mjModel* m);
 struct ManagedData {
   ManagedData(const ContactModel& model, mjData* d) : contacts(model, d) {}
   ContactData contacts;
+  std::optional<AutoTimestep> auto_step;  // with CONTACTLAWS_ACCURACY
   VisibleContactsOverflow overflow;
   bool divergence_reported = false;
 };

@@ -8,7 +8,8 @@
 //   mj_makeData               a ContactData for the data of a tagged model
 //   mj_deleteData             the data's ContactData removed first
 //   mj_deleteModel            the model's tags (and any data left) removed
-//   mj_step                   BeforeStep; mj_step; AfterStep; the tagged
+//   mj_step                   the auto timestep (CONTACTLAWS_ACCURACY);
+//                             BeforeStep; mj_step; AfterStep; the tagged
 //                             contact points appended to d->contact
 //   mj_step1, mj_step2        the same step split in two (BeforeStep before
 //                             mj_step1, AfterStep after mj_step2)
@@ -64,6 +65,16 @@ ManagedData* Managed(const Nesting& nesting, const mjData* d) {
   return nesting.outermost() ? Plugin::Get().Find(d) : nullptr;
 }
 
+// Before a step of managed: with CONTACTLAWS_ACCURACY, the auto timestep
+// written into the model (the data's own model: MuJoCo made it writable; the
+// program passes it as const).
+void Begin(const mjModel* m, ManagedData* managed) {
+  if (managed->auto_step) {
+    const_cast<mjModel*>(m)->opt.timestep = managed->auto_step->Next(kPluginMaxStep);
+  }
+  managed->contacts.BeforeStep();
+}
+
 void Finish(ManagedData* managed) {
   managed->contacts.AfterStep();  // lists the tagged points in d->contact too
   Plugin::Get().ReportDivergence(managed);
@@ -72,6 +83,7 @@ void Finish(ManagedData* managed) {
 }  // namespace
 }  // namespace contactlaws::plugin
 
+using contactlaws::plugin::Begin;
 using contactlaws::plugin::Finish;
 using contactlaws::plugin::Managed;
 using contactlaws::plugin::ManagedData;
@@ -123,7 +135,7 @@ void mj_step(const mjModel* m, mjData* d) {
   CONTACTLAWS_REAL(mj_step);
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
-  if (managed) managed->contacts.BeforeStep();
+  if (managed) Begin(m, managed);
   real(m, d);
   if (managed) Finish(managed);
 }
@@ -132,7 +144,7 @@ void mj_step1(const mjModel* m, mjData* d) {
   CONTACTLAWS_REAL(mj_step1);
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
-  if (managed) managed->contacts.BeforeStep();
+  if (managed) Begin(m, managed);
   real(m, d);
 }
 

@@ -11,7 +11,11 @@
 //     free_flight_hooks            the same model, gravity off, the ball rising at
 //     free_flight_mujoco           1 m/s from 1 m: it never touches the floor
 //   BallBox/<hooks|mujoco>/<n>     the many-ball scene (ball_box.h) of n = 8, 64, 512
-//                                  balls, from its launch, a fixed stretch
+//                                  balls, from its launch, a fixed stretch; hooks with
+//                                  the tags' default friction (coulomb, mu = 1 from
+//                                  the geoms), MuJoCo's own contact at condim 3
+//   BallBox/hooks_frictionless/64  the same hooks with --friction none (issue 12's
+//                                  cost of friction)
 //   Sweep/fixed, Sweep/auto        the `restitution` command's runs (drop until the
 //                                  first contact episode ends) for a subset of
 //                                  (law, e), at the scene's fixed 1e-5 s
@@ -40,6 +44,9 @@
 
 namespace contactlaws::bench {
 namespace {
+
+// The box whose cost of friction issue 12 bounds (mjcf/ball_box_64.xml).
+constexpr int kFrictionBalls = 64;
 
 // Simulated stretches per iteration (s); --smoke divides them.
 struct Stretches {
@@ -118,7 +125,7 @@ void BM_Law(benchmark::State& state, LawKind kind) {
 // ---------------------------------------------------------------------------
 // The bouncing ball.
 
-enum class Contact { kHooks, kMujoco };
+enum class Contact { kHooks, kHooksFrictionless, kMujoco };
 
 struct BouncingBallCase {
   Contact contact;
@@ -159,10 +166,12 @@ void BM_BouncingBall(benchmark::State& state, BouncingBallCase c, double duratio
 void BM_BallBox(benchmark::State& state, Contact contact, int balls, double duration) {
   const std::string name = fmt::format("ball_box_{}.xml", balls);
   UniqueModel m = LoadModelString(BallBoxXml(balls), name);
-  ContactModel laws(m.get(), name);
+  Overrides overrides;
+  if (contact == Contact::kHooksFrictionless) overrides.friction = FrictionKind::kNone;
+  ContactModel laws(m.get(), name, overrides);
   UniqueData d(mj_makeData(m.get()));
   std::unique_ptr<ContactData> contacts;
-  if (contact == Contact::kHooks) contacts = std::make_unique<ContactData>(laws, d.get());
+  if (contact != Contact::kMujoco) contacts = std::make_unique<ContactData>(laws, d.get());
 
   // the launch, from the generator (the keyframe, where MuJoCo could read one,
   // holds the same numbers)
@@ -265,6 +274,10 @@ void RegisterAll(const Stretches& s) {
           ->Unit(benchmark::kMillisecond);
     }
   }
+  benchmark::RegisterBenchmark(
+      fmt::format("BallBox/hooks_frictionless/{}", kFrictionBalls).c_str(), BM_BallBox,
+      Contact::kHooksFrictionless, kFrictionBalls, s.ball_box)
+      ->Unit(benchmark::kMillisecond);
 
   benchmark::RegisterBenchmark("Sweep/fixed", BM_Sweep, s, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("Sweep/auto", BM_Sweep, s, true)->Unit(benchmark::kMillisecond);

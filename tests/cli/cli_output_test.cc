@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_test_util.h"
+#include "contactlaws/auto_timestep.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {
@@ -184,6 +185,34 @@ TEST(CliOutputTest, AContactThatWouldHangAtRestIsWarnedBeforeTheRunAndInCheck) {
   EXPECT_EQ(RunCli("run " + raised + " --duration 0.001").output.find("at rest"), std::string::npos);
   const Result fine = RunCli("check " + raised);
   EXPECT_NE(fine.output.find("at rest: damping lag 0.000159 s"), std::string::npos) << fine.output;
+}
+
+// The step of check's "  --timestep auto: steps of X s" line (the normal
+// contact's; the tangential line says it after "tangential: ...").
+double StepsOf(const std::string& output) {
+  const std::string key = "\n  --timestep auto: steps of ";
+  const size_t at = output.find(key);
+  return at == std::string::npos ? 0.0 : std::stod(output.substr(at + key.size()));
+}
+
+// check prints the step to 3 significant digits: each is within 5e-3 of
+// itself, a ratio of two within 1e-2.
+constexpr double kPrintedDigits = 1e-2;
+
+// check --accuracy TOL (auto implied) shows the steps of that accuracy: the
+// rule's steps per contact, and the elastic contact's duration over them.
+TEST(CliTest, CheckTakesTheAccuracy) {
+  constexpr double kTol = 1e-5;
+  const Result r = RunCli(fmt::format("check {} --accuracy {}", kBall, kTol));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Result coarse = RunCli("check " + kBall + " --timestep auto");
+  const double per_contact = StepsPerContact(kTol);
+  EXPECT_NE(r.output.find(fmt::format("({:.0f} per contact, accuracy {})", per_contact, kTol)),
+            std::string::npos)
+      << r.output;
+  // the same contact as at the default accuracy, in more steps
+  const double ratio = StepsOf(coarse.output) / StepsOf(r.output);
+  EXPECT_NEAR(ratio, per_contact / StepsPerContact(kDefaultAccuracy), kPrintedDigits * ratio);
 }
 
 }  // namespace

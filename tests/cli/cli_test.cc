@@ -60,6 +60,11 @@ TEST(CliTest, RefusalsExitTwoWithOneLine) {
       {"run " + kBall + " --timestep 1e-5 --accuracy 1e-4",
        "contactlaws: --accuracy=0.0001 goes with --timestep auto, not with the fixed "
        "--timestep=1e-5"},
+      {"check " + kBall + " --timestep 1e-5 --accuracy 1e-4",
+       "contactlaws: --accuracy=0.0001 goes with --timestep auto, not with the fixed "
+       "--timestep=1e-5"},
+      {"check " + kBall + " --accuracy 0.5",
+       "contactlaws: --accuracy=0.5 must be a number in (0, 0.1] (relative error)"},
       {"render " + kBall + " --output x.gif --timestep 1e-4 --accuracy 1e-3",
        "contactlaws: --accuracy=0.001 goes with --timestep auto, not with the fixed "
        "--timestep=1e-4"},

@@ -12,7 +12,8 @@
    One line per data: its rebound (speed after / speed before), the most
    contacts d->contact held after a step with exclude = 1 (in gap: what the
    plugin appends to show the tagged points) and with exclude = 0 (MuJoCo's
-   own), and the final height and vertical speed to 17 digits. */
+   own), the steps it took, and the final height and vertical speed to 17
+   digits. */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +29,7 @@ typedef struct {
   double speed_in;
   int max_gap_contacts;
   int max_solver_contacts;
+  int steps;
   int done;
 } Run;
 
@@ -48,6 +50,7 @@ static void Start(Run* run, const char* name, mjModel* m, double speed) {
   run->speed_in = speed;
   run->max_gap_contacts = 0;
   run->max_solver_contacts = 0;
+  run->steps = 0;
   run->done = 0;
 }
 
@@ -57,6 +60,7 @@ static void Step(const mjModel* m, Run* run) {
   double radius = m->geom_size[3 * 1];
   int gap = 0, solver = 0;
   mj_step(m, d);
+  ++run->steps;
   for (int i = 0; i < d->ncon; ++i) {
     if (d->contact[i].exclude == 1) ++gap;
     if (d->contact[i].exclude == 0) ++solver;
@@ -92,9 +96,10 @@ int main(int argc, char** argv) {
   }
   for (int k = 0; k < 3; ++k) {
     mjData* d = runs[k].d;
-    printf("%s rebound=%.9f gap_contacts=%d solver_contacts=%d done=%d z=%.17g vz=%.17g\n",
+    printf("%s rebound=%.9f gap_contacts=%d solver_contacts=%d steps=%d done=%d z=%.17g "
+           "vz=%.17g\n",
            runs[k].name, d->qvel[2] / runs[k].speed_in, runs[k].max_gap_contacts,
-           runs[k].max_solver_contacts, runs[k].done, d->qpos[2], d->qvel[2]);
+           runs[k].max_solver_contacts, runs[k].steps, runs[k].done, d->qpos[2], d->qvel[2]);
     mj_deleteData(d);
   }
   mj_deleteModel(tagged);

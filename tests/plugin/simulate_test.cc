@@ -70,5 +70,15 @@ TEST(SimulateTest, RefusedOverrideIsRunsLineBeforeAnyWindow) {
   EXPECT_EQ(mu.err, "contactlaws: --mu=-1 must be >= 0\n");
 }
 
+TEST(SimulateTest, RefusedAccuracyIsRunsLineBeforeAnyWindow) {
+  const ProgramResult r = RunProgram(
+      "PATH=/nonexistent", fmt::format("{} simulate {} --accuracy 0.5", CONTACTLAWS_CLI, kBall));
+  const ProgramResult run = RunProgram(
+      "", fmt::format("{} run {} --accuracy 0.5 --duration 1e-3", CONTACTLAWS_CLI, kBall));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "contactlaws: --accuracy=0.5 must be a number in (0, 0.1] (relative error)\n");
+  EXPECT_EQ(r.err, run.err);
+}
+
 }  // namespace
 }  // namespace contactlaws
