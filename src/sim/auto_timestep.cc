@@ -112,6 +112,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
   }
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
+  settled_rule_ = cm.model()->opt.integrator == mjINT_RK4;
 }
 
 double AutoTimestep::FineStep(int pair, double v) const {
@@ -123,6 +124,13 @@ double AutoTimestep::FineStep(int pair, double v) const {
                            ? options_.kelvin_voigt_steps_per_contact
                            : options_.steps_per_contact;
   return duration / steps;
+}
+
+double AutoTimestep::SettledStep(int pair) const {
+  const double floor = contacts_.model().pairs()[pair].params.min_impact_velocity;
+  const double duration =
+      duration_at_unit_speed_[pair] * std::pow(floor, duration_speed_exponent_[pair]);
+  return duration / kSettledStepsPerContact;
 }
 
 double AutoTimestep::FlightStep() const {
@@ -167,11 +175,18 @@ ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
 }
 
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
-  const double fine = FineStep(e.pair, e.impact_velocity);
+  const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
   const double tangential = TangentialStep(e);
+  // a settled contact (it touched barely faster than the law's floor of v0
+  // and moves no faster than it): no collision to resolve, only a spring to
+  // keep stable under RK4 (rule 5 keeps its damper)
+  if (settled_rule_ && e.impact_velocity <= kSettledTouchFactor * floor &&
+      std::abs(e.depth_rate) <= floor) {
+    return std::min(SettledStep(e.pair), tangential);
+  }
+  const double fine = FineStep(e.pair, e.impact_velocity);
   // a separation slower than the law's floor of v0 (a resting contact's
   // chatter) is left to the fine step
-  const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
   if (!(-e.depth_rate > floor)) return std::min(fine, tangential);
   const GeomPair& pair = contacts_.model().pairs()[e.pair];
   const double closing = GravityClosingAcceleration(contacts_.model(), pair, e.normal);

@@ -236,7 +236,8 @@ TEST(AutoTimestepTest, TheStickSpringIsResolvedAsTheNormalContactIs) {
 // floor (1e-3 m/s), and flores e = 0.2 (a = 6.4) makes them a damper of lag
 // m v0 / (a m g) = 1.6e-5 s. The auto step keeps to the lag and the box
 // rests on its weight; a fixed step of 6e-5 s (3.8 lags) hangs it.
-double RestingForce(std::optional<double> fixed_step) {
+double RestingForce(std::optional<double> fixed_step, long* steps = nullptr,
+                    const std::string& law = "law=flores restitution=0.2") {
   constexpr double kDepth = 3.918e-5;  // m: each corner carries m g / 4 at K = 1e7
   const std::string xml = fmt::format(R"(<mujoco>
   <option timestep="{}" integrator="RK4"/>
@@ -245,10 +246,10 @@ double RestingForce(std::optional<double> fixed_step) {
     <body name="box" pos="0 0 {}"><freejoint/>
       <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
   </worldbody>
-  <custom><text name="contactlaw:box" data="geom1=box geom2=floor law=flores restitution=0.2
+  <custom><text name="contactlaw:box" data="geom1=box geom2=floor {}
     stiffness=1e7 friction=none"/></custom>
 </mujoco>)",
-                                      fixed_step.value_or(1e-3), 0.05 - kDepth);
+                                      fixed_step.value_or(1e-3), 0.05 - kDepth, law);
   const Scene scene("resting.xml", LoadModelString(xml, "resting.xml"));
   std::unique_ptr<Simulation> sim = scene.Make({});
   std::optional<AutoTimestep> stepper;
@@ -258,6 +259,7 @@ double RestingForce(std::optional<double> fixed_step) {
   while (sim->time() < kEnd - 1e-9 && !sim->contacts().divergence()) {
     sim->Step(stepper ? stepper->Next(kEnd - sim->time()) : *fixed_step);
   }
+  if (steps && stepper) *steps = stepper->steps();
   double force = 0;
   for (const auto& e : sim->contacts().latest()) force += e.force;
   return force;
@@ -269,6 +271,23 @@ TEST(AutoTimestepTest, AContactSettlingAtTheV0FloorIsSteppedWithinItsDampersLag)
   EXPECT_NEAR(RestingForce(std::nullopt), kWeight, kRestTolerance * kWeight);
   // the rule's need: held to 3.8 lags, the contact does not carry the weight
   EXPECT_GT(std::abs(RestingForce(6e-5) - kWeight), 0.1 * kWeight);
+}
+
+// Rule 6: a settled contact takes kSettledStepsPerContact steps per elastic
+// contact duration at the floor speed, not the accuracy's 50, and rests
+// on its weight all the same (a weakly damped law: hunt-crossley e = 0.9;
+// an elastic one: hertz).
+TEST(AutoTimestepTest, ASettledContactIsSteppedForStabilityNotForACollision) {
+  constexpr double kWeight = 9.81;         // N
+  constexpr double kRestTolerance = 1e-6;  // relative: at rest, the force is the weight
+  for (const char* law : {"law=hunt-crossley restitution=0.9", "law=hertz"}) {
+    long steps = 0;
+    EXPECT_NEAR(RestingForce(std::nullopt, &steps, law), kWeight, kRestTolerance * kWeight) << law;
+    // 0.5 s: measured 148 steps (hertz) and 736 (hunt-crossley: its damper's
+    // lag binds, rule 5); at the accuracy's 50 per contact, 1232 each
+    EXPECT_LT(steps, 1000) << law;
+    std::printf("settled %s: %ld steps in 0.5 s\n", law, steps);
+  }
 }
 
 }  // namespace
