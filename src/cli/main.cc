@@ -20,6 +20,7 @@
 
 #include "cli/commands.h"
 #include "contactlaws/contactlaws.h"
+#include "scene/model_cache.h"
 #include "sim/arena.h"
 
 namespace contactlaws::cli {
@@ -272,6 +273,8 @@ int Main(int argc, char** argv) {
   UseHugePagesForLargeAllocations();  // the compiler's arena: start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
+  // compiled scenes kept between runs (after the warning handler: it wraps it)
+  UseModelCache(ModelCacheDirectoryFromEnvironment());
   InstallStopHandler();
   const int status = Dispatch(commands);
   ReportOtherMujocoWarnings();

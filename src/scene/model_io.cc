@@ -5,10 +5,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
+#include "scene/model_cache.h"
 
 namespace contactlaws {
 
@@ -24,6 +26,23 @@ std::string OneLine(const char* text) {
   return s;
 }
 
+// MuJoCo's compile of path; *clean: without an error message or warning.
+UniqueModel Compile(const std::string& path, bool* clean) {
+  const long warnings = model_cache::WarningsSeen();
+  char error[1000] = "";
+  UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
+  if (!m) {
+    throw Error(fmt::format("{}: {}", path, error[0] ? OneLine(error) : "MuJoCo could not load it"));
+  }
+  *clean = error[0] == 0 && model_cache::WarningsSeen() == warnings;
+  return m;
+}
+
+std::string ReadBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 }  // namespace
 
 UniqueModel LoadModelFile(const std::string& path) {
@@ -35,11 +54,21 @@ UniqueModel LoadModelFile(const std::string& path) {
     throw Error(fmt::format("{}: is a directory, not an MJCF file", path));
   }
   if (!std::ifstream(path)) throw Error(fmt::format("{}: cannot be read", path));
-  char error[1000] = "";
-  UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
-  if (!m) {
-    throw Error(fmt::format("{}: {}", path, error[0] ? OneLine(error) : "MuJoCo could not load it"));
+  bool clean = false;
+  if (!model_cache::On()) {
+    model_cache::SetOutcome(ModelCacheOutcome::kOff);
+    return Compile(path, &clean);
   }
+  // the compiled scene (scene/model_cache.h), else MuJoCo's compile, saved
+  // when clean and made from the bytes of the key
+  const std::string xml = ReadBytes(path);
+  if (UniqueModel cached = model_cache::Load(xml)) {
+    model_cache::SetOutcome(ModelCacheOutcome::kLoaded);
+    return cached;
+  }
+  UniqueModel m = Compile(path, &clean);
+  const bool saved = clean && ReadBytes(path) == xml && model_cache::Save(xml, m.get());
+  model_cache::SetOutcome(saved ? ModelCacheOutcome::kSaved : ModelCacheOutcome::kNotCached);
   return m;
 }
 

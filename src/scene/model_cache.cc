@@ -1,0 +1,253 @@
+// Copyright contactlaws authors.
+
+#include "scene/model_cache.h"
+
+#include <fcntl.h>
+#include <gnu/libc-version.h>
+#include <link.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace contactlaws {
+namespace {
+
+// The first line of every key: a new layout of the entries changes it.
+constexpr char kFormat[] = "contactlaws model cache 1\n";
+// The name MuJoCo reads a payload under from the virtual file system.
+constexpr char kPayloadName[] = "cached.mjb";
+
+struct CacheState {
+  std::optional<std::string> directory;
+  void (*forward_warning)(const char*) = nullptr;
+};
+CacheState& State() {
+  static CacheState state;
+  return state;
+}
+thread_local long warnings_seen = 0;
+thread_local ModelCacheOutcome last_outcome = ModelCacheOutcome::kOff;
+
+// Counts MuJoCo's warnings on this thread, then hands them on.
+extern "C" void SeeWarning(const char* text) {
+  ++warnings_seen;
+  State().forward_warning(text);
+}
+
+// FNV-1a, 64 bits: names entries (the key itself decides a hit) and checks
+// payloads against damage.
+uint64_t Fnv1a(const std::string& bytes) {
+  uint64_t hash = 14695981039346656037ull;
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+// Every shared library of the process: path, size and modification time.
+std::string LoadedLibraries() {
+  std::vector<std::string> lines;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        struct stat st;
+        if (info->dlpi_name && info->dlpi_name[0] && stat(info->dlpi_name, &st) == 0) {
+          static_cast<std::vector<std::string>*>(out)->push_back(
+              fmt::format("library {} {} {}.{:09}\n", info->dlpi_name, st.st_size,
+                          st.st_mtim.tv_sec, st.st_mtim.tv_nsec));
+        }
+        return 0;
+      },
+      &lines);
+  std::sort(lines.begin(), lines.end());
+  std::string all;
+  for (const std::string& line : lines) all += line;
+  return all;
+}
+
+// The CPU features the C library's math functions choose their code by.
+std::string CpuFeatures() {
+  std::string features = "cpu";
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("fma")) features += " fma";
+  if (__builtin_cpu_supports("avx2")) features += " avx2";
+  if (__builtin_cpu_supports("avx512f")) features += " avx512f";
+#else
+  features += " unknown";
+#endif
+  return features + "\n";
+}
+
+std::string Key(const std::string& xml) {
+  return fmt::format("{}contactlaws {}\nmujoco {} mjtNum {}\nglibc {}\n{}{}xml {}\n", kFormat,
+                     LibraryVersion(), mj_version(), sizeof(mjtNum), gnu_get_libc_version(),
+                     CpuFeatures(), LoadedLibraries(), xml.size()) +
+         xml;
+}
+
+std::string EntryPath(const std::string& key) {
+  return fmt::format("{}/{:016x}.entry", *State().directory, Fnv1a(key));
+}
+
+bool ReadWhole(const std::string& path, std::string* bytes) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st;
+  bool ok = fstat(fd, &st) == 0;
+  if (ok) {
+    bytes->resize(static_cast<size_t>(st.st_size));
+    size_t done = 0;
+    while (ok && done < bytes->size()) {
+      const ssize_t n = read(fd, bytes->data() + done, bytes->size() - done);
+      ok = n > 0;
+      if (ok) done += static_cast<size_t>(n);
+    }
+  }
+  close(fd);
+  return ok;
+}
+
+// An entry: the key's length and the key, the payload's length and checksum,
+// the payload (an .mjb file).
+void PutLength(std::string* out, uint64_t n) { out->append(reinterpret_cast<char*>(&n), sizeof n); }
+
+bool TakeLength(const std::string& in, size_t* at, uint64_t* n) {
+  if (in.size() - *at < sizeof *n) return false;
+  std::memcpy(n, in.data() + *at, sizeof *n);
+  *at += sizeof *n;
+  return true;
+}
+
+// The payload of entry when its key is key and the payload is whole.
+std::optional<std::string> Payload(const std::string& entry, const std::string& key) {
+  size_t at = 0;
+  uint64_t key_size = 0;
+  uint64_t payload_size = 0;
+  uint64_t checksum = 0;
+  if (!TakeLength(entry, &at, &key_size) || key_size != key.size() ||
+      entry.compare(at, key.size(), key) != 0) {
+    return std::nullopt;
+  }
+  at += key.size();
+  if (!TakeLength(entry, &at, &payload_size) || !TakeLength(entry, &at, &checksum) ||
+      payload_size != entry.size() - at) {
+    return std::nullopt;
+  }
+  std::string payload = entry.substr(at);
+  if (Fnv1a(payload) != checksum) return std::nullopt;
+  return payload;
+}
+
+// MuJoCo reads a model from memory through its virtual file system; the
+// system's 2 MB of names is not cleared (mj_defaultVFS would): one entry is
+// filled in.
+UniqueModel LoadFromMemory(std::string* payload) {
+  std::unique_ptr<mjVFS> vfs(new mjVFS);
+  vfs->nfile = 1;
+  std::strcpy(vfs->filename[0], kPayloadName);
+  vfs->filesize[0] = static_cast<int>(payload->size());
+  vfs->filedata[0] = payload->data();
+  return UniqueModel(mj_loadModel(kPayloadName, vfs.get()));
+}
+
+bool MentionsFiles(const std::string& xml) {
+  std::string lower(xml.size(), ' ');
+  std::transform(xml.begin(), xml.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower.find("file") != std::string::npos;
+}
+
+bool HasSensorNoise(const mjModel* m) {
+  return std::any_of(m->sensor_noise, m->sensor_noise + m->nsensor,
+                     [](mjtNum noise) { return noise != 0; });
+}
+
+// Writes bytes to path through a temporary file renamed over it.
+bool WriteAtomically(const std::string& path, const std::string& bytes) {
+  std::error_code code;
+  std::filesystem::create_directories(*State().directory, code);
+  std::string temporary = *State().directory + "/.entry-XXXXXX";
+  const int fd = mkstemp(temporary.data());
+  if (fd < 0) return false;
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
+    if (n <= 0) break;
+    done += static_cast<size_t>(n);
+  }
+  const bool whole = close(fd) == 0 && done == bytes.size();
+  if (whole && rename(temporary.c_str(), path.c_str()) == 0) return true;
+  unlink(temporary.c_str());
+  return false;
+}
+
+}  // namespace
+
+std::optional<std::string> ModelCacheDirectoryFromEnvironment() {
+  const char* setting = std::getenv("CONTACTLAWS_MODEL_CACHE");
+  if (setting && (std::strcmp(setting, "off") == 0 || std::strcmp(setting, "0") == 0)) {
+    return std::nullopt;
+  }
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && xdg[0] == '/') return std::string(xdg) + "/contactlaws";
+  const char* home = std::getenv("HOME");
+  if (home && home[0] == '/') return std::string(home) + "/.cache/contactlaws";
+  return std::nullopt;
+}
+
+void UseModelCache(std::optional<std::string> directory) {
+  CacheState& state = State();
+  if (directory && mju_user_warning != SeeWarning) {
+    if (!mju_user_warning) directory.reset();  // its warnings would not be seen
+    state.forward_warning = mju_user_warning;
+    if (directory) mju_user_warning = SeeWarning;
+  }
+  state.directory = std::move(directory);
+}
+
+ModelCacheOutcome LastModelCacheOutcome() { return last_outcome; }
+
+namespace model_cache {
+
+bool On() { return State().directory.has_value(); }
+
+long WarningsSeen() { return warnings_seen; }
+
+void SetOutcome(ModelCacheOutcome outcome) { last_outcome = outcome; }
+
+UniqueModel Load(const std::string& xml) {
+  if (MentionsFiles(xml)) return nullptr;
+  const std::string key = Key(xml);
+  std::string entry;
+  if (!ReadWhole(EntryPath(key), &entry)) return nullptr;
+  std::optional<std::string> payload = Payload(entry, key);
+  if (!payload) return nullptr;
+  return LoadFromMemory(&*payload);
+}
+
+bool Save(const std::string& xml, const mjModel* m) {
+  if (MentionsFiles(xml) || HasSensorNoise(m)) return false;
+  std::string payload(static_cast<size_t>(mj_sizeModel(m)), '\0');
+  mj_saveModel(m, nullptr, payload.data(), static_cast<int>(payload.size()));
+  const std::string key = Key(xml);
+  std::string entry;
+  PutLength(&entry, key.size());
+  entry += key;
+  PutLength(&entry, payload.size());
+  PutLength(&entry, Fnv1a(payload));
+  entry += payload;
+  return WriteAtomically(EntryPath(key), entry);
+}
+
+}  // namespace model_cache
+}  // namespace contactlaws
