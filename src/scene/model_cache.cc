@@ -7,6 +7,9 @@
 #include <link.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#if defined(__x86_64__) && __has_include(<sys/platform/x86.h>)
+#include <sys/platform/x86.h>
+#endif
 
 #include <algorithm>
 #include <cctype>
@@ -74,14 +77,14 @@ std::string LoadedLibraries() {
   return all;
 }
 
-// The CPU features the C library's math functions choose their code by.
+// The CPU features the C library's math functions choose their code by, as
+// the C library found them (no cpuid of our own: slow in a virtual machine).
 std::string CpuFeatures() {
   std::string features = "cpu";
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("fma")) features += " fma";
-  if (__builtin_cpu_supports("avx2")) features += " avx2";
-  if (__builtin_cpu_supports("avx512f")) features += " avx512f";
+#if defined(__x86_64__) && __has_include(<sys/platform/x86.h>)
+  if (CPU_FEATURE_ACTIVE(FMA)) features += " fma";
+  if (CPU_FEATURE_ACTIVE(AVX2)) features += " avx2";
+  if (CPU_FEATURE_ACTIVE(AVX512F)) features += " avx512f";
 #else
   features += " unknown";
 #endif
