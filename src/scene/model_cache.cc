@@ -102,24 +102,6 @@ std::string EntryPath(const std::string& key) {
   return fmt::format("{}/{:016x}.entry", *State().directory, Fnv1a(key));
 }
 
-bool ReadWhole(const std::string& path, std::string* bytes) {
-  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  struct stat st;
-  bool ok = fstat(fd, &st) == 0;
-  if (ok) {
-    bytes->resize(static_cast<size_t>(st.st_size));
-    size_t done = 0;
-    while (ok && done < bytes->size()) {
-      const ssize_t n = read(fd, bytes->data() + done, bytes->size() - done);
-      ok = n > 0;
-      if (ok) done += static_cast<size_t>(n);
-    }
-  }
-  close(fd);
-  return ok;
-}
-
 // An entry: the key's length and the key, the payload's length and checksum,
 // the payload (an .mjb file).
 void PutLength(std::string* out, uint64_t n) { out->append(reinterpret_cast<char*>(&n), sizeof n); }
@@ -224,6 +206,27 @@ namespace model_cache {
 
 bool On() { return State().directory.has_value(); }
 
+bool ReadAll(int fd, std::string* bytes) {
+  struct stat st;
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return false;
+  bytes->resize(static_cast<size_t>(st.st_size));
+  size_t done = 0;
+  while (done < bytes->size()) {
+    const ssize_t n = read(fd, bytes->data() + done, bytes->size() - done);
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+bool ReadFile(const std::string& path, std::string* bytes) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ReadAll(fd, bytes);
+  close(fd);
+  return ok;
+}
+
 long WarningsSeen() { return warnings_seen; }
 
 void SetOutcome(ModelCacheOutcome outcome) { last_outcome = outcome; }
@@ -232,7 +235,7 @@ UniqueModel Load(const std::string& xml) {
   if (MentionsFiles(xml)) return nullptr;
   const std::string key = Key(xml);
   std::string entry;
-  if (!ReadWhole(EntryPath(key), &entry)) return nullptr;
+  if (!ReadFile(EntryPath(key), &entry)) return nullptr;
   std::optional<std::string> payload = Payload(entry, key);
   if (!payload) return nullptr;
   return LoadFromMemory(&*payload);

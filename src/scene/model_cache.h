@@ -20,7 +20,8 @@
 //   again each time, so its message comes again);
 // - a scene with sensor noise (MuJoCo's compiler seeds rand(), which the
 //   noise draws from, and a loaded model would not);
-// - a scene whose bytes changed while it compiled.
+// - a scene whose bytes changed while it compiled, or that is not a regular
+//   file (a pipe, a device).
 // Entries are written to a temporary file and renamed: a reader sees a whole
 // entry or none. Any failure to read or write the cache falls back to the
 // compile, silently.
@@ -56,6 +57,11 @@ namespace model_cache {
 
 // Whether UseModelCache turned the cache on.
 bool On();
+
+// The bytes of the regular file open as fd (of path); false when it is not
+// a regular file or cannot be read whole.
+bool ReadAll(int fd, std::string* bytes);
+bool ReadFile(const std::string& path, std::string* bytes);
 
 // The cached model whose key holds xml (a scene's bytes), or nullptr.
 UniqueModel Load(const std::string& xml);

@@ -2,10 +2,11 @@
 
 #include "contactlaws/model_io.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -38,36 +39,34 @@ UniqueModel Compile(const std::string& path, bool* clean) {
   return m;
 }
 
-std::string ReadBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 }  // namespace
 
 UniqueModel LoadModelFile(const std::string& path) {
   // plain words for the commonest mistakes, before MuJoCo's parser's
-  std::error_code code;
-  const std::filesystem::file_status status = std::filesystem::status(path, code);
-  if (!std::filesystem::exists(status)) throw Error(fmt::format("{}: no such file", path));
-  if (std::filesystem::is_directory(status)) {
-    throw Error(fmt::format("{}: is a directory, not an MJCF file", path));
-  }
-  if (!std::ifstream(path)) throw Error(fmt::format("{}: cannot be read", path));
-  bool clean = false;
-  if (!model_cache::On()) {
-    model_cache::SetOutcome(ModelCacheOutcome::kOff);
-    return Compile(path, &clean);
-  }
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) throw Error(fmt::format("{}: no such file", path));
+  if (S_ISDIR(st.st_mode)) throw Error(fmt::format("{}: is a directory, not an MJCF file", path));
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw Error(fmt::format("{}: cannot be read", path));
   // the compiled scene (scene/model_cache.h), else MuJoCo's compile, saved
   // when clean and made from the bytes of the key
-  const std::string xml = ReadBytes(path);
+  std::string xml;
+  const bool cacheable = model_cache::On() && model_cache::ReadAll(fd, &xml);
+  close(fd);
+  bool clean = false;
+  if (!cacheable) {
+    model_cache::SetOutcome(model_cache::On() ? ModelCacheOutcome::kNotCached
+                                              : ModelCacheOutcome::kOff);
+    return Compile(path, &clean);
+  }
   if (UniqueModel cached = model_cache::Load(xml)) {
     model_cache::SetOutcome(ModelCacheOutcome::kLoaded);
     return cached;
   }
   UniqueModel m = Compile(path, &clean);
-  const bool saved = clean && ReadBytes(path) == xml && model_cache::Save(xml, m.get());
+  std::string again;
+  const bool saved = clean && model_cache::ReadFile(path, &again) && again == xml &&
+                     model_cache::Save(xml, m.get());
   model_cache::SetOutcome(saved ? ModelCacheOutcome::kSaved : ModelCacheOutcome::kNotCached);
   return m;
 }
