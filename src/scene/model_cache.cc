@@ -176,6 +176,32 @@ bool WriteAtomically(const std::string& path, const std::string& bytes) {
   return false;
 }
 
+// Removes the oldest entries until the cache is within its bounds.
+void Prune() {
+  namespace fs = std::filesystem;
+  struct Found {
+    fs::file_time_type written;
+    uintmax_t size;
+    fs::path path;
+  };
+  std::vector<Found> entries;
+  uintmax_t bytes = 0;
+  std::error_code code;
+  for (const fs::directory_entry& e : fs::directory_iterator(*State().directory, code)) {
+    if (e.path().extension() != ".entry") continue;
+    Found f{e.last_write_time(code), e.file_size(code), e.path()};
+    if (code) continue;
+    bytes += f.size;
+    entries.push_back(std::move(f));
+  }
+  std::sort(entries.begin(), entries.end(),
+            [](const Found& a, const Found& b) { return a.written < b.written; });
+  for (size_t i = 0; i < entries.size() && (entries.size() - i > kModelCacheMaxEntries || bytes > kModelCacheMaxBytes);
+       ++i) {
+    if (fs::remove(entries[i].path, code)) bytes -= entries[i].size;
+  }
+}
+
 }  // namespace
 
 std::optional<std::string> ModelCacheDirectoryFromEnvironment() {
@@ -252,7 +278,9 @@ bool Save(const std::string& xml, const mjModel* m) {
   PutLength(&entry, payload.size());
   PutLength(&entry, Fnv1a(payload));
   entry += payload;
-  return WriteAtomically(EntryPath(key), entry);
+  if (!WriteAtomically(EntryPath(key), entry)) return false;
+  Prune();
+  return true;
 }
 
 }  // namespace model_cache

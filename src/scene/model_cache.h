@@ -29,12 +29,18 @@
 #ifndef CONTACTLAWS_SCENE_MODEL_CACHE_H_
 #define CONTACTLAWS_SCENE_MODEL_CACHE_H_
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
 #include "contactlaws/model_io.h"
 
 namespace contactlaws {
+
+// The cache's bounds: past either, the oldest entries are removed when one
+// is saved.
+constexpr size_t kModelCacheMaxEntries = 256;
+constexpr unsigned long long kModelCacheMaxBytes = 64ull << 20;
 
 // The cache's directory from the environment: off when
 // CONTACTLAWS_MODEL_CACHE is "off" or "0"; else $XDG_CACHE_HOME/contactlaws

@@ -205,6 +205,20 @@ TEST_F(ModelCacheTest, DamagedEntryIsCompiledAgain) {
   }
 }
 
+TEST_F(ModelCacheTest, OldestEntriesGoPastTheBound) {
+  const size_t scenes = kModelCacheMaxEntries + 3;
+  std::vector<std::string> paths;
+  for (size_t i = 0; i < scenes; ++i) {
+    paths.push_back(Write(fmt::format("ball{}.xml", i), fmt::format(kBall, 1e-5 * (1 + i))));
+    LoadModelFile(paths.back());
+  }
+  EXPECT_EQ(Entries(), kModelCacheMaxEntries);
+  LoadModelFile(paths.back());
+  EXPECT_EQ(LastModelCacheOutcome(), ModelCacheOutcome::kLoaded);
+  LoadModelFile(paths.front());
+  EXPECT_EQ(LastModelCacheOutcome(), ModelCacheOutcome::kSaved) << "the oldest was removed";
+}
+
 TEST_F(ModelCacheTest, UnwritableDirectoryOnlyCostsTheCompile) {
   const std::string file = Write("not_a_directory", "");
   UseModelCache(file + "/cache");
