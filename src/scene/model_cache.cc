@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -48,7 +49,7 @@ extern "C" void SeeWarning(const char* text) {
 
 // FNV-1a, 64 bits: names entries (the key itself decides a hit) and checks
 // payloads against damage.
-uint64_t Fnv1a(const std::string& bytes) {
+uint64_t Fnv1a(std::string_view bytes) {
   uint64_t hash = 14695981039346656037ull;
   for (const char c : bytes) {
     hash ^= static_cast<unsigned char>(c);
@@ -113,8 +114,9 @@ bool TakeLength(const std::string& in, size_t* at, uint64_t* n) {
   return true;
 }
 
-// The payload of entry when its key is key and the payload is whole.
-std::optional<std::string> Payload(const std::string& entry, const std::string& key) {
+// Where the payload of entry starts when its key is key and the payload is
+// whole.
+std::optional<size_t> Payload(const std::string& entry, const std::string& key) {
   size_t at = 0;
   uint64_t key_size = 0;
   uint64_t payload_size = 0;
@@ -128,20 +130,19 @@ std::optional<std::string> Payload(const std::string& entry, const std::string& 
       payload_size != entry.size() - at) {
     return std::nullopt;
   }
-  std::string payload = entry.substr(at);
-  if (Fnv1a(payload) != checksum) return std::nullopt;
-  return payload;
+  if (Fnv1a(std::string_view(entry).substr(at)) != checksum) return std::nullopt;
+  return at;
 }
 
 // MuJoCo reads a model from memory through its virtual file system; the
 // system's 2 MB of names is not cleared (mj_defaultVFS would): one entry is
 // filled in.
-UniqueModel LoadFromMemory(std::string* payload) {
+UniqueModel LoadFromMemory(char* payload, size_t size) {
   std::unique_ptr<mjVFS> vfs(new mjVFS);
   vfs->nfile = 1;
   std::strcpy(vfs->filename[0], kPayloadName);
-  vfs->filesize[0] = static_cast<int>(payload->size());
-  vfs->filedata[0] = payload->data();
+  vfs->filesize[0] = static_cast<int>(size);
+  vfs->filedata[0] = payload;
   return UniqueModel(mj_loadModel(kPayloadName, vfs.get()));
 }
 
@@ -262,9 +263,9 @@ UniqueModel Load(const std::string& xml) {
   const std::string key = Key(xml);
   std::string entry;
   if (!ReadFile(EntryPath(key), &entry)) return nullptr;
-  std::optional<std::string> payload = Payload(entry, key);
+  const std::optional<size_t> payload = Payload(entry, key);
   if (!payload) return nullptr;
-  return LoadFromMemory(&*payload);
+  return LoadFromMemory(entry.data() + *payload, entry.size() - *payload);
 }
 
 bool Save(const std::string& xml, const mjModel* m) {
