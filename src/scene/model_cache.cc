@@ -8,7 +8,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #if defined(__x86_64__) && __has_include(<sys/platform/x86.h>)
+// glibc's header spells bool as C's _Bool, which clang's C++ does not accept
+#if defined(__clang__)
+#define _Bool bool
 #include <sys/platform/x86.h>
+#undef _Bool
+#else
+#include <sys/platform/x86.h>
+#endif
 #endif
 
 #include <algorithm>
