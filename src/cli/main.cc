@@ -13,13 +13,17 @@
 
 #include <signal.h>
 
+#include <algorithm>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "cli/commands.h"
 #include "contactlaws/contactlaws.h"
+#include "scene/model_cache.h"
 #include "sim/arena.h"
 
 namespace contactlaws::cli {
@@ -138,7 +142,7 @@ void AddRun(CLI::App* app, Commands* c) {
                        "the impact log with a row per contact episode of each contact point");
 }
 
-void AddSweeps(CLI::App* app, Commands* c) {
+void AddCompare(CLI::App* app, Commands* c) {
   c->compare_cmd = app->add_subcommand(
       "compare", "every law x restitution on a scene: trajectories, impacts and summary CSV");
   AddSweep(c->compare_cmd, &c->compare,
@@ -153,7 +157,9 @@ void AddSweeps(CLI::App* app, Commands* c) {
                   FrictionNameList()));
   c->compare_cmd->add_flag("--impacts-per-point", c->compare.impacts_per_point,
                            "impacts.csv with a row per contact episode of each contact point");
+}
 
+void AddRestitution(CLI::App* app, Commands* c) {
   c->restitution_cmd = app->add_subcommand(
       "restitution", "the first impact of every law x restitution: e_post (paper Fig. 7)");
   AddSweep(c->restitution_cmd, &c->restitution,
@@ -162,7 +168,7 @@ void AddSweeps(CLI::App* app, Commands* c) {
       ->capture_default_str();
 }
 
-void AddCheckAndLaws(CLI::App* app, Commands* c) {
+void AddCheck(CLI::App* app, Commands* c) {
   c->check_cmd = app->add_subcommand(
       "check", "the scene's tags resolved, contact estimates and the timestep they need");
   c->check_cmd->add_option("scene", c->check.scene, "MJCF scene with contactlaw tags")
@@ -180,7 +186,9 @@ void AddCheckAndLaws(CLI::App* app, Commands* c) {
             "(default 0.001)");
   AddNumber(c->check_cmd, "--impact-velocity", &c->check.impact_velocity,
             "m/s (default: estimated from the scene's initial state)");
+}
 
+void AddLaws(CLI::App* app, Commands* c) {
   c->laws_cmd = app->add_subcommand("laws", "list the laws: formula, parameters, units, citation");
   c->laws_cmd
       ->add_option("--format", c->laws.format,
@@ -198,7 +206,7 @@ void AddOverrides(CLI::App* cmd, std::optional<std::string>* law,
   AddNumber(cmd, "--restitution", restitution, "override every tag's restitution e, in [0, 1]");
 }
 
-void AddViewers(CLI::App* app, Commands* c) {
+void AddSimulate(CLI::App* app, Commands* c) {
   c->simulate_cmd = app->add_subcommand(
       "simulate", "MuJoCo's viewer (mujoco-simulate) with the laws acting: the plugin preloaded");
   c->simulate_cmd->add_option("scene", c->simulate.scene, "MJCF scene with contactlaw tags")
@@ -209,7 +217,9 @@ void AddViewers(CLI::App* app, Commands* c) {
             "step with the contact-aware timestep (README) at this relative error in a "
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
+}
 
+void AddRender(CLI::App* app, Commands* c) {
   CLI::App* cmd = c->render_cmd = app->add_subcommand(
       "render", "the run drawn offscreen (no window): a video, a GIF or PNG files");
   RenderArgs& r = c->render;
@@ -228,16 +238,48 @@ void AddViewers(CLI::App* app, Commands* c) {
             "force arrows, m/N (default: MuJoCo's, visual/map force / mean body mass)");
 }
 
+// The subcommands, in the order the help lists them.
+struct Subcommand {
+  const char* name;
+  void (*add)(CLI::App* app, Commands* c);
+};
+constexpr Subcommand kSubcommands[] = {
+    {"run", AddRun},         {"compare", AddCompare}, {"restitution", AddRestitution},
+    {"check", AddCheck},     {"laws", AddLaws},       {"simulate", AddSimulate},
+    {"render", AddRender}};
+
+bool IsSubcommand(std::string_view word) {
+  return std::any_of(std::begin(kSubcommands), std::end(kSubcommands),
+                     [&](const Subcommand& s) { return word == s.name; });
+}
+
+// Adds to app the subcommand named first on the command line, alone, when
+// nothing after it could reach another (another command's name, --help-all),
+// so that a run does not build every command's options (start-up, issue
+// 15); every subcommand otherwise. The parse is the same either way.
+void AddSubcommands(CLI::App* app, Commands* c, int argc, char** argv) {
+  bool alone = argc > 1 && IsSubcommand(argv[1]);
+  for (int i = 2; alone && i < argc; ++i) {
+    const std::string_view word = argv[i];
+    alone = !IsSubcommand(word) && word.rfind("--help-all", 0) != 0;
+  }
+  for (const Subcommand& s : kSubcommands) {
+    if (!alone || argv[1] == std::string_view(s.name)) s.add(app, c);
+  }
+}
+
+bool Parsed(const CLI::App* cmd) { return cmd && cmd->parsed(); }
+
 // Runs the command that was parsed; its exit status.
 int Dispatch(const Commands& c) {
   try {
-    if (c.run_cmd->parsed()) return RunCommand(c.run);
-    if (c.compare_cmd->parsed()) return CompareCommand(c.compare);
-    if (c.restitution_cmd->parsed()) return RestitutionCommand(c.restitution);
-    if (c.check_cmd->parsed()) return CheckCommand(c.check);
-    if (c.laws_cmd->parsed()) return LawsCommand(c.laws);
-    if (c.simulate_cmd->parsed()) return SimulateCommand(c.simulate);
-    if (c.render_cmd->parsed()) return RenderCommand(c.render);
+    if (Parsed(c.run_cmd)) return RunCommand(c.run);
+    if (Parsed(c.compare_cmd)) return CompareCommand(c.compare);
+    if (Parsed(c.restitution_cmd)) return RestitutionCommand(c.restitution);
+    if (Parsed(c.check_cmd)) return CheckCommand(c.check);
+    if (Parsed(c.laws_cmd)) return LawsCommand(c.laws);
+    if (Parsed(c.simulate_cmd)) return SimulateCommand(c.simulate);
+    if (Parsed(c.render_cmd)) return RenderCommand(c.render);
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     return kExitRefused;
@@ -259,10 +301,7 @@ int Main(int argc, char** argv) {
                        "the library's version and MuJoCo's");
   Commands commands;
   commands.restitution.duration = "2";
-  AddRun(&app, &commands);
-  AddSweeps(&app, &commands);
-  AddCheckAndLaws(&app, &commands);
-  AddViewers(&app, &commands);
+  AddSubcommands(&app, &commands, argc, argv);
 
   try {
     app.parse(argc, argv);
@@ -279,6 +318,8 @@ int Main(int argc, char** argv) {
   UseHugePagesForLargeAllocations();  // the compiler's arena: start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
+  // compiled scenes kept between runs (after the warning handler: it wraps it)
+  UseModelCache(ModelCacheDirectoryFromEnvironment());
   InstallStopHandler();
   const int status = Dispatch(commands);
   ReportOtherMujocoWarnings();

@@ -12,6 +12,7 @@
 #include <png.h>
 
 #include "contactlaws/error.h"
+#include "render/render_libraries.h"
 
 namespace contactlaws::render {
 namespace {
@@ -93,7 +94,7 @@ class PngSink : public FrameSink {
     image.width = static_cast<png_uint_32>(width_);
     image.height = static_cast<png_uint_32>(height_);
     image.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_file(&image, tmp.c_str(), 0, rgb.data(), 0, nullptr) ||
+    if (!PngImageWriteToFile()(&image, tmp.c_str(), 0, rgb.data(), 0, nullptr) ||
         std::rename(tmp.c_str(), name.c_str()) != 0) {
       throw Error(fmt::format("render: {}: cannot write ({})", name, image.message));
     }
