@@ -48,7 +48,7 @@ MODELS = {
     "mujoco": ("black", "-"),
 }
 LABELS = {"mujoco": "MuJoCo's own (condim 3)",
-          "regularized": "regularized (1e-5 s step, a shorter run)"}
+          "regularized": "regularized (steps of its lag, 1e-5 or 8e-6 s; a shorter run)"}
 # the belt's friction axis: LuGre's first sample, as the belt starts under
 # the resting block, is its bristle damping s1 z' = s1 F_n v_b (~300 N)
 BELT_FORCE_LIMITS = (-1, 8)
