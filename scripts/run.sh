@@ -15,8 +15,8 @@
 #   results/friction/  the friction scenes' runs; results/friction_*.png their
 #                      figures (scripts/figures_friction.py, docs/friction.md)
 # Each directory holds trajectories.csv (the columns the figures read), impacts.csv and
-# summary.csv. After the build: 42 s of CPU, 55 s of wall time on 2 cores shared at load
-# ~6 (about a quarter of the fixed 1e-5 s's: docs/performance.md, "Issue 15").
+# summary.csv. After the build: 30 s of CPU, 19.8 s of wall time on 2 cores at load 1.5
+# (150 s of CPU at the fixed 1e-5 s: docs/performance.md, "Issue 15").
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
