@@ -15,7 +15,7 @@
 #   results/friction/  the friction scenes' runs; results/friction_*.png their
 #                      figures (scripts/figures_friction.py, docs/friction.md)
 # Each directory holds trajectories.csv (the columns the figures read), impacts.csv and
-# summary.csv. After the build: 30 s of CPU, 19.8 s of wall time on 2 cores at load 1.5
+# summary.csv. After the build: 25 s of CPU, 16.6 s of wall time on 2 cores at load 1.7
 # (150 s of CPU at the fixed 1e-5 s: docs/performance.md, "Issue 15").
 set -euo pipefail
 

@@ -43,11 +43,13 @@
 //      a floor (v0 at the law's floor, 1e-3 m/s) under flores e = 0.2 is a
 //      damper of lag 1.6e-5 s, and steps of 6e-5 s hung it at 60% of its
 //      weight. An impact's damping (v0 of metres per second) never binds.
-//   6. Under RK4, a settled contact point (its episode touched within
-//      kSettledTouchFactor of the law's floor of v0, min_impact_velocity,
-//      and its depth rate is below the floor) has no collision to resolve
-//      (Kelvin-Voigt's ball came to rest on the table from a touch at
-//      1.15e-3 m/s, and took 1.4M steps of 7 us for it): its step is the
+//   6. Under RK4, a settled contact point (its depth rate below the law's
+//      floor of v0, min_impact_velocity, and its episode touched within
+//      kSettledTouchFactor of the floor or has lasted kSettledDurations
+//      elastic contact durations at its v0: past its collision) has no
+//      collision to resolve (Kelvin-Voigt's ball came to rest on the table
+//      from a touch at 1.15e-3 m/s, and took 1.4M steps of 7 us for it;
+//      Flores e = 0.3's from a touch at 0.1 m/s): its step is the
 //      elastic contact duration at the floor speed over
 //      kSettledStepsPerContact (6: the contact's spring at about 0.5 rad a
 //      step, RK4 being stable to 2.8; its static load compresses it more
@@ -131,6 +133,9 @@ inline constexpr double kSettledStepsPerContact = 6;
 // Rule 6: a touch slower than this many floors of v0 is a settling, not a
 // collision whose rebound a figure reads (1e-2 m/s at the default floor).
 inline constexpr double kSettledTouchFactor = 10;
+// Rule 6: a contact open this many of its elastic durations is past its
+// collision (a collision lasts one, its rebound included).
+inline constexpr double kSettledDurations = 3;
 
 class AutoTimestep {
  public:
@@ -163,6 +168,8 @@ class AutoTimestep {
   ContactState State(const ContactData::Evaluation& e) const;
   // Rule 6: the step of a settled contact of pair.
   double SettledStep(int pair) const;
+  // The accuracy's steps per contact duration of pair's law.
+  double LawStepsPerContact(int pair) const;
   // The step the friction of a pair in contact allows at evaluation e: the
   // period 2 TangentialDuration (stick spring, bristles or regularized curve,
   // at e's stiffness and normal force, on the pair's friction_mass), and that

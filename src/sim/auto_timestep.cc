@@ -120,10 +120,13 @@ double AutoTimestep::FineStep(int pair, double v) const {
   const double speed = std::max(v, law.min_impact_velocity);
   const double duration =
       duration_at_unit_speed_[pair] * std::pow(speed, duration_speed_exponent_[pair]);
-  const double steps = Law(law.kind).family == LawFamily::kLinear
-                           ? options_.kelvin_voigt_steps_per_contact
-                           : options_.steps_per_contact;
-  return duration / steps;
+  return duration / LawStepsPerContact(pair);
+}
+
+double AutoTimestep::LawStepsPerContact(int pair) const {
+  return Law(contacts_.model().pairs()[pair].params.kind).family == LawFamily::kLinear
+             ? options_.kelvin_voigt_steps_per_contact
+             : options_.steps_per_contact;
 }
 
 double AutoTimestep::SettledStep(int pair) const {
@@ -180,11 +183,14 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   // a settled contact (it touched barely faster than the law's floor of v0
   // and moves no faster than it): no collision to resolve, only a spring to
   // keep stable under RK4 (rule 5 keeps its damper)
-  if (settled_rule_ && e.impact_velocity <= kSettledTouchFactor * floor &&
-      std::abs(e.depth_rate) <= floor) {
-    return std::min(SettledStep(e.pair), tangential);
-  }
   const double fine = FineStep(e.pair, e.impact_velocity);
+  if (settled_rule_ && std::abs(e.depth_rate) <= floor && e.episode >= 0) {
+    const double lasted = contacts_.data()->time - contacts_.point_impacts()[e.episode].time_contact;
+    const bool slow_touch = e.impact_velocity <= kSettledTouchFactor * floor;
+    if (slow_touch || lasted > kSettledDurations * fine * LawStepsPerContact(e.pair)) {
+      return std::min(SettledStep(e.pair), tangential);
+    }
+  }
   // a separation slower than the law's floor of v0 (a resting contact's
   // chatter) is left to the fine step
   if (!(-e.depth_rate > floor)) return std::min(fine, tangential);
