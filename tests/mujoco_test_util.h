@@ -100,6 +100,23 @@ class MujocoTest : public ::testing::Test {
   std::vector<std::unique_ptr<Simulation>> simulations_;
 };
 
+// A 1 kg cube of 0.1 m, axis-aligned, its centre at height z (m) over a floor
+// plane, RK4 at timestep (s); its tag contactlaw:box carries tag_keys (the
+// law and its keys; the stiffness is 1e7, friction none).
+inline std::string CubeOnFloorXml(double timestep, double z, std::string_view tag_keys) {
+  return fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="box" pos="0 0 {}"><freejoint/>
+      <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:box" data="geom1=box geom2=floor {}
+    stiffness=1e7 friction=none"/></custom>
+</mujoco>)",
+                     timestep, z, tag_keys);
+}
+
 // A ball (radius 0.1 m, mass `mass` kg) with its centre at `height` m above a
 // floor plane (default: 0.1 mm from touching), moving down at `speed` m/s,
 // gravity off unless asked: the 1-D impact of the closed forms.

@@ -9,6 +9,7 @@
 #define CONTACTLAWS_CONTACT_MEMORY_H_
 
 #include <algorithm>
+#include <limits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -149,8 +150,10 @@ void TangentialSide(const PointEvaluation& e, const double tangent[3], const dou
 // The time a point touched, extrapolated back from its first evaluation at t:
 // the depth was reached at the mean of the touch and current rates; t itself
 // for a contact there at the start (PointEvaluation::at_start), and when the
-// rates give no time.
-double TouchTime(const PointEvaluation& e, double t);
+// rates give no time. No earlier than previous, the last commit, where the
+// point was not in contact (two cubes falling together touch at a relative
+// rate of 1e-21 m/s: extrapolated, 8 ms before the run began).
+double TouchTime(const PointEvaluation& e, double t, double previous);
 
 // Sum of the dissipated power of points (contact laws and friction), W.
 double DissipatedPower(const std::vector<PointEvaluation>& points);
@@ -224,6 +227,7 @@ class EpisodeLog {
   std::vector<int> tag_count_;    // episodes per tag
   std::vector<Impact> impacts_;
   std::vector<Track> tracks_;     // parallel to impacts_
+  double previous_commit_ = -std::numeric_limits<double>::infinity();  // s, TouchTime's bound
   int64_t commits_ = 0;
 };
 
@@ -253,6 +257,7 @@ class CollisionLog {
   std::vector<int> tag_count_;  // collisions per tag
   std::vector<PeakForce> force_;  // pair -> the peak of its open collision
   std::vector<Impact> impacts_;
+  double previous_commit_ = -std::numeric_limits<double>::infinity();  // s, TouchTime's bound
 };
 
 // The energy the laws dissipated: the trapezoid of their power over the

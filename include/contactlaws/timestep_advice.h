@@ -6,7 +6,6 @@
 #ifndef CONTACTLAWS_TIMESTEP_ADVICE_H_
 #define CONTACTLAWS_TIMESTEP_ADVICE_H_
 
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,16 +26,10 @@ struct TimestepAdvice {
   // regularized curve), and whether the timestep is above its timestep()
   TangentialEstimate tangential;
   bool tangential_coarse = false;
-  // the law's damping of the shortest pair at rest under its weight
-  // (RestingDamperLag, s; infinite: elastic, no gravity), and whether the
-  // timestep is above resting_step()
-  double resting_lag = std::numeric_limits<double>::infinity();
-  double resting_load = 0;  // N, the weight: effective mass x |gravity|
+  // the law's damping of the shortest pair at rest under its weight, and
+  // whether the timestep is above its timestep()
+  RestingEstimate resting;
   bool resting_coarse = false;
-  // An explicit step is stable on a damper up to 2.8 lags (RK4; 2, Euler):
-  // measured, a box placed on a floor rests right at 2.5 lags and hangs at
-  // 60% of its weight at 3.1.
-  double resting_step() const { return 2 * resting_lag; }
 };
 std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim);
 

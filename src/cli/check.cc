@@ -61,22 +61,18 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
 }
 
 // The lag of the law's damping at rest under the pair's weight (a contact
-// settling at the v0 floor: TimestepAdvice::resting_lag); true when the
-// timestep is too coarse for it.
-bool PrintResting(const LawParams& law, const ContactEstimate& estimate, double gravity,
+// settling at the v0 floor: EstimateResting); true when the timestep is too
+// coarse for it.
+bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
                   double dt, bool automatic) {
-  const double load = estimate.effective_mass * gravity;
-  if (!std::isfinite(load)) return false;
-  const double lag = RestingDamperLag(law, load, estimate.effective_mass);
-  if (!std::isfinite(lag)) return false;
-  TimestepAdvice advice;
-  advice.resting_lag = lag;
-  const bool ok = automatic || dt <= advice.resting_step();
+  const RestingEstimate r = EstimateResting(cm, pair_index, estimate);
+  if (!std::isfinite(r.lag)) return false;
+  const bool ok = automatic || dt <= r.timestep();
   fmt::print("  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
              "{} (needs timestep <= {:.3g} s{})\n",
-             lag, load, law.min_impact_velocity,
-             automatic ? "--timestep auto keeps to it" : ok ? "ok" : "TOO COARSE",
-             advice.resting_step(), ok ? "" : ", or a larger min_impact_velocity");
+             r.lag, r.load, cm.pairs()[pair_index].params.min_impact_velocity,
+             automatic ? "--timestep auto keeps to it" : ok ? "ok" : "TOO COARSE", r.timestep(),
+             ok ? "" : ", or a larger min_impact_velocity");
   return !ok;
 }
 
@@ -127,13 +123,14 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
           : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
                         "speed");
   fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
-  const bool tangential_coarse =
-      PrintFriction(cm, worst, estimate, dt, accuracy) |
-      PrintResting(law, estimate, mju_norm3(m->opt.gravity), dt, accuracy.has_value());
+  // both lines are printed, whatever the first says
+  const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy);
+  const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value());
+  const bool side_coarse = friction_coarse || resting_coarse;  // beside the duration
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");
-    return tangential_coarse;  // nothing to hold the normal's timestep to
+    return side_coarse;  // nothing to hold the normal's timestep to
   }
   fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
              Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
@@ -146,13 +143,13 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
     fmt::print("  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
                "contact, accuracy {})\n",
                estimate.contact_duration / per_contact, per_contact, *accuracy);
-    return tangential_coarse;
+    return side_coarse;
   }
   const double steps = estimate.contact_duration / dt;
   const bool ok = steps >= kStepsPerContact;
   fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
              ok ? "ok" : "TOO COARSE", estimate.timestep());
-  return !ok || tangential_coarse;
+  return !ok || side_coarse;
 }
 
 void PrintDrives(const Simulation& sim) {

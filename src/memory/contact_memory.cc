@@ -49,10 +49,10 @@ void OpenTangentialSide(const PointEvaluation& e, Impact* impact) {
 
 }  // namespace
 
-double TouchTime(const PointEvaluation& e, double t) {
+double TouchTime(const PointEvaluation& e, double t, double previous) {
   if (e.at_start) return t;
   const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
-  return mean_rate > 0 ? t - e.depth / mean_rate : t;
+  return mean_rate > 0 ? std::clamp(t - e.depth / mean_rate, std::min(previous, t), t) : t;
 }
 
 double DissipatedPower(const std::vector<PointEvaluation>& points) {
@@ -94,6 +94,7 @@ void EpisodeLog::Reset() {
   impacts_.clear();
   tracks_.clear();
   commits_ = 0;
+  previous_commit_ = -INFINITY;
 }
 
 int EpisodeLog::MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
@@ -129,7 +130,7 @@ void EpisodeLog::Open(double t, const PointEvaluation& e) {
   impact.index = ++tag_count_[impact.tag];
   impact.impact_velocity = e.touch_velocity;
   impact.touch_v0 = e.impact_velocity;
-  impact.time_contact = TouchTime(e, t);
+  impact.time_contact = TouchTime(e, t, previous_commit_);
   OpenTangentialSide(e, &impact);
   const int index = static_cast<int>(impacts_.size());
   impacts_.push_back(impact);
@@ -161,6 +162,7 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     for (const int b : {0, 1}) std::copy(e.local[b], e.local[b] + 3, track.local[b]);
     track.friction = e.friction_state;
   }
+  previous_commit_ = t;
 }
 
 void EpisodeLog::Close(int index, double separation_velocity) {
@@ -185,6 +187,7 @@ void CollisionLog::Reset() {
   std::fill(open_.begin(), open_.end(), -1);
   std::fill(tag_count_.begin(), tag_count_.end(), 0);
   impacts_.clear();
+  previous_commit_ = -INFINITY;
 }
 
 void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
@@ -215,7 +218,8 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
       collision.max_approach_velocity = std::max(collision.max_approach_velocity, e.max_approach);
       // the points that open it: the earliest touch, the fastest approach
       if (opening && e.touch) {
-        collision.time_contact = std::min(collision.time_contact, TouchTime(e, t));
+        collision.time_contact =
+            std::min(collision.time_contact, TouchTime(e, t, previous_commit_));
         collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
         collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
       }
@@ -247,6 +251,7 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
     }
     seen_[pair] = 0;
   }
+  previous_commit_ = t;
 }
 
 // ---------------------------------------------------------------------------
@@ -260,7 +265,7 @@ void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& poi
     dissipated_ += 0.5 * (power + committed_power_) * (t - previous_time);
     for (const PointEvaluation& e : points) {
       if (!e.touch) continue;
-      const double touch = std::clamp(TouchTime(e, t), previous_time, t);
+      const double touch = TouchTime(e, t, previous_time);
       dissipated_ += 0.5 * (e.touch_power + e.dissipated_power) * (t - touch) -
                      0.5 * e.dissipated_power * (t - previous_time);
     }

@@ -58,10 +58,9 @@ void SlipAndSpin(const ContactModel& model, const mjData* d, const GeomPair& pai
   PointVelocity(model, d, b1, con.pos, v1);
   mju_sub3(e->slip, v1, v0);
   Project(con.frame, e->slip);
-  auto spin = [&](int b) { return model.FindDrive(b) ? nullptr : d->cvel + 6 * b; };
-  for (int i = 0; i < 3; ++i) {
-    e->spin[i] = (spin(b1) ? spin(b1)[i] : 0.0) - (spin(b0) ? spin(b0)[i] : 0.0);
-  }
+  const mjtNum* w0 = model.FindDrive(b0) ? nullptr : d->cvel + 6 * b0;
+  const mjtNum* w1 = model.FindDrive(b1) ? nullptr : d->cvel + 6 * b1;
+  for (int i = 0; i < 3; ++i) e->spin[i] = (w1 ? w1[i] : 0.0) - (w0 ? w0[i] : 0.0);
 }
 
 }  // namespace

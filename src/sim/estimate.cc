@@ -188,6 +188,16 @@ TagEstimate EstimateTag(const ContactData& contacts, int tag,
   return shortest;
 }
 
+RestingEstimate EstimateResting(const ContactModel& cm, int pair_index,
+                                const ContactEstimate& normal) {
+  RestingEstimate r;
+  const double mass = normal.effective_mass;
+  if (!std::isfinite(mass)) return r;
+  r.load = mass * mju_norm3(cm.model()->opt.gravity);
+  r.lag = RestingDamperLag(cm.pairs()[pair_index].params, r.load, mass);
+  return r;
+}
+
 std::string TangentialEstimate::Span() const {
   return stiffness > 0 ? fmt::format("period {:.4g} s", 2 * duration)
                        : fmt::format("lag {:.4g} s", timestep());

@@ -31,12 +31,8 @@ std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
     a.coarse = a.steps < kStepsPerContact;
     a.tangential = EstimateTangential(sim->contact_model(), a.shortest.pair, a.shortest.estimate);
     a.tangential_coarse = dt > a.tangential.timestep();
-    const GeomPair& pair = sim->contact_model().pairs()[a.shortest.pair];
-    const double mass = a.shortest.estimate.effective_mass;
-    a.resting_load = mass * mju_norm3(sim->model()->opt.gravity);
-    a.resting_lag = std::isfinite(mass) ? RestingDamperLag(pair.params, a.resting_load, mass)
-                                        : std::numeric_limits<double>::infinity();
-    a.resting_coarse = dt > a.resting_step();
+    a.resting = EstimateResting(sim->contact_model(), a.shortest.pair, a.shortest.estimate);
+    a.resting_coarse = dt > a.resting.timestep();
     advice.push_back(a);
   }
   return advice;
@@ -69,8 +65,8 @@ std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& 
       "{}: timestep {} s is longer than 2 lags of its law's damping at rest (lag {:.3g} s: {} "
       "under the weight {:.4g} N at the v0 floor min_impact_velocity {} m/s): a resting contact "
       "would hang or chatter: use --timestep {:.3g} or smaller, or raise min_impact_velocity",
-      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.resting_lag,
-      LawName(law.kind), advice.resting_load, law.min_impact_velocity, advice.resting_step());
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.resting.lag,
+      LawName(law.kind), advice.resting.load, law.min_impact_velocity, advice.resting.timestep());
 }
 
 std::vector<std::string> TimestepWarnings(const Simulation& sim,

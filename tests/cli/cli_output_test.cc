@@ -156,17 +156,10 @@ TEST(CliTest, CheckTakesTheAutoTimestep) {
 TEST(CliOutputTest, AContactThatWouldHangAtRestIsWarnedBeforeTheRunAndInCheck) {
   // flores e = 0.2 (a = 6.4) at the v0 floor 1e-3 m/s under 9.81 N: lag
   // 1e-3 / (6.4 g) = 1.59e-5 s; 1e-4 s is 6 lags (it hangs: auto_timestep_test)
-  const std::string box = R"(<mujoco>
-  <option timestep="1e-4" integrator="RK4"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="5 5 0.1"/>
-    <body name="box" pos="0 0 0.04996"><freejoint/>
-      <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:box" data="geom1=box geom2=floor law=flores restitution=0.2
-    stiffness=1e7 friction=none {}"/></custom>
-</mujoco>)";
-  const std::string scene = testing::WriteScene("hangs_at_rest", fmt::format(box, ""));
+  const auto box = [](const std::string& keys) {
+    return testing::CubeOnFloorXml(1e-4, 0.04996, "law=flores restitution=0.2 " + keys);
+  };
+  const std::string scene = testing::WriteScene("hangs_at_rest", box(""));
   const Result run = RunCli("run " + scene + " --duration 0.001");
   EXPECT_NE(run.output.find("contactlaw:box (box, floor): timestep 0.0001 s is longer than 2 lags "
                             "of its law's damping at rest (lag 1.59e-05 s: flores under the "
@@ -181,7 +174,7 @@ TEST(CliOutputTest, AContactThatWouldHangAtRestIsWarnedBeforeTheRunAndInCheck) {
       << check.output;
   // a floor of 1e-2 m/s: ten times the lag, no warning
   const std::string raised =
-      testing::WriteScene("rests", fmt::format(box, "min_impact_velocity=1e-2"));
+      testing::WriteScene("rests", box("min_impact_velocity=1e-2"));
   EXPECT_EQ(RunCli("run " + raised + " --duration 0.001").output.find("at rest"), std::string::npos);
   const Result fine = RunCli("check " + raised);
   EXPECT_NE(fine.output.find("at rest: damping lag 0.000159 s"), std::string::npos) << fine.output;

@@ -203,6 +203,24 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
 
 // Chained: compressed faster than the law's v0 at the touch. A contact that
 // opened at rest and settles within the v0 floor (1e-3 m/s here) is not.
+// Two cubes falling together touch at a relative rate of ~1e-21 m/s: the
+// depth over the mean rate extrapolates far back. A touch is no earlier than
+// the last commit, where the point was not in contact.
+TEST(EpisodeLogTest, ATouchIsNoEarlierThanTheLastCommit) {
+  EpisodeLog episodes(/*points_per_pair=*/{1}, /*tags=*/1);
+  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  episodes.Commit(0.1, {});
+  collisions.Commit(0.1, {}, episodes);
+  PointEvaluation slow = Point(0, 0, 1e-5, 0.08, 1.0);  // compressed at 0.08 m/s now
+  slow.touch_velocity = 1e-21;  // touched at no rate at all
+  episodes.Commit(0.1001, {slow});
+  collisions.Commit(0.1001, {slow}, episodes);
+  EXPECT_DOUBLE_EQ(episodes.impacts()[0].time_contact, 0.1);  // unbounded: 0.1001 - 2.5e-4
+  EXPECT_DOUBLE_EQ(collisions.impacts()[0].time_contact, 0.1);
+  // a rate that places it within the step is kept
+  EXPECT_DOUBLE_EQ(TouchTime(Point(0, 0, 1e-6, 0.02, 1.0), 0.2, 0.1), 0.2 - 1e-6 / 0.01);
+}
+
 TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
   Impact settling;
   settling.impact_velocity = 0;

@@ -239,17 +239,8 @@ TEST(AutoTimestepTest, TheStickSpringIsResolvedAsTheNormalContactIs) {
 double RestingForce(std::optional<double> fixed_step, long* steps = nullptr,
                     const std::string& law = "law=flores restitution=0.2", double drop = 0) {
   constexpr double kDepth = 3.918e-5;  // m: each corner carries m g / 4 at K = 1e7
-  const std::string xml = fmt::format(R"(<mujoco>
-  <option timestep="{}" integrator="RK4"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="5 5 0.1"/>
-    <body name="box" pos="0 0 {}"><freejoint/>
-      <geom name="box" type="box" size="0.05 0.05 0.05" mass="1"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:box" data="geom1=box geom2=floor {}
-    stiffness=1e7 friction=none"/></custom>
-</mujoco>)",
-                                      fixed_step.value_or(1e-3), 0.05 - kDepth + drop, law);
+  const std::string xml =
+      testing::CubeOnFloorXml(fixed_step.value_or(1e-3), 0.05 - kDepth + drop, law);
   const Scene scene("resting.xml", LoadModelString(xml, "resting.xml"));
   std::unique_ptr<Simulation> sim = scene.Make({});
   std::optional<AutoTimestep> stepper;
