@@ -9,18 +9,15 @@
 namespace contactlaws {
 
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
-  // an impact's rate falls from its touch on; a contact whose rate rose more
-  // than this factor above its touch speed is one a warning should name (the
-  // library handles any rise: Impact::max_approach_velocity)
-  constexpr double kChainFactor = 2.0;
+  // the library handles any rise (Impact::max_approach_velocity); a chained
+  // contact is one a warning should name
   const std::vector<Impact>& collisions = sim.contacts().impacts();
   std::vector<std::string> warnings;
   for (int p = 0; p < static_cast<int>(sim.contact_model().pairs().size()); ++p) {
     const Impact* first = nullptr;
     int count = 0;
     for (const Impact& c : collisions) {
-      const double touch = std::max(c.impact_velocity, c.touch_v0);
-      if (c.pair != p || !(c.max_approach_velocity > kChainFactor * touch)) continue;
+      if (c.pair != p || !c.chained()) continue;
       if (!first) first = &c;
       ++count;
     }

@@ -235,6 +235,12 @@ TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
   Impact impact;  // an impact's rate only falls after its touch
   impact.impact_velocity = impact.touch_v0 = impact.max_approach_velocity = 2.0;
   EXPECT_FALSE(impact.chained());
+  // gravity raised the paper's ball's rate after its touch: no chain
+  impact.impact_velocity = impact.touch_v0 = 4.202142257;
+  impact.max_approach_velocity = 4.20216232;
+  EXPECT_FALSE(impact.chained());
+  impact.max_approach_velocity = 2.01 * impact.impact_velocity;  // beyond kChainFactor
+  EXPECT_TRUE(impact.chained());
 }
 
 TEST(DissipationLedgerTest, TrapezoidOfThePower) {
