@@ -34,6 +34,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -167,7 +168,7 @@ class ContactData {
   const mjModel* m_;
   mjData* d_;
 
-  std::vector<mjContact> contacts_;   // narrowphase output, mjMAXCONPAIR
+  std::unique_ptr<mjContact[]> contacts_;  // narrowphase output, mjMAXCONPAIR
 
   // tagged pairs proposed by the broadphase (ClaimPair), for ApplyForces
   std::vector<int> proposed_;

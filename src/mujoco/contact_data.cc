@@ -42,7 +42,7 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
       d_(d),
       episodes_(PointsPerPair(model), static_cast<int>(model.tags().size())),
       collisions_(static_cast<int>(model.pairs().size()), static_cast<int>(model.tags().size())) {
-  contacts_.resize(mjMAXCONPAIR);
+  contacts_ = MakeContactBuffer();
   const size_t points = std::min<size_t>(model.slot_count(), 4 * model.pairs().size());
   latest_.reserve(points);
   captured_.reserve(points);
@@ -149,7 +149,7 @@ void ContactData::ApplyForces() {
     // the narrowphase (MuJoCo's, or ours for box-box: narrowphase.h): dist < 0
     // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
     // midway between the surfaces
-    const int count = std::min(Collide(m_, d_, g0, g1, 0, contacts_.data()), pair.slots);
+    const int count = std::min(Collide(m_, d_, g0, g1, 0, contacts_.get()), pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];

@@ -9,6 +9,8 @@
 #ifndef CONTACTLAWS_MUJOCO_NARROWPHASE_H_
 #define CONTACTLAWS_MUJOCO_NARROWPHASE_H_
 
+#include <memory>
+
 #include <mujoco/mujoco.h>
 
 namespace contactlaws {
@@ -19,6 +21,12 @@ namespace contactlaws {
 // collision functions fill: dist (< 0 overlapping, m), pos midway between the
 // surfaces, frame[0..2] the unit normal from g0 towards g1. Allocates nothing.
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out);
+
+// Room for Collide's output, left uninitialized: Collide writes the contacts
+// it counts, and only those are read (zeroing mjMAXCONPAIR contacts is 7
+// pages the process would touch for nothing).
+using ContactBuffer = std::unique_ptr<mjContact[]>;
+inline ContactBuffer MakeContactBuffer() { return ContactBuffer(new mjContact[mjMAXCONPAIR]); }
 
 }  // namespace contactlaws
 

@@ -50,16 +50,16 @@ constexpr int kLookAheadSteps = 200000;
 // The nearest points of pair at d (the narrowphase with a margin that reaches
 // them: the centre distance plus both bounding radii), or nullptr.
 const mjContact* Nearest(const mjModel* m, const mjData* d, const GeomPair& pair,
-                         std::vector<mjContact>* found) {
+                         const ContactBuffer& found) {
   const int g0 = pair.geom[0];
   const int g1 = pair.geom[1];
   mjtNum centres[3];
   mju_sub3(centres, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g0);
   const double reach = mju_norm3(centres) + m->geom_rbound[g0] + m->geom_rbound[g1] + 1.0;
-  const int count = Collide(m, d, g0, g1, reach, found->data());
+  const int count = Collide(m, d, g0, g1, reach, found.get());
   const mjContact* nearest = nullptr;
   for (int i = 0; i < count; ++i) {
-    if (!nearest || (*found)[i].dist < nearest->dist) nearest = &(*found)[i];
+    if (!nearest || found[i].dist < nearest->dist) nearest = &found[i];
   }
   return nearest;
 }
@@ -76,11 +76,11 @@ std::optional<Approach> LookAhead(const ContactData& contacts, int pair_index) {
   UniqueData ahead(mj_makeData(m));
   mjData* d = ahead.get();
   mj_copyData(d, m, contacts.data());
-  std::vector<mjContact> found(mjMAXCONPAIR);
+  const ContactBuffer found = MakeContactBuffer();
   const double start = d->time;
   for (int k = 0; k < kLookAheadSteps && d->time - start < kLookAheadTime; ++k) {
     mj_forward(m, d);
-    const mjContact* nearest = Nearest(m, d, pair, &found);
+    const mjContact* nearest = Nearest(m, d, pair, found);
     if (!nearest) return std::nullopt;
     const double step = m->opt.timestep;
     Approach a;
@@ -106,8 +106,8 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
 
   e.effective_mass = PairEffectiveMass(cm, pair_index);
 
-  std::vector<mjContact> found(mjMAXCONPAIR);
-  const mjContact* nearest = Nearest(m, d, pair, &found);
+  const ContactBuffer found = MakeContactBuffer();
+  const mjContact* nearest = Nearest(m, d, pair, found);
 
   double speed = 0;
   if (nearest) {
