@@ -24,7 +24,7 @@
 #include "cli/commands.h"
 #include "contactlaws/contactlaws.h"
 #include "scene/model_cache.h"
-#include "sim/arena.h"
+#include "sim/allocator.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -315,7 +315,7 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
-  UseHugePagesForLargeAllocations();  // the compiler's arena: start-up (issue 15)
+  InstallMujocoAllocator();  // fewer page faults at start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
   // compiled scenes kept between runs (after the warning handler: it wraps it)

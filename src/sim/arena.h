@@ -27,15 +27,6 @@ bool HasUntaggedContacts(const ContactModel& cm);
 // arise. A scene that still outgrows it stops in MuJoCo's own error.
 void SizeArena(mjModel* m, const ContactModel& cm);
 
-// For a program that loads scenes: MuJoCo's allocations from 1 MB to 8 MB
-// (the compiler's own mjData buffer, sized by MuJoCo's defaults and zeroed
-// whole) on transparent huge pages (madvise), so that zeroing them faults a
-// few 2 MB pages rather than hundreds of 4 kB ones; the others (the
-// compiler's 10 MB stack among them, barely touched) as MuJoCo's own
-// allocator (64-byte aligned). Sets mju_user_malloc and mju_user_free: call
-// once, before any MuJoCo allocation.
-void UseHugePagesForLargeAllocations();
-
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_SIM_ARENA_H_
