@@ -7,14 +7,18 @@
 # cache of its own under BUILD_DIR); then, alternating with the bare program
 # again, without the cache (CONTACTLAWS_MODEL_CACHE=off: MuJoCo compiles the
 # scene, as a first run does). CPU time (user + system) beside each: on a
-# loaded machine the wall time also counts the waits for a core.
+# loaded machine the wall time also counts the waits for a core. Each process
+# is started with posix_spawn (a vfork, not a copy of this Python's page
+# tables: subprocess.Popen added ~0.3 ms to every process, both sides), and
+# the floor is printed: an empty main linked to the run's libraries
+# (tests/bench/empty_start.cc), what no start-up of ours can go below.
 #   scripts/startup_bench.sh [BUILD_DIR] [RUNS] [SCENE]
 set -eu
 cd "$(dirname "$0")/.."
 build=${1:-build}
 runs=${2:-41}
 scene=${3:-mjcf/bouncing_ball.xml}
-for bin in "$build/contactlaws" "$build/tests/bench/bare_start"; do
+for bin in "$build/contactlaws" "$build/tests/bench/bare_start" "$build/tests/bench/empty_start"; do
   [ -x "$bin" ] || { echo "startup_bench.sh: $bin missing: build first (scripts/build.sh)" >&2; exit 2; }
 done
 XDG_CACHE_HOME="$(cd "$build" && pwd)/startup-bench-cache"
@@ -24,8 +28,10 @@ import os, statistics, subprocess, sys, time
 build, runs, scene = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 run = [f"{build}/contactlaws", "run", scene, "--duration", "1e-5"]
 bare = [f"{build}/tests/bench/bare_start", scene]
+empty = [f"{build}/tests/bench/empty_start"]
 cached = dict(os.environ)
 uncached = dict(os.environ, CONTACTLAWS_MODEL_CACHE="off")
+devnull = os.open(os.devnull, os.O_WRONLY)
 
 def alternate(commands):
     """Wall and CPU medians of the commands run in turn, runs times."""
@@ -34,8 +40,9 @@ def alternate(commands):
     for _ in range(runs):
         for name, (command, env) in commands.items():
             start = time.perf_counter()
-            child = subprocess.Popen(command, stdout=subprocess.DEVNULL, env=env)
-            _, status, usage = os.wait4(child.pid, 0)
+            pid = os.posix_spawn(command[0], command, env,
+                                 file_actions=[(os.POSIX_SPAWN_DUP2, devnull, 1)])
+            _, status, usage = os.wait4(pid, 0)
             wall[name].append(time.perf_counter() - start)
             cpu[name].append(usage.ru_utime + usage.ru_stime)
             if status != 0:
@@ -45,14 +52,19 @@ def alternate(commands):
     for name in commands:
         print(f"{name:36s} median {1e3 * w[name]:7.2f} ms over {runs} alternating runs"
               f" (CPU {1e3 * c[name]:5.2f} ms)")
-    first, second = list(commands)
-    return w[first] / w[second], c[first] / c[second]
+    first, second = list(commands)[:2]
+    return w[first] / w[second], c[first] / c[second], w, c
 
 subprocess.run(run, check=True, stdout=subprocess.DEVNULL, env=cached)  # fills the cache
-ratio, cpu_ratio = alternate({"contactlaws run --duration 1e-5": (run, cached),
-                              "bare MuJoCo load + make data": (bare, cached)})
+ratio, cpu_ratio, w, c = alternate({
+    "contactlaws run --duration 1e-5": (run, cached),
+    "bare MuJoCo load + make data": (bare, cached),
+    "empty main, the same libraries": (empty, cached)})
 print(f"ratio run / bare: {ratio:.3f} (goal <= 0.5) (CPU {cpu_ratio:.3f})")
-ratio, cpu_ratio = alternate({"run, no model cache (first run)": (run, uncached),
-                              "bare MuJoCo load + make data": (bare, cached)})
+floor, base = w["empty main, the same libraries"], w["bare MuJoCo load + make data"]
+print(f"floor: the libraries alone / bare: {floor / base:.3f}"
+      f" (CPU {c['empty main, the same libraries'] / c['bare MuJoCo load + make data']:.3f})")
+ratio, cpu_ratio, _, _ = alternate({"run, no model cache (first run)": (run, uncached),
+                                   "bare MuJoCo load + make data": (bare, cached)})
 print(f"ratio run without the model cache / bare: {ratio:.3f} (CPU {cpu_ratio:.3f})")
 PY
