@@ -11,14 +11,12 @@ namespace contactlaws {
 
 // Sets mju_user_malloc and mju_user_free: call once, before any MuJoCo
 // allocation (a block MuJoCo's own allocator made must not reach ours).
-//   - from 16 kB to 1 MB (an arena sized to its scene: the model's buffer,
-//     the data's buffer and stack): mapped with its pages in place
-//     (MAP_POPULATE), one system call instead of a page fault per 4 kB that
-//     MuJoCo's zeroing or copying would take;
 //   - from 1 MB to 8 MB (the compiler's own mjData buffer, sized by MuJoCo's
-//     defaults and zeroed whole): on transparent huge pages (madvise);
-//   - the others (small blocks, and the compiler's 10 MB stack, barely
-//     touched) as MuJoCo's own allocator does: 64-byte aligned, from the heap.
+//     defaults and zeroed whole): on transparent huge pages (madvise), so
+//     that zeroing it faults a few 2 MB pages rather than hundreds of 4 kB
+//     ones;
+//   - the others (the compiler's 10 MB stack among them, barely touched) as
+//     MuJoCo's own allocator does: from the heap.
 // Every block is 64-byte aligned, as MuJoCo's own.
 void InstallMujocoAllocator();
 
