@@ -49,8 +49,8 @@ MODELS = {
 }
 LABELS = {"mujoco": "MuJoCo's own (condim 3)",
           "regularized": "regularized (steps of its lag, 1e-5 or 8e-6 s; a shorter run)"}
-# the belt's friction axis: LuGre's first sample, as the belt starts under
-# the resting block, is its bristle damping s1 z' = s1 F_n v_b (~300 N)
+# the belt's friction axis: up to past mu_s m g (5.9 N), where LuGre's
+# bristles overshoot as the block comes to stick on the belt (6.4 N)
 BELT_FORCE_LIMITS = (-1, 8)
 # Speeds and displacements below this are rounding: drawn at it (log scale)
 FLOOR = 1e-15

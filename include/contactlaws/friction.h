@@ -126,8 +126,11 @@ double SlidingMu(const FrictionParams& params, double speed);
 double TangentialDuration(const FrictionParams& params, double stiffness, double mass,
                           double normal_force);
 
-// LuGre's bristle damper, N s/m: the tag's sigma1 x F_n, or critical for the
-// bristle spring sigma0 F_n on the pair's mass, 2 sqrt(sigma0 F_n m).
+// LuGre's bristle damper at rest, N s/m: the tag's sigma1 x F_n, or critical
+// for the bristle spring sigma0 F_n on the pair's mass, 2 sqrt(sigma0 F_n m).
+// The model fades it with the slip speed v: x exp(-(v / v_s)^2), v_s the
+// Stribeck velocity (Olsson et al., Eur. J. Control 4:176, 1998), so that it
+// damps the presliding and not gross sliding.
 double BristleDamping(const FrictionParams& params, double normal_force, double mass);
 
 // A 3-vector spring of the stick state (the tangential force, or a rolling

@@ -37,13 +37,14 @@ const std::vector<FrictionInfo>& FrictionModels() {
        "as coulomb, stribeck_velocity v_s (m/s > 0, default 1e-2), viscous (N s/m >= 0)",
        "S. Andersson, A. Soderberg, S. Bjorklund, Tribol. Int. 40:580-587 (2007)"},
       {"lugre",
-       "F = -(F_n (s0 z + s1 z') + s2 v), z' = v - s0 |v| z / mu(v), mu(v) as stribeck",
+       "F = -(F_n (s0 z + s1(v) z') + s2 v), z' = v - s0 |v| z / mu(v), mu(v) as stribeck, "
+       "s1(v) = s1 exp(-(v/v_s)^2)",
        "the bristle deflection z (m), a vector in the tangent plane, committed per step",
        "mu_static, mu_kinetic, stribeck_velocity, bristle_stiffness s0 (1/m > 0, x F_n; default "
        "1e5), bristle_damping s1 (s/m >= 0, x F_n; default: critical, 2 sqrt(s0 m / F_n) with m the "
        "pair's mass), viscous s2 (N s/m >= 0)",
        "C. Canudas de Wit, H. Olsson, K. J. Astrom, P. Lischinsky, IEEE Trans. Autom. Control "
-       "40:419-425 (1995)"},
+       "40:419-425 (1995); s1(v): H. Olsson et al., Eur. J. Control 4:176-195 (1998)"},
     };
     for (size_t i = 0; i < rows.size(); ++i) rows[i].kind = static_cast<FrictionKind>(i);
     return rows;

@@ -113,6 +113,28 @@ TEST(FrictionKernelTest, LuGreReachesItsSteadyStateForceAfterALongSlide) {
   EXPECT_NEAR(out.state[0], 0.3 / p.bristle_stiffness, 1e-15);
 }
 
+// The bristle damper sigma1 z' fades with the slip speed as exp(-(v/v_s)^2)
+// (Olsson et al. 1998): whole while presliding, gone in gross sliding. The
+// bristles at rest (z = 0, no stretch yet) under a slip v: z' = v, and the
+// force is the damper's alone.
+TEST(FrictionKernelTest, LuGreBristleDamperFadesWithTheSlipSpeed) {
+  const FrictionParams p = Params(FrictionKind::kLuGre);
+  FrictionInput in;
+  in.normal_force = 10;
+  in.mass = 2;
+  const double sigma1 = BristleDamping(p, in.normal_force, in.mass);
+  EXPECT_DOUBLE_EQ(sigma1, 2 * std::sqrt(p.bristle_stiffness * 10 * 2));  // critical
+  for (const double v : {1e-6, 0.5 * p.stribeck_velocity, p.stribeck_velocity,
+                         3 * p.stribeck_velocity, 1.0}) {
+    in.slip[0] = v;
+    const double fade = std::exp(-(v / p.stribeck_velocity) * (v / p.stribeck_velocity));
+    // one rounding in each factor
+    EXPECT_NEAR(EvaluateFriction(p, in).force[0], -sigma1 * fade * v, 1e-14 * sigma1 * v) << v;
+  }
+  // at 1 m/s, 100 v_s: nothing (it was sigma1 v = 2.8e3 N on a 10 N load)
+  EXPECT_EQ(EvaluateFriction(p, in).force[0], 0);
+}
+
 TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
   for (const FrictionInfo& model : FrictionModels()) {
     EXPECT_EQ(ParseFrictionName(model.name), model.kind);

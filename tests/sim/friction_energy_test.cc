@@ -24,6 +24,12 @@ constexpr double kDuration = 0.8;  // s: four corner impacts and the tipping bet
 // friction must not add to it. Before the springs' stored energy was taken
 // off the work friction does, coulomb gained 3.6% here.
 constexpr double kLedgerTolerance = 1.2e-3;  // of the start's total energy
+// LuGre's bristles settle within mu / sigma0 = 5 um of slip, less than a
+// step's slip at a landing: the trapezoid of friction's power over the step
+// misses more of that than of coulomb's spring, which takes k_t's stretch.
+// Measured (the CLI's run of this scene): 2.3e-3 at 1e-4 s, 1.2e-4 at 3e-5
+// s, 4.9e-6 at 1e-5 s (coulomb 4.0e-4, 4.2e-5, 5.4e-6).
+constexpr double kLuGreLedgerTolerance = 3e-3;  // of the start's total energy
 // The dissipated energy may fall back for a step: RK4's last stage evaluates
 // the springs on the previous commit, which the step's commit clamps to a
 // cap that fell meanwhile (the end of an impact); the total does not move.
@@ -64,12 +70,12 @@ TEST_P(FrictionEnergyTest, TheTotalHoldsThroughImpactsThatSlideAndStick) {
     EXPECT_GE(e.dissipated, dissipated - kDipTolerance * start) << "t = " << sim.time();
     dissipated = e.dissipated;
   }
-  EXPECT_LT(worst, kLedgerTolerance);
+  EXPECT_LT(worst, std::string(GetParam()) == "lugre" ? kLuGreLedgerTolerance : kLedgerTolerance);
   EXPECT_GT(dissipated, 0.25 * start);  // the impacts did lose energy: the test saw them
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, FrictionEnergyTest,
-                         ::testing::Values("none", "coulomb", "stribeck"),
+                         ::testing::Values("none", "coulomb", "stribeck", "lugre"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                            return std::string(info.param);
                          });
