@@ -100,15 +100,22 @@ struct Impact {
   // below 1 and the law does not turn plastic (d'/v0 in the hundreds).
   double max_approach_velocity = 0;
   // The law's v0 at the touch: impact_velocity raised to the pair's
-  // min_impact_velocity (for a collision, the largest of its opening points').
+  // min_impact_velocity (for a collision, the largest of its points' at
+  // their touches: a corner that lands after the first is a touch too).
   double touch_v0 = 0;
+  // A collision (CollisionLog): one of its points was chained. A collision's
+  // rates mix its points: a second corner that lands faster than the first
+  // touched raises its largest approach, and is no chain.
+  bool points_chained = false;
   // Compressed more than kChainFactor times faster than the law's v0 at its
-  // touch (a pulse through touching bodies). Gravity alone raises an impact's
-  // rate after the touch (the paper's ball by 5e-6 of 4.2 m/s, a slow one by
-  // tens of percent): that is no chain; neither is a contact that opened at
-  // rest and settles within the v0 floor.
+  // touch (a pulse through touching bodies), or, a collision, one of its
+  // points was. Gravity alone raises an impact's rate after the touch (the
+  // paper's ball by 5e-6 of 4.2 m/s, a slow one by tens of percent): that is
+  // no chain; neither is a contact that opened at rest and settles within
+  // the v0 floor.
   bool chained() const {
-    return max_approach_velocity > kChainFactor * std::max(impact_velocity, touch_v0);
+    return points_chained ||
+           max_approach_velocity > kChainFactor * std::max(impact_velocity, touch_v0);
   }
   // separation / the largest approach speed (closed only): an impact's touch
   // speed, a chained contact's pulse

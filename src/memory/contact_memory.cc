@@ -221,7 +221,10 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
         collision.time_contact =
             std::min(collision.time_contact, TouchTime(e, t, previous_commit_));
         collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
-        collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
+      }
+      if (e.touch) collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
+      if (e.episode >= 0 && episodes.impacts()[e.episode].chained()) {
+        collision.points_chained = true;
       }
     }
     force_[pair].Add(t, force);

@@ -7,6 +7,18 @@
 #include "contactlaws/timestep_advice.h"
 
 namespace contactlaws {
+namespace {
+
+// The first chained point of pair p: its numbers say what a collision's mix
+// of points does not (a collision is chained when one of its points is).
+const Impact* FirstChainedPoint(const Simulation& sim, int p) {
+  for (const Impact& point : sim.contacts().point_impacts()) {
+    if (point.pair == p && point.chained()) return &point;
+  }
+  return nullptr;
+}
+
+}  // namespace
 
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
   // the library handles any rise (Impact::max_approach_velocity); a chained
@@ -22,13 +34,16 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
       ++count;
     }
     if (!first) continue;
+    const Impact* point = FirstChainedPoint(sim, p);
+    if (!point) point = first;
     warnings.push_back(fmt::format(
         "{}: {} collision{} touched slowly and then compressed far faster (the first at "
-        "t = {:.6g} s: touched at {:.4g} m/s, compressed at {:.4g} m/s): a pulse through "
-        "touching bodies; the law's v0 was the largest approach rate, and e_post is taken "
-        "against it (README, Touching chains)",
-        PairName(sim, p), count, count == 1 ? "" : "s", first->time_contact,
-        first->impact_velocity, first->max_approach_velocity));
+        "t = {:.6g} s: touched at {:.4g} m/s, compressed at {:.4g} m/s): pushed while in "
+        "contact (a pulse through touching bodies, or a body tipping onto the point); the "
+        "law's v0 was the largest approach rate, and e_post is taken against it (README, "
+        "Touching chains)",
+        PairName(sim, p), count, count == 1 ? "" : "s", point->time_contact,
+        point->impact_velocity, point->max_approach_velocity));
   }
   return warnings;
 }

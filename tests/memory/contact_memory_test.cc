@@ -5,6 +5,7 @@
 
 #include "contactlaws/contact_memory.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -219,6 +220,39 @@ TEST(EpisodeLogTest, ATouchIsNoEarlierThanTheLastCommit) {
   EXPECT_DOUBLE_EQ(collisions.impacts()[0].time_contact, 0.1);
   // a rate that places it within the step is kept
   EXPECT_DOUBLE_EQ(TouchTime(Point(0, 0, 1e-6, 0.02, 1.0), 0.2, 0.1), 0.2 - 1e-6 / 0.01);
+}
+
+// A tumbling body lands a second corner faster than the first touched, in
+// the same collision: no chain (a pair's collision was flagged for every
+// tetrahedron, box and capsule dropped tumbling). A corner pushed after its
+// own touch is one, whatever the others did.
+TEST(CollisionLogTest, ASecondCornerLandingFasterIsNoChainAPushedOneIs) {
+  EpisodeLog episodes(/*points_per_pair=*/{4}, /*tags=*/1);
+  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  auto commit = [&](double t, const std::vector<PointEvaluation>& points) {
+    episodes.Commit(t, points);
+    collisions.Commit(t, points, episodes);
+  };
+  auto corner = [](double x, int episode, double touch, double max_approach) {
+    PointEvaluation e = At(x, 0, episode);
+    e.touch_velocity = touch;
+    e.impact_velocity = std::max(touch, max_approach);  // the law's v0, raised
+    e.max_approach = max_approach;
+    return e;
+  };
+  commit(1.0, {corner(-0.1, -1, 0.1, 0.1)});
+  commit(2.0, {corner(-0.1, 0, 0.1, 0.1), corner(0.1, -1, 0.3, 0.3)});
+  ASSERT_EQ(collisions.impacts().size(), 1u);
+  const Impact& c = collisions.impacts()[0];
+  EXPECT_EQ(c.impact_velocity, 0.1);         // the first touch
+  EXPECT_EQ(c.max_approach_velocity, 0.3);   // the second corner's
+  EXPECT_FALSE(c.chained());
+  EXPECT_FALSE(episodes.impacts()[0].chained());
+  EXPECT_FALSE(episodes.impacts()[1].chained());
+  // the first corner compressed at 0.5 m/s, 5 x its touch: a push
+  commit(3.0, {corner(-0.1, 0, 0.1, 0.5), corner(0.1, 1, 0.3, 0.3)});
+  EXPECT_TRUE(episodes.impacts()[0].chained());
+  EXPECT_TRUE(collisions.impacts()[0].chained());
 }
 
 TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
