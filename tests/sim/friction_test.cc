@@ -31,31 +31,11 @@ using testing::Vx;
 using testing::X;
 
 TEST_F(FrictionTest, BlockStopsAfterTheKineticDistanceAndDissipatesItsEnergy) {
-  constexpr double kMu = 0.4;
-  constexpr double kV0 = 1.0;
   Simulation& sim = MakeSimulation(FrictionScene(false, 0, kG, "1 0 0 0 0 0", "mu=0.4"));
   mj_forward(sim.model(), sim.data());
   const double start = sim.Energy().total();
   RunUntil(sim, 0.5);
-  const double distance = kV0 * kV0 / (2 * kMu * kG);
-  // The four corners share the weight through springs that rock a little as
-  // the friction tips the block forward (the moment mu m g h): measured
-  // 0.3% of the distance.
-  constexpr double kDistanceTolerance = 5e-3;  // relative
-  EXPECT_NEAR(X(sim), distance, kDistanceTolerance * distance);
-  // at rest: the block rocks a little on its corner springs after the stop
-  // (measured 3.3e-5 m/s at 0.5 s, 0.37 s after it)
-  constexpr double kRestSpeed = 1e-4;  // m/s
-  EXPECT_NEAR(Vx(sim), 0, kRestSpeed);
-  mj_forward(sim.model(), sim.data());
-  const EnergyLedger e = sim.Energy();
-  // the ledger: the kinetic energy went to friction (and a little to the
-  // normal law's damping as the block settles), the total kept
-  constexpr double kLedgerTolerance = 1e-2;  // relative to 1/2 m v0^2
-  EXPECT_NEAR(e.dissipated, 0.5 * kV0 * kV0, kLedgerTolerance * 0.5);
-  EXPECT_NEAR(e.total(), start, kLedgerTolerance * 0.5);
-  std::printf("block: x %.6f of %.6f, dissipated %.6f, total %.6f -> %.6f\n", X(sim), distance,
-              e.dissipated, start, e.total());
+  testing::ExpectKineticStop(sim, /*mu=*/0.4, /*v0=*/1.0, start, "block");
 }
 
 // v and w r of a ball launched at v0 with spin w0 (about +y: > 0 rolls
@@ -160,15 +140,9 @@ TEST_F(FrictionTest, ObliqueImpactInGrossSlidingMatchesTheImpulseLaw) {
   Simulation& sim = MakeSimulation(testing::ObliqueImpact(2, kMu));
   while (sim.contacts().impacts().empty() || sim.contacts().impacts()[0].open) sim.Step();
   const Impact& impact = sim.contacts().impacts()[0];
-  const double e = impact.restitution_post();
-  const double vn = impact.impact_velocity;
-  // the contact point sits at R - d/2 during the impact (d up to 4.2% of R):
-  // the spin's lever is short by up to 2.1% (measured 1.7%)
-  constexpr double kImpulseTolerance = 2.5e-2;  // relative
-  const double vt = 2 - kMu * (1 + e) * vn;
-  EXPECT_NEAR(Vx(sim), vt, kImpulseTolerance * (2 - vt));
-  const double spin = 2.5 * kMu * (1 + e) * vn;
-  EXPECT_NEAR(sim.data()->qvel[4] * kRadius, spin, kImpulseTolerance * spin);
+  testing::ExpectImpulseLaw(sim, impact, kMu, 2, "oblique");
+  const double spin = 2.5 * kMu * (1 + impact.restitution_post()) * impact.impact_velocity;
+  constexpr double kImpulseTolerance = 2.5e-2;  // relative, as ExpectImpulseLaw's
   // the impact log's tangential side
   // at the first state in contact, where friction has acted for less than a
   // step at a depth of less than a step's approach: mu F_n dt / m << 1e-3
@@ -176,8 +150,6 @@ TEST_F(FrictionTest, ObliqueImpactInGrossSlidingMatchesTheImpulseLaw) {
   EXPECT_NEAR(impact.tangential_impact_velocity, 2, kTouchTolerance);
   EXPECT_NEAR(impact.spin_before, 0, kTouchTolerance);
   EXPECT_NEAR(impact.spin_after * kRadius, spin, kImpulseTolerance * spin);
-  std::printf("oblique: e %.4f, vt' %.5f (%.5f), wR %.5f (%.5f)\n", e, Vx(sim), vt,
-              sim.data()->qvel[4] * kRadius, spin);
 }
 
 TEST_F(FrictionTest, RollingAndTorsionalResistanceSlowTheSpinAtTheirCapsRate) {
