@@ -176,7 +176,10 @@ double DissipatedPower(const std::vector<PointEvaluation>& points);
 // The episodes of every contact point, committed once per accepted step. A
 // point is the same physical point from one step to the next when it sits
 // where an open episode's point sat on either of the pair's two bodies
-// (MatchOpenEpisode), whatever order the narrowphase lists it in.
+// (MatchOpenEpisode), whatever order the narrowphase lists it in. A pair
+// whose narrowphase returns one point has one contact: its point is its open
+// episode's wherever it moved (MuJoCo's general convex collider puts the
+// point of a face on a face anywhere on it, from one step to the next).
 class EpisodeLog {
  public:
   // points_per_pair: the most points each pair can have at once (its size is
@@ -189,7 +192,8 @@ class EpisodeLog {
   // The open episode of pair whose point sat nearest to local (the point in
   // the pair's two body frames), within tolerance (m) in either body's frame,
   // and not yet taken: *taken has a bit per open episode of the pair (in
-  // OpenEpisodes order), set here for the one returned. -1 when none.
+  // OpenEpisodes order), set here for the one returned; for a pair of one
+  // point, its open episode, at any distance. -1 when none.
   int MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
                        uint64_t* taken) const;
 
@@ -237,6 +241,7 @@ class EpisodeLog {
   void Close(int index, double separation_velocity);
 
   std::vector<std::vector<int>> pair_open_;  // pair -> its open episodes
+  std::vector<uint8_t> single_point_;        // pair -> its narrowphase returns one point
   std::vector<int> open_;         // indices of open impacts
   std::vector<int> closed_;       // closed by the last CloseVanished
   std::vector<int> tag_count_;    // episodes per tag

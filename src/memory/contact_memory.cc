@@ -75,11 +75,13 @@ void TangentialSide(const PointEvaluation& e, const double tangent[3], const dou
 // ---------------------------------------------------------------------------
 
 EpisodeLog::EpisodeLog(const std::vector<int>& points_per_pair, int tags)
-    : pair_open_(points_per_pair.size()), tag_count_(tags, 0) {
+    : pair_open_(points_per_pair.size()), single_point_(points_per_pair.size()),
+      tag_count_(tags, 0) {
   // no allocation while stepping: room for every pair's points
   size_t points = 0;
   for (size_t p = 0; p < points_per_pair.size(); ++p) {
     pair_open_[p].reserve(points_per_pair[p]);
+    single_point_[p] = points_per_pair[p] == 1;
     points += points_per_pair[p];
   }
   open_.reserve(points);
@@ -118,6 +120,8 @@ int EpisodeLog::MatchOpenEpisode(int pair, const double local[2][3], double tole
       }
     }
   }
+  // one point per pair: the pair's contact, moved
+  if (best < 0 && single_point_[pair] && open.size() == 1 && !(*taken & 1)) best = 0;
   if (best < 0) return -1;
   *taken |= uint64_t{1} << best;
   return open[best];

@@ -316,7 +316,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       pair.named = {g1, g2};
       pair.tag = tag_index;
       pair.params = base;
-      pair.slots = MaxContacts(m->geom_type[g1], m->geom_type[g2]);
+      pair.slots = MaxContacts(m, g1, g2);
       const double size = std::min(GeomSize(m, g1), GeomSize(m, g2));
       pair.depth_limit = kDivergenceDepthFraction * size;
       pair.identity_tolerance = kContactIdentityFraction * size;

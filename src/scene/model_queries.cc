@@ -25,13 +25,17 @@ std::string_view TextData(const mjModel* m, int i) {
   return std::string_view(data, strnlen(data, m->text_size[i]));
 }
 
-int MaxContacts(int type1, int type2) {
-  if (type1 == mjGEOM_SPHERE || type2 == mjGEOM_SPHERE ||
-      type1 == mjGEOM_ELLIPSOID || type2 == mjGEOM_ELLIPSOID) {
-    return 1;
-  }
+int MaxContacts(const mjModel* m, int g1, int g2) {
+  const int type1 = m->geom_type[g1];
+  const int type2 = m->geom_type[g2];
+  auto either = [&](int type) { return type1 == type || type2 == type; };
+  if (either(mjGEOM_SPHERE) || either(mjGEOM_ELLIPSOID)) return 1;
   // box-box is contactlaws' own (mujoco/narrowphase.h): the patch's vertices
   if (type1 == mjGEOM_BOX && type2 == mjGEOM_BOX) return kMaxBoxBoxPoints;
+  // mjc_Convex (engine_collision_convex.c): one point, or more with multiCCD
+  const bool convex = (either(mjGEOM_CYLINDER) || either(mjGEOM_MESH)) &&
+                      !either(mjGEOM_PLANE) && !either(mjGEOM_HFIELD);
+  if (convex && !(m->opt.enableflags & mjENBL_MULTICCD)) return 1;
   return mjMAXCONPAIR;
 }
 

@@ -17,9 +17,11 @@ namespace contactlaws {
 std::string_view TextName(const mjModel* m, int i);
 std::string_view TextData(const mjModel* m, int i);
 
-// Most contact points the narrowphase (mujoco/narrowphase.h) returns for two
-// geom types.
-int MaxContacts(int type1, int type2);
+// Most contact points the narrowphase (mujoco/narrowphase.h) returns for
+// geoms g1 and g2 of m: one for a sphere or an ellipsoid, and for MuJoCo
+// 2.2.2's general convex collider (MPR: a cylinder or a mesh with anything
+// but a plane or a height field) unless the scene enables multiCCD.
+int MaxContacts(const mjModel* m, int g1, int g2);
 
 // Sphere-equivalent radius for the material stiffness (paper eq. 2): a
 // sphere's or capsule's radius, infinity for a plane; nullopt otherwise.

@@ -155,6 +155,30 @@ TEST(EpisodeLogTest, PointsAreMatchedByWhereTheySitOnTheBodies) {
   EXPECT_EQ(log.MatchOpenEpisode(0, near_right.local, kTolerance, &taken), 1);
 }
 
+// A pair whose narrowphase returns one point (MuJoCo's convex collider: a
+// mesh face on a box face) has one contact, wherever its point moves: the
+// collider puts it anywhere on the face from one step to the next, and a new
+// episode found deep at a rate far above the floor of v0 turned the law's
+// damping into a wall (a mesh cube landing on a box diverged).
+TEST(EpisodeLogTest, APairOfOnePointKeepsItsEpisodeWhereverThePointMoves) {
+  constexpr double kTolerance = 0.01;  // m
+  EpisodeLog one(/*points_per_pair=*/{1}, /*tags=*/1);
+  one.Commit(0.0, {At(-0.04, 0)});
+  uint64_t taken = 0;
+  const PointEvaluation across = At(0.04, 0);  // 8 cm away on both bodies
+  EXPECT_EQ(one.MatchOpenEpisode(0, across.local, kTolerance, &taken), 0);
+  EXPECT_EQ(one.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);  // taken once
+  // a pair of several points: far away, it is another point
+  EpisodeLog several(/*points_per_pair=*/{4}, /*tags=*/1);
+  several.Commit(0.0, {At(-0.04, 0)});
+  taken = 0;
+  EXPECT_EQ(several.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);
+  // no open episode: a touch
+  EpisodeLog none(/*points_per_pair=*/{1}, /*tags=*/1);
+  taken = 0;
+  EXPECT_EQ(none.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);
+}
+
 TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   EpisodeLog episodes(/*points_per_pair=*/{4}, /*tags=*/1);
   CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
