@@ -144,6 +144,10 @@ double ElasticEnergy(const LawParams& params, double depth);
 // makes it chatter. Points of a pair add (their dampers act in parallel).
 double DampingCoefficient(const LawParams& params, const ContactState& state);
 
+// The depth (m) at which the law's spring carries load (N) at rest: (load /
+// K)^(1/n), or load / k (Kelvin-Voigt). 0 for no load.
+double RestingDepth(const LawParams& params, double load);
+
 // The lag m / c (s) of a contact at rest under load (N) on mass m (kg): c at
 // the depth where the law's spring carries the load, d' = 0, v0 =
 // min_impact_velocity. For the hysteresis family c = a load / v0, however

@@ -178,12 +178,16 @@ double DampingCoefficient(const LawParams& p, const ContactState& state) {
   return std::max(0.0, (EvaluateLaw(p, faster).total - EvaluateLaw(p, state).total) / delta);
 }
 
+double RestingDepth(const LawParams& p, double load) {
+  if (!(load > 0)) return 0;
+  return Law(p.kind).family == LawFamily::kLinear ? load / p.linear_stiffness
+                                                  : std::pow(load / p.stiffness, 1.0 / p.exponent);
+}
+
 double RestingDamperLag(const LawParams& p, double load, double mass) {
   if (!(load > 0)) return kInfinity;
   ContactState rest;
-  rest.depth = Law(p.kind).family == LawFamily::kLinear
-                   ? load / p.linear_stiffness
-                   : std::pow(load / p.stiffness, 1.0 / p.exponent);
+  rest.depth = RestingDepth(p, load);
   rest.impact_velocity = p.min_impact_velocity;
   rest.effective_mass = mass;
   const double c = DampingCoefficient(p, rest);

@@ -210,14 +210,20 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
   TangentialEstimate t;
   t.mass = pair.friction_mass;
   // the deepest the contact gets: the estimate's, or its overlap now
-  const double depth = std::max(std::isfinite(normal.max_depth) ? normal.max_depth : 0.0,
-                                normal.gap ? -*normal.gap : 0.0);
+  double depth = std::max(std::isfinite(normal.max_depth) ? normal.max_depth : 0.0,
+                          normal.gap ? -*normal.gap : 0.0);
   // the load: the pair's weight, or the spring's force there if larger (an
   // impact: the bristles and the regularized curve stiffen with the load)
   ContactState deepest;
   deepest.depth = depth;
   t.normal_force = std::max(t.mass * mju_norm3(cm.model()->opt.gravity),
                             depth > 0 ? EvaluateLaw(pair.params, deepest).elastic : 0.0);
+  // at least the depth of the load at rest, where Mindlin's spring has a
+  // stiffness: bodies placed touching have no impact to estimate, and an
+  // overlap of 1e-17 m
+  const double rest = RestingDepth(pair.params, t.normal_force);
+  const bool resting = rest > depth;
+  depth = std::max(depth, rest);
   if (f.kind == FrictionKind::kNone) return t;
   const std::string model(FrictionName(f.kind));
   if (f.kind == FrictionKind::kRegularized) {
@@ -231,7 +237,10 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
     t.stiffness =
         f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
     t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,
-                         t.stiffness, f.tangential_stiffness ? "" : " (Mindlin, at the max depth)",
+                         t.stiffness,
+                         f.tangential_stiffness ? ""
+                         : resting              ? " (Mindlin, at the depth of its load at rest)"
+                                                : " (Mindlin, at the max depth)",
                          t.mass);
   }
   t.duration = TangentialDuration(f, t.stiffness, t.mass, t.normal_force);

@@ -48,6 +48,35 @@ TEST_F(EstimateTest, ThePaperBallFallsFromItsGap) {
   EXPECT_EQ(EstimateContact(sim.contacts(), 0, 1.0).impact_velocity, 1.0);
 }
 
+// Two cubes placed touching (gap 0, nothing to bring them together): no
+// impact to estimate, yet the stick spring between them has a stiffness,
+// Mindlin's at the depth that carries the upper cube's weight at rest. It
+// read k_t 0 N/m, a period of infinity, from the depth 0 of no estimate.
+TEST_F(EstimateTest, ATouchingPairsStickSpringIsTakenAtItsDepthAtRest) {
+  Simulation& sim = MakeSimulation(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <body name="low" pos="0 0 0.05" mocap="true">
+      <geom name="low" type="box" size="0.05 0.05 0.05"/></body>
+    <body name="up" pos="0 0 0.15"><freejoint/>
+      <geom name="up" type="box" size="0.05 0.05 0.05" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:t" data="geom1=low geom2=up law=hunt-crossley restitution=0.5
+    stiffness=1e7 mu=0.5"/></custom>
+</mujoco>)");
+  mj_forward(sim.model(), sim.data());
+  const ContactEstimate normal = EstimateContact(sim.contacts(), 0);
+  ASSERT_FALSE(std::isfinite(normal.max_depth));  // no impact: not estimated
+  const TangentialEstimate t = EstimateTangential(sim.contact_model(), 0, normal);
+  const double load = 9.81;                      // N: the upper cube's weight
+  const double depth = std::pow(load / 1e7, 1 / 1.5);  // K d^1.5 = load
+  const double mindlin = kMindlinRatio * 1.5 * 1e7 * std::sqrt(depth);
+  EXPECT_NEAR(t.normal_force, load, 1e-12 * load);
+  EXPECT_NEAR(t.stiffness, mindlin, 1e-12 * mindlin);
+  EXPECT_NEAR(t.duration, M_PI * std::sqrt(1.0 / mindlin), 1e-12);  // critical: pi sqrt(m/k)
+  EXPECT_NE(t.what.find("at the depth of its load at rest"), std::string::npos) << t.what;
+}
+
 TEST_F(EstimateTest, DrivenTableAddsItsTopSpeed) {
   Simulation& sim = MakeSceneSimulation("ball_table.xml");
   mj_forward(sim.model(), sim.data());
