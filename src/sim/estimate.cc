@@ -216,12 +216,13 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
   // impact: the bristles and the regularized curve stiffen with the load)
   ContactState deepest;
   deepest.depth = depth;
-  t.normal_force = std::max(t.mass * mju_norm3(cm.model()->opt.gravity),
-                            depth > 0 ? EvaluateLaw(pair.params, deepest).elastic : 0.0);
-  // at least the depth of the load at rest, where Mindlin's spring has a
+  const double weight = t.mass * mju_norm3(cm.model()->opt.gravity);
+  t.normal_force =
+      std::max(weight, depth > 0 ? EvaluateLaw(pair.params, deepest).elastic : 0.0);
+  // at least the depth of the weight at rest, where Mindlin's spring has a
   // stiffness: bodies placed touching have no impact to estimate, and an
   // overlap of 1e-17 m
-  const double rest = RestingDepth(pair.params, t.normal_force);
+  const double rest = RestingDepth(pair.params, weight);
   const bool resting = rest > depth;
   depth = std::max(depth, rest);
   if (f.kind == FrictionKind::kNone) return t;
