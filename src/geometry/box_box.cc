@@ -6,8 +6,16 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/patch.h"
+
 namespace contactlaws {
 namespace {
+
+using geometry::Add;
+using geometry::Cross;
+using geometry::Dot;
+using geometry::Scale;
+using geometry::Sub;
 
 // Edge axes of edges closer to parallel than this sine are skipped: their
 // cross product, normalised, carries round-off amplified by 1/sine, and two
@@ -20,18 +28,6 @@ constexpr double kParallelSine = 1e-3;
 // them) differ by round-off, ~1e-16 of the size amplified by up to
 // 1/kParallelSine, and the choice must not flicker between them.
 constexpr double kAxisTieFraction = 1e-11;
-
-// Room for the clipped polygon: each of the 4 clips adds at most one vertex
-// to a convex polygon; round-off on near-degenerate input could add more.
-constexpr int kClipCapacity = 64;
-
-Vector3 Add(const Vector3& a, const Vector3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vector3 Sub(const Vector3& a, const Vector3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vector3 Scale(const Vector3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double Dot(const Vector3& a, const Vector3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vector3 Cross(const Vector3& a, const Vector3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // Axis i of the box (column i of its rotation), world frame.
 Vector3 Axis(const OrientedBox& box, int i) {
@@ -96,90 +92,6 @@ Candidate SeparatingAxis(const OrientedBox& a, const OrientedBox& b) {
   return edge.separation > face.separation + tie ? edge : face;
 }
 
-// Keeps the part of polygon in (n vertices) where sign * x[c] <= h.
-int Clip(const Vector3* in, int n, int c, double sign, double h, Vector3* out) {
-  int m = 0;
-  for (int k = 0; k < n && m < kClipCapacity - 1; ++k) {
-    const Vector3& p = in[k];
-    const Vector3& q = in[(k + 1) % n];
-    const double dp = sign * p[c] - h;
-    const double dq = sign * q[c] - h;
-    if (dp <= 0) out[m++] = p;
-    if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
-      out[m++] = Add(p, Scale(Sub(q, p), dp / (dp - dq)));
-    }
-  }
-  return m;
-}
-
-// Points of a patch in the reference face's frame (u, v, height along the
-// normal), merged and ordered.
-struct Patch {
-  std::array<Vector3, kClipCapacity> p{};
-  std::array<int, kClipCapacity> merged{};  // how many points each one stands for
-  int count = 0;
-
-  // Adds a point, or averages it into one closer than merge.
-  void Add(const Vector3& x, double merge) {
-    for (int k = 0; k < count; ++k) {
-      const Vector3 d = Sub(x, p[k]);
-      if (Dot(d, d) < merge * merge) {
-        const double w = 1.0 / ++merged[k];
-        p[k] = contactlaws::Add(Scale(p[k], 1 - w), Scale(x, w));
-        return;
-      }
-    }
-    p[count] = x;
-    merged[count++] = 1;
-  }
-
-  // The deepest kMaxBoxBoxPoints (a convex patch never has more), ordered by
-  // angle about their centre, from the first axis.
-  void Order() {
-    std::sort(p.begin(), p.begin() + count, [](const Vector3& x, const Vector3& y) {
-      return x[2] < y[2];
-    });
-    count = std::min(count, kMaxBoxBoxPoints);
-    double cu = 0, cv = 0;
-    for (int k = 0; k < count; ++k) {
-      cu += p[k][0] / count;
-      cv += p[k][1] / count;
-    }
-    std::sort(p.begin(), p.begin() + count, [&](const Vector3& x, const Vector3& y) {
-      return std::atan2(x[1] - cv, x[0] - cu) < std::atan2(y[1] - cv, y[0] - cu);
-    });
-  }
-
-  // Drops, one at a time, the vertex nearest the chord of its two neighbours
-  // while it is nearer than merge (and more than 3 remain): a vertex on a
-  // straight edge adds a point, not a shape.
-  void Simplify(double merge) {
-    while (count > 3) {
-      int drop = -1;
-      double nearest = merge;
-      for (int k = 0; k < count; ++k) {
-        const double d = ChordDistance(p[(k + count - 1) % count], p[k], p[(k + 1) % count]);
-        if (d < nearest) {
-          nearest = d;
-          drop = k;
-        }
-      }
-      if (drop < 0) return;
-      std::copy(p.begin() + drop + 1, p.begin() + count, p.begin() + drop);
-      --count;
-    }
-  }
-
-  // Distance of x from the segment a-b.
-  static double ChordDistance(const Vector3& a, const Vector3& x, const Vector3& b) {
-    const Vector3 ab = Sub(b, a);
-    const double length2 = Dot(ab, ab);
-    const double t = length2 > 0 ? std::clamp(Dot(Sub(x, a), ab) / length2, 0.0, 1.0) : 0.0;
-    const Vector3 off = Sub(x, contactlaws::Add(a, Scale(ab, t)));
-    return std::sqrt(Dot(off, off));
-  }
-};
-
 // The face contact: ref's face with outward normal n (towards inc) against
 // the face of inc most opposed to it.
 void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const OrientedBox& inc,
@@ -204,7 +116,7 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
                               Add(g, Sub(p, q))};
 
   // its corners in the reference face's frame, clipped to the face's sides
-  std::array<Vector3, kClipCapacity> poly, next;
+  std::array<Vector3, geometry::kClipCapacity> poly, next;
   for (int c = 0; c < 4; ++c) {
     const Vector3 r = Sub(corners[c], f);
     poly[c] = {Dot(r, u), Dot(r, v), Dot(r, n)};
@@ -213,18 +125,19 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
   const double bounds[2] = {hu, hv};
   for (int c = 0; c < 2; ++c) {
     for (const double sign : {1.0, -1.0}) {
-      count = Clip(poly.data(), count, c, sign, bounds[c], next.data());
+      count = geometry::Clip(poly.data(), count, c == 0 ? sign : 0.0, c == 1 ? sign : 0.0,
+                             bounds[c], next.data());
       std::swap(poly, next);
     }
   }
 
   // the vertices below the reference plane (height -depth), midway points
-  Patch patch;
+  geometry::Patch patch;
   for (int c = 0; c < count; ++c) {
     if (-poly[c][2] > -margin) patch.Add(poly[c], merge);
   }
   patch.Order();
-  patch.Simplify(merge);
+  patch.Simplify(merge, kMaxBoxBoxPoints);
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
     BoxPoint& point = out->points[c];
@@ -245,18 +158,9 @@ void EdgeContact(const OrientedBox& a, int i, const OrientedBox& b, int j, const
     if (k != i) ea = Add(ea, Scale(Axis(a, k), Dot(Axis(a, k), normal) >= 0 ? a.half[k] : -a.half[k]));
     if (k != j) eb = Add(eb, Scale(Axis(b, k), Dot(Axis(b, k), normal) > 0 ? -b.half[k] : b.half[k]));
   }
-  // closest points of the lines ea + s da and eb + t db, clamped to the edges
-  const Vector3 da = Axis(a, i);
-  const Vector3 db = Axis(b, j);
-  const Vector3 w = Sub(ea, eb);
-  const double c = Dot(da, db);
-  const double wa = Dot(da, w);
-  const double wb = Dot(db, w);
-  const double denominator = 1 - c * c;  // >= kParallelSine^2
-  const double s = std::clamp((c * wb - wa) / denominator, -a.half[i], a.half[i]);
-  const double t = std::clamp((wb - c * wa) / denominator, -b.half[j], b.half[j]);
-  const Vector3 pa = Add(ea, Scale(da, s));
-  const Vector3 pb = Add(eb, Scale(db, t));
+  // closest points of the two edges (their directions >= kParallelSine apart)
+  Vector3 pa, pb;
+  geometry::ClosestOnEdges(ea, Axis(a, i), a.half[i], eb, Axis(b, j), b.half[j], &pa, &pb);
   const double depth = Dot(Sub(pa, pb), normal);
   if (!(depth > -margin)) return;
   out->points[0] = {Scale(Add(pa, pb), 0.5), depth};

@@ -1,0 +1,73 @@
+// Copyright contactlaws authors.
+//
+// What box_box and polytope share: vector arithmetic, the clipping of a
+// polygon by a half-plane of a reference face, the patch of clipped points
+// (merged, ordered, simplified), and the closest points of two edges. Pure
+// geometry, no MuJoCo types, allocates nothing. Internal to src/geometry.
+
+#ifndef CONTACTLAWS_GEOMETRY_PATCH_H_
+#define CONTACTLAWS_GEOMETRY_PATCH_H_
+
+#include <array>
+#include <cmath>
+
+namespace contactlaws {
+
+using Vector3 = std::array<double, 3>;
+
+namespace geometry {
+
+inline Vector3 Add(const Vector3& a, const Vector3& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
+inline Vector3 Sub(const Vector3& a, const Vector3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline Vector3 Scale(const Vector3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+inline double Dot(const Vector3& a, const Vector3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline Vector3 Cross(const Vector3& a, const Vector3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double Norm(const Vector3& a) { return std::sqrt(Dot(a, a)); }
+
+// Room for a clipped polygon: each clip of a convex polygon adds at most one
+// vertex; a polytope face of up to 32 vertices clipped by a reference face of
+// up to 32 sides stays below 64 (polytope.h's kMaxFaceVertices), a box's
+// quadrilateral clipped by 4 sides below 8; round-off on near-degenerate
+// input could add more, and is cut at the capacity.
+constexpr int kClipCapacity = 64;
+
+// Keeps the part of polygon in (n vertices, in a reference face's frame: u,
+// v, height) where a * u + b * v <= h; writes it to out, returns its count.
+int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out);
+
+// Points of a patch in the reference face's frame (u, v, height along the
+// normal), merged, ordered and simplified.
+struct Patch {
+  std::array<Vector3, kClipCapacity> p{};
+  std::array<int, kClipCapacity> merged{};  // how many points each one stands for
+  int count = 0;
+
+  // Adds a point, or averages it into one closer than merge.
+  void Add(const Vector3& x, double merge);
+  // Orders the points by angle about their centre, from the u axis.
+  void Order();
+  // Drops, one at a time, the vertex nearest the chord of its two neighbours
+  // while it is nearer than merge (and more than 3 remain): a vertex on a
+  // straight edge adds a point, not a shape. Then, while more than
+  // max_points remain, drops the vertex nearest its chord whatever its
+  // distance: the one whose loss changes the patch's outline least.
+  void Simplify(double merge, int max_points);
+};
+
+// The closest points of two edges, each given by its centre, unit direction
+// and half length, whose directions are not parallel (1 - (da.db)^2 > 0).
+void ClosestOnEdges(const Vector3& ca, const Vector3& da, double half_a, const Vector3& cb,
+                    const Vector3& db, double half_b, Vector3* pa, Vector3* pb);
+
+}  // namespace geometry
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_GEOMETRY_PATCH_H_
