@@ -6,6 +6,8 @@
 #include <cstring>
 
 #include "geometry/box_box.h"
+#include "geometry/polytope.h"
+#include "scene/model_queries.h"
 
 namespace contactlaws {
 namespace {
@@ -19,9 +21,48 @@ OrientedBox BoxOf(const mjModel* m, const mjData* d, int g) {
   return box;
 }
 
-int CollideBoxPair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin,
-                   mjContact* out) {
-  const BoxBoxContact contact = CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin);
+// Mesh geom g (IsPolytope) as the polytope kernel sees it: its hull's
+// vertices in the world frame and its hull's triangles. MuJoCo 2.2.2's hull
+// graph (user_mesh.cc, MakeGraph): numvert, numface, vert_edgeadr[numvert],
+// vert_globalid[numvert], edge_localid[numvert + 3 numface],
+// face_globalid[3 numface], the faces' vertices as indices into the mesh's
+// vertices (mesh_vert: floats in the geom's frame).
+void MeshPolytope(const mjModel* m, const mjData* d, int g, Polytope* p) {
+  const int mesh = m->geom_dataid[g];
+  const int* graph = m->mesh_graph + m->mesh_graphadr[mesh];
+  const int numvert = graph[0], numface = graph[1];
+  const int* globalid = graph + 2 + numvert;
+  const int* faces = graph + 2 + 3 * numvert + 3 * numface;
+  const float* vert = m->mesh_vert + 3 * m->mesh_vertadr[mesh];
+  const mjtNum* pos = d->geom_xpos + 3 * g;
+  const mjtNum* mat = d->geom_xmat + 9 * g;
+  p->vertex_count = numvert;
+  for (int i = 0; i < numvert; ++i) {
+    const float* v = vert + 3 * globalid[i];
+    for (int r = 0; r < 3; ++r) {
+      p->vertices[i][r] = pos[r] + mat[3 * r] * v[0] + mat[3 * r + 1] * v[1] + mat[3 * r + 2] * v[2];
+    }
+  }
+  p->triangle_count = numface;
+  for (int f = 0; f < numface; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      // the hull vertex whose global id the face names
+      p->triangles[f][k] = static_cast<int>(std::find(globalid, globalid + numvert, faces[3 * f + k]) - globalid);
+    }
+  }
+}
+
+void PolytopeOf(const mjModel* m, const mjData* d, int g, Polytope* p) {
+  if (m->geom_type[g] == mjGEOM_BOX) {
+    *p = PolytopeOfBox(BoxOf(m, d, g));
+  } else {
+    MeshPolytope(m, d, g, p);
+  }
+}
+
+// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal.
+template <typename Contact>
+int Write(const Contact& contact, mjContact* out) {
   for (int i = 0; i < contact.count; ++i) {
     mjContact& c = out[i];
     std::memset(&c, 0, sizeof(c));
@@ -32,12 +73,29 @@ int CollideBoxPair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum mar
   return contact.count;
 }
 
+// Two polytopes, or -1 when the kernel declines (degenerate hull).
+int CollidePolytopePair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin,
+                        mjContact* out) {
+  Polytope a, b;
+  PolytopeOf(m, d, g0, &a);
+  PolytopeOf(m, d, g1, &b);
+  const PolytopeContact contact = CollidePolytopes(a, b, margin);
+  if (contact.feature == PolytopeFeature::kUnsupported) return -1;
+  return Write(contact, out);
+}
+
 }  // namespace
 
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out) {
   const int t0 = m->geom_type[g0];
   const int t1 = m->geom_type[g1];
-  if (t0 == mjGEOM_BOX && t1 == mjGEOM_BOX) return CollideBoxPair(m, d, g0, g1, margin, out);
+  if (t0 == mjGEOM_BOX && t1 == mjGEOM_BOX) {
+    return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out);
+  }
+  if (t1 == mjGEOM_MESH && IsPolytope(m, g0) && IsPolytope(m, g1)) {
+    const int count = CollidePolytopePair(m, d, g0, g1, margin, out);
+    if (count >= 0) return count;
+  }
   return mjCOLLISIONFUNC[t0][t1](m, d, out, g0, g1, margin);
 }
 

@@ -365,7 +365,11 @@ void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,
                               const TagResolver& resolve, std::vector<int>* warned_types) {
   const int t1 = std::min(model_->geom_type[g1], model_->geom_type[g2]);
   const int t2 = std::max(model_->geom_type[g1], model_->geom_type[g2]);
-  const DepthVerdict verdict = JudgeDepth(t1, t2);
+  DepthVerdict verdict = JudgeDepth(t1, t2);
+  // box-mesh and mesh-mesh within the polytope caps are contactlaws' own
+  if (t2 == mjGEOM_MESH && IsPolytope(model_, g1) && IsPolytope(model_, g2)) {
+    verdict = {DepthTrust::kComputed, ""};
+  }
   // refused in a group too: skipped, the pair would fall back to MuJoCo's
   // own contact unsaid
   if (verdict.trust == DepthTrust::kRefused) {

@@ -8,6 +8,7 @@
 
 #include "contactlaws/contact_model.h"
 #include "geometry/box_box.h"
+#include "geometry/polytope.h"
 
 namespace contactlaws {
 namespace {
@@ -25,13 +26,26 @@ std::string_view TextData(const mjModel* m, int i) {
   return std::string_view(data, strnlen(data, m->text_size[i]));
 }
 
+bool IsPolytope(const mjModel* m, int g) {
+  if (m->geom_type[g] == mjGEOM_BOX) return true;
+  if (m->geom_type[g] != mjGEOM_MESH) return false;
+  const int mesh = m->geom_dataid[g];
+  const int graph = mesh < 0 ? -1 : m->mesh_graphadr[mesh];
+  if (graph < 0) return false;  // no hull: fewer than 4 vertices, or qhull failed
+  // the graph's head (user_mesh.cc, MakeGraph): numvert, numface
+  return m->mesh_graph[graph] <= kMaxPolytopeVertices &&
+         m->mesh_graph[graph + 1] <= kMaxPolytopeTriangles;
+}
+
 int MaxContacts(const mjModel* m, int g1, int g2) {
   const int type1 = m->geom_type[g1];
   const int type2 = m->geom_type[g2];
   auto either = [&](int type) { return type1 == type || type2 == type; };
   if (either(mjGEOM_SPHERE) || either(mjGEOM_ELLIPSOID)) return 1;
-  // box-box is contactlaws' own (mujoco/narrowphase.h): the patch's vertices
+  // box-box, box-mesh, mesh-mesh are contactlaws' own (mujoco/narrowphase.h):
+  // the patch's vertices
   if (type1 == mjGEOM_BOX && type2 == mjGEOM_BOX) return kMaxBoxBoxPoints;
+  if (IsPolytope(m, g1) && IsPolytope(m, g2)) return kMaxPolytopePoints;
   // mjc_Convex (engine_collision_convex.c): one point, or more with multiCCD
   const bool convex = (either(mjGEOM_CYLINDER) || either(mjGEOM_MESH)) &&
                       !either(mjGEOM_PLANE) && !either(mjGEOM_HFIELD);

@@ -17,10 +17,17 @@ namespace contactlaws {
 std::string_view TextName(const mjModel* m, int i);
 std::string_view TextData(const mjModel* m, int i);
 
+// Geom g is a polytope contactlaws collides itself (geometry/polytope.h): a
+// box, or a mesh whose convex hull (MuJoCo's mesh_graph) is within
+// kMaxPolytopeVertices and kMaxPolytopeTriangles.
+bool IsPolytope(const mjModel* m, int g);
+
 // Most contact points the narrowphase (mujoco/narrowphase.h) returns for
-// geoms g1 and g2 of m: one for a sphere or an ellipsoid, and for MuJoCo
-// 2.2.2's general convex collider (MPR: a cylinder or a mesh with anything
-// but a plane or a height field) unless the scene enables multiCCD.
+// geoms g1 and g2 of m: kMaxPolytopePoints for two polytopes (box-box,
+// box-mesh, mesh-mesh: contactlaws' own), one for a sphere or an ellipsoid,
+// and for MuJoCo 2.2.2's general convex collider (MPR: a cylinder or a mesh
+// beyond the caps with anything but a plane or a height field) unless the
+// scene enables multiCCD.
 int MaxContacts(const mjModel* m, int g1, int g2);
 
 // Sphere-equivalent radius for the material stiffness (paper eq. 2): a

@@ -7,6 +7,11 @@
 #include <fmt/format.h>
 #include <mujoco/mujoco.h>
 
+#include "geometry/polytope.h"
+
+static_assert(contactlaws::kMaxPolytopeVertices == 64 && contactlaws::kMaxPolytopeTriangles == 124,
+              "the box-mesh and mesh-mesh warnings name the polytope caps");
+
 namespace contactlaws {
 namespace {
 
@@ -59,12 +64,16 @@ const Row kRows[] = {
     {mjGEOM_PLANE, mjGEOM_MESH, DepthTrust::kWarned,
      "MuJoCo 2.2.2 returns at most 3 points, so a mesh face resting on the plane is held at 3 of "
      "its corners; depths exact (docs/geometry.md)"},
+    // contactlaws' own when each mesh's hull is within the polytope caps
+    // (ContactModel::CheckDepth says nothing then); beyond them, MuJoCo's
     {mjGEOM_BOX, mjGEOM_MESH, DepthTrust::kWarned,
-     "MuJoCo 2.2.2 returns one point, so a face resting on a face is held at one point; depths "
-     "exact (docs/geometry.md)"},
+     "a mesh hull beyond 64 vertices or 124 triangles is left to MuJoCo 2.2.2, which returns "
+     "one point, so a face resting on a face is held at one point; depths exact "
+     "(docs/geometry.md)"},
     {mjGEOM_MESH, mjGEOM_MESH, DepthTrust::kWarned,
-     "MuJoCo 2.2.2 returns one point, so a face resting on a face is held at one point; depths "
-     "exact (docs/geometry.md)"},
+     "a mesh hull beyond 64 vertices or 124 triangles is left to MuJoCo 2.2.2, which returns "
+     "one point, so a face resting on a face is held at one point; depths exact "
+     "(docs/geometry.md)"},
 };
 
 }  // namespace

@@ -3,7 +3,8 @@
 // The narrowphase the laws get (src/mujoco/narrowphase.cc) on the survey's
 // configurations (narrowphase_depth_test.cc): box-box, now contactlaws' own,
 // is held to the exact depth and witness points on every configuration and
-// overlap, while MuJoCo's own box-box still halves; every other pair is
+// overlap, while MuJoCo's own box-box still halves; box-mesh and mesh-mesh,
+// contactlaws' polytope kernel, to the float vertices; every other pair is
 // MuJoCo's, contact for contact; and the verdict per pair type
 // (src/scene/pair_trust.cc) follows the survey's measured errors.
 
@@ -18,6 +19,7 @@
 #include <mujoco/mujoco.h>
 
 #include "geometry/box_box.h"
+#include "geometry/polytope.h"
 #include "mujoco/narrowphase_rig.h"
 #include "scene/pair_trust.h"
 
@@ -60,9 +62,36 @@ TEST_F(Narrowphase, BoxBoxHasEachCornerOnceAndNothingOffTheFace) {
   }
 }
 
+// The survey's mesh is the box given by its 8 vertices as floats: a corner
+// is off the box by up to half a float's ulp at 0.1 m, 3.7e-9 m, which is
+// 0.37 of the smallest overlap (1e-8 m) and 3.7e-6 of the largest (1e-3 m).
+constexpr double kFloatVertex = 3.7e-9;  // m
+// The witness is measured along the normal (+z): a corner of a face tilted
+// by t that is off by kFloatVertex sideways reads kFloatVertex / tan t off
+// the surface along it. The survey's least tilt is 1 degree (tilt1).
+// Measured: 1.7e-7 m (tilt1), 3.4e-8 (tilt5), 8.7e-9 (tilt20).
+const double kFloatWitness = 2 * kFloatVertex / std::tan(1.0 * M_PI / 180);  // m
+
+TEST_F(Narrowphase, BoxMeshAndMeshMeshAreOursOnEveryConfiguration) {
+  for (const auto& [b, t] : {std::pair{mjGEOM_BOX, mjGEOM_MESH}, {mjGEOM_MESH, mjGEOM_MESH}}) {
+    for (const Measurement& r : Rows(b, t, Adapter)) {
+      SCOPED_TRACE(r.pair + " " + r.config + " " + std::to_string(r.fraction));
+      EXPECT_GE(r.ncon, 1);
+      EXPECT_LE(r.ncon, contactlaws::kMaxPolytopePoints);
+      EXPECT_LT(std::fabs(r.depth_error) * r.exact, 2 * kFloatVertex);
+      EXPECT_LT(r.witness * r.exact, kFloatWitness);
+    }
+    // the face on the face: its 4 corners (MuJoCo: one point)
+    const Config& face = FindConfig(b, t, "face");
+    EXPECT_EQ(Contacts(b, t, face, 1e-3, Adapter).size(), 4u);
+    EXPECT_EQ(Contacts(b, t, face, 1e-3).size(), 1u);
+  }
+}
+
 TEST_F(Narrowphase, OtherPairsAreMujocosContactForContact) {
   for (const auto& [b, t] : CollidedPairs()) {
     if (b == mjGEOM_BOX && t == mjGEOM_BOX) continue;
+    if (t == mjGEOM_MESH && (b == mjGEOM_BOX || b == mjGEOM_MESH)) continue;  // ours
     const std::vector<Measurement> ours = Rows(b, t, Adapter);
     const std::vector<Measurement> theirs = Rows(b, t);
     ASSERT_EQ(ours.size(), theirs.size());
