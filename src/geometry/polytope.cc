@@ -149,7 +149,8 @@ bool FaceContact(const Hull& ref, int k, const Hull& inc, double margin, double 
   patch.Simplify(merge, kMaxPolytopePoints);
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
-    out->points[c].pos = Add(Add(f, Add(Scale(u, x[0]), Scale(v, x[1]))), Scale(face.normal, 0.5 * x[2]));
+    const Vector3 in_plane = Add(f, Add(Scale(u, x[0]), Scale(v, x[1])));
+    out->points[c].pos = Add(in_plane, Scale(face.normal, 0.5 * x[2]));
     out->points[c].depth = -x[2];
   }
   out->count = patch.count;
@@ -215,7 +216,9 @@ Polytope PolytopeOfBox(const OrientedBox& box) {
                                      {0, 4, 5}, {0, 5, 1}, {2, 3, 7}, {2, 7, 6},
                                      {0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}};
   p.triangle_count = 12;
-  for (int t = 0; t < 12; ++t) p.triangles[t] = {kTriangles[t][0], kTriangles[t][1], kTriangles[t][2]};
+  for (int t = 0; t < 12; ++t) {
+    p.triangles[t] = {kTriangles[t][0], kTriangles[t][1], kTriangles[t][2]};
+  }
   return p;
 }
 

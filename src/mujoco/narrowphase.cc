@@ -40,14 +40,16 @@ void MeshPolytope(const mjModel* m, const mjData* d, int g, Polytope* p) {
   for (int i = 0; i < numvert; ++i) {
     const float* v = vert + 3 * globalid[i];
     for (int r = 0; r < 3; ++r) {
-      p->vertices[i][r] = pos[r] + mat[3 * r] * v[0] + mat[3 * r + 1] * v[1] + mat[3 * r + 2] * v[2];
+      const mjtNum* row = mat + 3 * r;
+      p->vertices[i][r] = pos[r] + row[0] * v[0] + row[1] * v[1] + row[2] * v[2];
     }
   }
   p->triangle_count = numface;
   for (int f = 0; f < numface; ++f) {
     for (int k = 0; k < 3; ++k) {
       // the hull vertex whose global id the face names
-      p->triangles[f][k] = static_cast<int>(std::find(globalid, globalid + numvert, faces[3 * f + k]) - globalid);
+      const int* local = std::find(globalid, globalid + numvert, faces[3 * f + k]);
+      p->triangles[f][k] = static_cast<int>(local - globalid);
     }
   }
 }

@@ -68,6 +68,32 @@ TEST_F(HooksTest, StepsAllocateNothingInFlightOrInContact) {
   EXPECT_EQ(allocations, 0) << "over " << steps + 2000 << " steps";
 }
 
+TEST_F(HooksTest, SteppingAMeshCubeOnABoxAllocatesNothing) {
+  // box-mesh through contactlaws' polytope kernel (mujoco/narrowphase.cc):
+  // the cube resting on its 4 corners
+  UniqueModel m = Load(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <asset><mesh name="cube" vertex="-.05 -.05 -.05 .05 -.05 -.05 -.05 .05 -.05 .05 .05 -.05
+                                   -.05 -.05 .05 .05 -.05 .05 -.05 .05 .05 .05 .05 .05"/></asset>
+  <worldbody>
+    <geom name="base" type="box" size="0.2 0.2 0.1" pos="0 0 0.1"/>
+    <body pos="0 0 0.25"><freejoint/><geom name="cube" type="mesh" mesh="cube" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:cube" data="geom1=cube geom2=base law=hunt-crossley
+    restitution=0.5 stiffness=1e7"/></custom>
+</mujoco>)");
+  ContactModel cm(m.get(), "mesh on box");
+  mjData* d = MakeData(m.get());
+  ContactData contacts(cm, d);
+  for (int i = 0; i < 100; ++i) contacts.Step();
+  count_allocations = true;
+  allocations = 0;
+  for (int i = 0; i < 2000; ++i) contacts.Step();
+  count_allocations = false;
+  EXPECT_EQ(contacts.latest().size(), 4u);
+  EXPECT_EQ(allocations, 0) << "over 2000 steps";
+}
+
 TEST_F(HooksTest, SteppingASlidingThenStickingContactAllocatesNothing) {
   // a block sliding to rest under coulomb friction, with rolling and
   // torsional resistance (condim 6): the stick state is committed each step
