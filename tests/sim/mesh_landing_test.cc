@@ -39,8 +39,9 @@ constexpr double kRockTolerance = 1e-9;  // rad/s
 // by RK4's error at 1e-4 s, this fraction of the drop's energy m g h (the
 // laws only dissipate). The landing itself raises the total by 2.2e-4 J
 // (4.5e-4 of m g h), exactly as a box cube's landing through the box-box
-// kernel does (measured with the cube's geom a box): the touch is found a
-// step late, a property of the fixed step, not of the patch.
+// kernel does (measured with the cube's geom a box): a property of the
+// landing at this step, shared with box-box, not of the patch (its cause is
+// not pinned down here).
 constexpr double kEnergyCreepTolerance = 1e-7;
 constexpr double kSettled = 0.5;  // s: the landing at 0.1 s, settled by then
 
