@@ -16,18 +16,8 @@ using geometry::Cross;
 using geometry::Dot;
 using geometry::Scale;
 using geometry::Sub;
-
-// Edge axes of edges closer to parallel than this sine are skipped: their
-// cross product, normalised, carries round-off amplified by 1/sine, and two
-// nearly parallel edges touch as a face contact's clipped edge does.
-constexpr double kParallelSine = 1e-3;
-
-// An edge axis, or a face of box b, replaces the best face of box a only when
-// it separates more by this fraction of the largest half size: the axes that
-// coincide (the faces of two aligned boxes, and the edge products equal to
-// them) differ by round-off, ~1e-16 of the size amplified by up to
-// 1/kParallelSine, and the choice must not flicker between them.
-constexpr double kAxisTieFraction = 1e-11;
+using geometry::kAxisTieFraction;
+using geometry::kParallelSine;
 
 // Axis i of the box (column i of its rotation), world frame.
 Vector3 Axis(const OrientedBox& box, int i) {
@@ -132,12 +122,8 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
   }
 
   // the vertices below the reference plane (height -depth), midway points
-  geometry::Patch patch;
-  for (int c = 0; c < count; ++c) {
-    if (-poly[c][2] > -margin) patch.Add(poly[c], merge);
-  }
-  patch.Order();
-  patch.Simplify(merge, kMaxBoxBoxPoints);
+  const geometry::Patch patch =
+      geometry::PatchBelow(poly.data(), count, margin, merge, kMaxBoxBoxPoints);
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
     BoxPoint& point = out->points[c];

@@ -75,6 +75,16 @@ void Patch::Simplify(double merge, int max_points) {
   }
 }
 
+Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points) {
+  Patch patch;
+  for (int c = 0; c < count; ++c) {
+    if (-clipped[c][2] > -margin) patch.Add(clipped[c], merge);
+  }
+  patch.Order();
+  patch.Simplify(merge, max_points);
+  return patch;
+}
+
 void ClosestOnEdges(const Vector3& ca, const Vector3& da, double half_a, const Vector3& cb,
                     const Vector3& db, double half_b, Vector3* pa, Vector3* pb) {
   const Vector3 w = Sub(ca, cb);

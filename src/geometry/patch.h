@@ -32,6 +32,18 @@ inline Vector3 Cross(const Vector3& a, const Vector3& b) {
 }
 inline double Norm(const Vector3& a) { return std::sqrt(Dot(a, a)); }
 
+// The separating-axis test of box_box and polytope. Edge axes of edges
+// closer to parallel than this sine are skipped: their cross product,
+// normalised, carries round-off amplified by 1/sine, and two nearly parallel
+// edges touch as a face contact's clipped edge does.
+constexpr double kParallelSine = 1e-3;
+// An edge axis, or a face of the second body, replaces the best face of the
+// first only when it separates more by this fraction of the largest half
+// size: the axes that coincide (the faces of two aligned boxes, and the edge
+// products equal to them) differ by round-off, ~1e-16 of the size amplified
+// by up to 1/kParallelSine, and the choice must not flicker between them.
+constexpr double kAxisTieFraction = 1e-11;
+
 // Room for a clipped polygon: each clip of a convex polygon adds at most one
 // vertex; a polytope face of up to 32 vertices clipped by a reference face of
 // up to 32 sides stays below 64 (polytope.h's kMaxFaceVertices), a box's
@@ -61,6 +73,11 @@ struct Patch {
   // distance: the one whose loss changes the patch's outline least.
   void Simplify(double merge, int max_points);
 };
+
+// The patch of a clipped polygon (count points in the reference face's
+// frame): its points below the reference plane (height < margin), merged,
+// ordered and simplified to at most max_points.
+Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points);
 
 // The closest points of two edges, each given by its centre, unit direction
 // and half length, whose directions are not parallel (1 - (da.db)^2 > 0).

@@ -19,15 +19,8 @@ using geometry::Hull;
 using geometry::Norm;
 using geometry::Scale;
 using geometry::Sub;
-
-// As box_box.cc: edge pairs closer to parallel than this sine are skipped
-// (their normalised cross product carries round-off amplified by 1/sine; two
-// nearly parallel edges touch as a face contact's clipped side does), and an
-// edge axis or a face of b replaces the best face of a only when it
-// separates more by this fraction of the largest half extent, so that
-// coinciding axes do not flicker.
-constexpr double kParallelSine = 1e-3;
-constexpr double kAxisTieFraction = 1e-11;
+using geometry::kAxisTieFraction;
+using geometry::kParallelSine;
 
 struct Candidate {
   Vector3 normal{};  // from a towards b
@@ -141,12 +134,8 @@ bool FaceContact(const Hull& ref, int k, const Hull& inc, double margin, double 
     count = geometry::Clip(poly.data(), count, a, b, a * p[0] + b * p[1], next.data());
     std::swap(poly, next);
   }
-  geometry::Patch patch;
-  for (int c = 0; c < count; ++c) {
-    if (-poly[c][2] > -margin) patch.Add(poly[c], merge);
-  }
-  patch.Order();
-  patch.Simplify(merge, kMaxPolytopePoints);
+  const geometry::Patch patch =
+      geometry::PatchBelow(poly.data(), count, margin, merge, kMaxPolytopePoints);
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
     const Vector3 in_plane = Add(f, Add(Scale(u, x[0]), Scale(v, x[1])));

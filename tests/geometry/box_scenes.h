@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "geometry/box_box.h"
+#include "geometry/patch.h"
 
 namespace contactlaws {
 namespace box_scenes {
@@ -19,11 +20,11 @@ using Matrix = std::array<double, 9>;  // row-major
 
 inline constexpr double kPi = 3.14159265358979323846;
 
-inline Vector3 Add(const Vector3& a, const Vector3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Vector3 Sub(const Vector3& a, const Vector3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline Vector3 Scale(const Vector3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-inline double Dot(const Vector3& a, const Vector3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline double Norm(const Vector3& a) { return std::sqrt(Dot(a, a)); }
+using geometry::Add;
+using geometry::Dot;
+using geometry::Norm;
+using geometry::Scale;
+using geometry::Sub;
 
 inline Vector3 Apply(const Matrix& m, const Vector3& v) {
   return {m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
