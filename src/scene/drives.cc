@@ -1,0 +1,66 @@
+// Copyright contactlaws authors.
+//
+// The driven bodies of a ContactModel: the contactdrive: tags read and
+// checked, and a drive's prescribed motion.
+
+#include "contactlaws/contact_model.h"
+
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "scene/model_queries.h"
+#include "scene/tags.h"
+
+namespace contactlaws {
+
+void Drive::Position(double t, double pos[3]) const {
+  const double s =
+      motion == Motion::kLinear ? speed * t : amplitude * std::sin(omega * t + phase);
+  for (int i = 0; i < 3; ++i) pos[i] = ref[i] + axis[i] * s;
+}
+
+void Drive::Velocity(double t, double vel[3]) const {
+  const double c =
+      motion == Motion::kLinear ? speed : amplitude * omega * std::cos(omega * t + phase);
+  for (int i = 0; i < 3; ++i) vel[i] = axis[i] * c;
+}
+
+void ContactModel::ReadDrives() {
+  const mjModel* m = model_;
+  for (int i = 0; i < m->ntext; ++i) {
+    std::string_view name = TextName(m, i);
+    if (name.substr(0, kDriveTagPrefix.size()) != kDriveTagPrefix) continue;
+    DriveTagSpec spec = ParseDriveTag(source_, name, TextData(m, i));
+    auto fail = [&](std::string_view what) {
+      throw Error(fmt::format("{}: {}: {}", source_, name, what));
+    };
+    Drive drive;
+    drive.label = spec.label;
+    drive.body = mj_name2id(m, mjOBJ_BODY, spec.body.c_str());
+    if (drive.body < 0) {
+      fail(fmt::format("body={}: no body is named '{}'", spec.body, spec.body));
+    }
+    drive.mocap = m->body_mocapid[drive.body];
+    if (drive.mocap < 0) {
+      fail(fmt::format("body={}: a driven body must be declared mocap=\"true\"",
+                       spec.body));
+    }
+    if (body_drive_[drive.body] >= 0) {
+      fail(fmt::format("body={}: the body is driven twice", spec.body));
+    }
+    for (int k = 0; k < 3; ++k) drive.ref[k] = m->body_pos[3 * drive.body + k];
+    drive.axis = spec.axis;
+    drive.amplitude = spec.amplitude;
+    drive.omega = spec.omega;
+    drive.phase = spec.phase;
+    drive.motion = spec.linear ? Drive::Motion::kLinear : Drive::Motion::kSine;
+    drive.speed = spec.speed;
+    body_drive_[drive.body] = static_cast<int>(drives_.size());
+    drives_.push_back(drive);
+  }
+}
+
+}  // namespace contactlaws
