@@ -3,7 +3,6 @@
 #include "contactlaws/contact_model.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <limits>
 #include <string_view>
