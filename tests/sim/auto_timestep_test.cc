@@ -16,6 +16,7 @@
 #include "mujoco_test_util.h"
 #include "process_util.h"
 #include "sim/drop_reference.h"
+#include "sim/friction_scenes.h"
 
 namespace contactlaws {
 namespace {
@@ -172,22 +173,9 @@ TEST(AutoTimestepTest, SpinCostsNoAccuracy) {
 // friction_sim_test).
 double InclineDrift(const std::string& friction, std::optional<double> fixed_step,
                     double* largest_step) {
-  constexpr double kTan = 0.3;
-  const double c = 1 / std::sqrt(1 + kTan * kTan);
-  const double g = 9.81;
-  const double depth = std::pow(g * c / 4 / 1e6, 2.0 / 3.0);  // each corner's share
-  const std::string xml = fmt::format(R"(<mujoco>
-  <option timestep="{0}" integrator="RK4" gravity="{1} 0 {2}"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="50 50 0.1"/>
-    <body name="block" pos="0 0 {3}"><freejoint/>
-      <geom name="block" type="box" size="0.05 0.05 0.05" mass="1"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:contact" data="geom1=block geom2=floor law=hunt-crossley
-    restitution=0.5 stiffness=1e6 mu_static=0.5 mu_kinetic=0.4 {4}"/></custom>
-</mujoco>)",
-                                      fixed_step.value_or(1e-3), g * kTan * c, -g * c,
-                                      0.05 - depth, friction);
+  // the friction tests' block on their incline (friction_scenes.h), tan 0.3
+  const std::string xml =
+      testing::Incline(false, 0.3, "mu_static=0.5 mu_kinetic=0.4 " + friction);
   const Scene scene("incline.xml", LoadModelString(xml, "incline.xml"));
   std::unique_ptr<Simulation> sim = scene.Make({});
   std::optional<AutoTimestep> stepper;
