@@ -154,41 +154,44 @@ LawKind ParseLaw(std::string_view option, std::string_view name) {
   return *law;
 }
 
-std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text) {
-  if (text == "all") return AllLaws();
-  std::vector<LawKind> laws;
+namespace {
+
+// Names separated by commas, each read by parse (nullopt: not `what`, one of
+// `names`, with suggest's hint), none twice; "all" is every one, all.
+template <typename Kind>
+std::vector<Kind> ParseNameList(std::string_view option, std::string_view text,
+                                std::string_view what, const std::string& names,
+                                const std::vector<Kind>& all,
+                                std::optional<Kind> (*parse)(std::string_view),
+                                std::string (*suggest)(std::string_view)) {
+  if (text == "all") return all;
+  std::vector<Kind> kinds;
   for (std::string_view name : Split(text, ',')) {
-    const std::optional<LawKind> law = ParseLawName(name);
-    if (!law) {
-      Refuse(option, text, fmt::format("has '{}', which is not a law (all, {}){}", name,
-                                       LawNameList(), LawSuggestion(name)));
+    const std::optional<Kind> kind = parse(name);
+    if (!kind) {
+      Refuse(option, text, fmt::format("has '{}', which is not {} (all, {}){}", name, what,
+                                       names, suggest(name)));
     }
-    if (std::find(laws.begin(), laws.end(), *law) != laws.end()) {
+    if (std::find(kinds.begin(), kinds.end(), *kind) != kinds.end()) {
       Refuse(option, text, fmt::format("names {} twice", name));
     }
-    laws.push_back(*law);
+    kinds.push_back(*kind);
   }
-  return laws;
+  return kinds;
+}
+
+}  // namespace
+
+std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text) {
+  return ParseNameList(option, text, "a law", LawNameList(), AllLaws(), &ParseLawName,
+                       &LawSuggestion);
 }
 
 std::vector<FrictionKind> ParseFrictionList(std::string_view option, std::string_view text) {
-  std::vector<FrictionKind> models;
-  if (text == "all") {
-    for (const FrictionInfo& model : FrictionModels()) models.push_back(model.kind);
-    return models;
-  }
-  for (std::string_view name : Split(text, ',')) {
-    const std::optional<FrictionKind> model = ParseFrictionName(name);
-    if (!model) {
-      Refuse(option, text, fmt::format("has '{}', which is not a friction model (all, {}){}", name,
-                                       FrictionNameList(), FrictionSuggestion(name)));
-    }
-    if (std::find(models.begin(), models.end(), *model) != models.end()) {
-      Refuse(option, text, fmt::format("names {} twice", name));
-    }
-    models.push_back(*model);
-  }
-  return models;
+  std::vector<FrictionKind> all;
+  for (const FrictionInfo& model : FrictionModels()) all.push_back(model.kind);
+  return ParseNameList(option, text, "a friction model", FrictionNameList(), all,
+                       &ParseFrictionName, &FrictionSuggestion);
 }
 
 double ParseDissipation(std::string_view text) {

@@ -198,22 +198,24 @@ std::string Lower(std::string_view text) {
   return lower;
 }
 
+// ": did you mean 'NAME'?" for the name of names nearest to name, any case.
+std::string Suggestion(std::string_view name, const std::vector<std::string_view>& names) {
+  const std::string_view nearest = NearestWord(Lower(name), names.data(), names.size());
+  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
+}
+
 }  // namespace
 
 std::string LawSuggestion(std::string_view name) {
   std::vector<std::string_view> names;
   for (const LawInfo& law : Laws()) names.push_back(law.name);
-  const std::string lower = Lower(name);
-  const std::string_view nearest = NearestWord(lower, names.data(), names.size());
-  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
+  return Suggestion(name, names);
 }
 
 std::string FrictionSuggestion(std::string_view name) {
   std::vector<std::string_view> names;
   for (const FrictionInfo& model : FrictionModels()) names.push_back(model.name);
-  const std::string lower = Lower(name);
-  const std::string_view nearest = NearestWord(lower, names.data(), names.size());
-  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
+  return Suggestion(name, names);
 }
 
 void CheckTagPrefix(std::string_view source, std::string_view name) {
