@@ -409,5 +409,23 @@ TEST_F(ChungOoiTest, TheLedgerBalancesThroughATangentialRebound) {
               "%.9g J\n", start.kinetic, end.kinetic, end.dissipated, start.total(), end.total());
 }
 
+// mjcf/chung_ooi_oblique.xml, the scene scripts/run.sh sweeps: test 4 at 45
+// degrees, which slides throughout, leaves at the rigid-body closed form.
+TEST_F(ChungOoiTest, TheSceneOfTest4SlidesAt45DegreesAsTheClosedFormHasIt) {
+  Simulation& sim = MakeSceneSimulation("chung_ooi_oblique.xml");
+  while (sim.time() < 2e-5) sim.Step();
+  ImpactCase c{kAlumina};
+  c.vn = c.vt = 3.9 * std::sqrt(0.5);
+  const Rebound sliding = *SlidingRebound(c);
+  // the lever R - d/2 of the spin (d up to 6.3 um: 0.12% of R)
+  constexpr double kLeverShare = 2e-3;  // relative
+  // law=exact rebounds at e to 1e-5 (check: e_post 0.980008), which moves
+  // v_t' by mu v_n 1e-5 = 2.5e-6 m/s at most
+  constexpr double kRestitutionShare = 1e-5;
+  EXPECT_NEAR(sim.data()->qvel[0], sliding.vt, kRestitutionShare * c.mu * c.vn);
+  EXPECT_NEAR(sim.data()->qvel[4], sliding.w, kLeverShare * sliding.w);
+  EXPECT_NEAR(sim.data()->qvel[2], sliding.vn, kRestitutionShare * c.vn);
+}
+
 }  // namespace
 }  // namespace contactlaws
