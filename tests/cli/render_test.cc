@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -297,6 +298,23 @@ TEST(RenderTest, OverlayShowsTheSlowMotion) {
   // the overlay's three lines, 24 pixels each at MuJoCo's font at 100%:
   // measured to row 74
   EXPECT_LT(changed.bottom, kHeight * 3 / 8);
+}
+
+// Every scene of mjcf/ (their visuals: textures, skybox, shadows) draws:
+// two small frames each.
+TEST(RenderTest, ShippedScenesDraw) {
+  int scenes = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf")) {
+    if (entry.path().extension() != ".xml") continue;
+    const std::string dir = ::testing::TempDir() + "/render_" + entry.path().stem().string();
+    const Result r = RunCli(fmt::format("render {} --duration 0.05 --fps 20 --width 64 "
+                                        "--height 48 --output {}/", entry.path().string(), dir));
+    EXPECT_EQ(r.status, 0) << entry.path() << r.output;
+    EXPECT_EQ(ReadPng(Frame(dir, 1)).width, 64) << entry.path();
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 9);
 }
 
 // ffprobe's frame count and size of a video.
