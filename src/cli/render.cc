@@ -5,7 +5,9 @@
 // k / (fps * slowmo), k = 0, 1, ... up to the duration: Advance's sample
 // grid, so the frames are the states run's trajectory rows would hold (a
 // fixed step samples at the first step within half a step of the frame
-// time; the auto step is cut at the frame times).
+// time; the auto step is cut at the frame times). With the tracking camera
+// (the default) the run is simulated twice: a first pass at the frame times
+// finds what to frame (render/tracking_camera.h).
 
 #include <signal.h>
 

@@ -3,7 +3,10 @@
 // contactlaws render: a video of the right frame count and size, frames that
 // change where the ball moves, and in each frame the pose of the simulated
 // state at its time (a falling ball's pixel row against its free-fall
-// height projected through the scene's camera); the bad inputs.
+// height projected through the scene's camera); the tracking camera
+// framing a sliding die in every frame; a resting body's arrow as long as
+// the body; the slow motion in the overlay; every scene of mjcf/ drawn; the
+// bad inputs.
 
 #include <png.h>
 
