@@ -233,9 +233,12 @@ void AddRender(CLI::App* app, Commands* c) {
   AddNumber(cmd, "--slowmo", &r.slowmo,
             "K: one simulated second lasts K seconds of video (a contact lasts a millisecond)")
       ->capture_default_str();
-  cmd->add_option("--camera", r.camera, "a camera of the scene (default: MuJoCo's free camera)");
+  cmd->add_option("--camera", r.camera,
+                  "track (the default: follows and frames the moving bodies), free (MuJoCo's "
+                  "free camera of the model) or a camera of the scene");
   AddNumber(cmd, "--force-scale", &r.force_scale,
-            "force arrows, m/N (default: MuJoCo's, visual/map force / mean body mass)");
+            "force arrows, m/N (default: a body's weight as long as the body, at most 3 "
+            "times)");
 }
 
 // The subcommands, in the order the help lists them.

@@ -8,15 +8,24 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
+#include "render/contact_marks.h"
 
 namespace contactlaws::render {
 namespace {
 
 // Room in the scene for the model's geoms, MuJoCo's decorations and our
-// arrows (mujoco-simulate uses 2000 too).
+// marks (mujoco-simulate uses 2000 too).
 constexpr int kMaxSceneGeoms = 2000;
-// The overlay's font, % of MuJoCo's base size.
-constexpr int kFontScale = 100;
+// The moving bodies' opacity: solid enough to read as bodies, clear enough
+// for the contact marks under and inside them.
+constexpr float kBodyAlpha = 0.7f;
+
+// The tracking camera frames the bodies below the overlay, which takes at
+// most this share of the height (more tags than that are drawn over).
+constexpr double kMaxOverlayShare = 0.4;
+// The overlay's font, % of MuJoCo's base size (one of mjtFontScale): 100
+// below 400 rows, 150 from 400 (640 x 480), 50 more per 300 rows, up to 300.
+int FontScale(int height) { return std::clamp(100 + 50 * ((height - 100) / 300), 100, 300); }
 
 std::string LastRestitution(const Simulation& sim, int tag) {
   const std::vector<Impact>& impacts = sim.contacts().impacts();
@@ -36,9 +45,8 @@ int FindCamera(const mjModel* m, const std::string& source, const std::string& n
     const char* camera = m->names + m->name_camadr[i];
     cameras += fmt::format("{}{}", i ? ", " : "", *camera ? camera : fmt::format("#{}", i));
   }
-  throw Error(fmt::format("--camera={} is not a camera of {} ({})", name, source,
-                          m->ncam ? "its cameras: " + cameras
-                                  : "it has none; without --camera the free camera is used"));
+  throw Error(fmt::format("--camera={} is not track, free or a camera of {} ({})", name, source,
+                          m->ncam ? "its cameras: " + cameras : "it has none"));
 }
 
 void FrameRenderer::Prepare(mjModel* m, const FrameOptions& options) {
@@ -46,25 +54,21 @@ void FrameRenderer::Prepare(mjModel* m, const FrameOptions& options) {
   m->vis.global.offheight = std::max(m->vis.global.offheight, options.height);
 }
 
-FrameRenderer::FrameRenderer(const Simulation& sim, const FrameOptions& options)
-    : options_(options) {
+FrameRenderer::FrameRenderer(const Simulation& sim, const FrameOptions& options,
+                             const TrackedRun& run)
+    : options_(options), run_(run) {
   const mjModel* m = sim.model();
   mjv_defaultScene(&scene_);
   mjv_makeScene(m, &scene_, kMaxSceneGeoms);
   mjr_defaultContext(&context_);
-  mjr_makeContext(m, &context_, kFontScale);
+  mjr_makeContext(m, &context_, FontScale(options.height));
   mjr_setBuffer(mjFB_OFFSCREEN, &context_);
   mjv_defaultOption(&option_);
-  option_.flags[mjVIS_CONTACTPOINT] = 1;
-  // the contact is under the body that makes it: moving bodies see-through
-  option_.flags[mjVIS_TRANSPARENT] = 1;
   mjv_defaultFreeCamera(m, &camera_);
-  if (options.camera) {
+  if (options.named()) {
     camera_.type = mjCAMERA_FIXED;
-    camera_.fixedcamid = FindCamera(m, sim.source(), *options.camera);
+    camera_.fixedcamid = FindCamera(m, sim.source(), options.camera);
   }
-  force_scale_ = options.force_scale ? *options.force_scale
-                                     : m->vis.map.force / m->stat.meanmass;
   flipped_.resize(3 * static_cast<size_t>(options.width) * options.height);
 }
 
@@ -73,44 +77,30 @@ FrameRenderer::~FrameRenderer() {
   mjv_freeScene(&scene_);
 }
 
-// An arrow from pos along force (a world vector, N) scaled by force_scale_,
-// in rgba; none when the scene is full or the force is nil.
-void FrameRenderer::AddArrow(const mjModel* m, const double pos[3], const double force[3],
-                             const float rgba[4]) {
-  const double length = force_scale_ * mju_norm3(force);
-  if (scene_.ngeom >= scene_.maxgeom || !(length > 0)) return;
-  mjvGeom* geom = scene_.geoms + scene_.ngeom++;
-  mjv_initGeom(geom, mjGEOM_ARROW, nullptr, nullptr, nullptr, rgba);
-  geom->category = mjCAT_DECOR;
-  const double width = m->vis.scale.forcewidth * m->stat.meansize;
-  mjv_makeConnector(geom, mjGEOM_ARROW, width, pos[0], pos[1], pos[2],
-                    pos[0] + force_scale_ * force[0], pos[1] + force_scale_ * force[1],
-                    pos[2] + force_scale_ * force[2]);
-}
-
-// Arrows per tagged point, from the point: the normal force on geom2 (the
-// normal points from geom1 to geom2; the force pushes them apart) in MuJoCo's
-// contact-force colour, the friction force on it in its friction colour.
-void FrameRenderer::AddForceArrows(const Simulation& sim) {
-  const mjModel* m = sim.model();
-  for (const PointEvaluation& point : sim.contacts().latest()) {
-    double normal[3];
-    mju_scl3(normal, point.normal, std::max(point.force, 0.0));
-    AddArrow(m, point.pos, normal, m->vis.rgba.contactforce);
-    AddArrow(m, point.pos, point.friction, m->vis.rgba.contactfriction);
+// The moving bodies' geoms at kBodyAlpha of their opacity.
+void FrameRenderer::SeeThrough(const mjModel* m) {
+  for (int i = 0; i < scene_.ngeom; ++i) {
+    mjvGeom& geom = scene_.geoms[i];
+    if (geom.objtype == mjOBJ_GEOM && moving_->Moves(m->geom_bodyid[geom.objid])) {
+      geom.rgba[3] *= kBodyAlpha;
+    }
   }
 }
 
-// time; per tag: law, restitution, last e_post
+// time, slow motion (unless 1); per tag: law, restitution, last e_post
 void FrameRenderer::Overlay(const Simulation& sim) {
   std::string titles = "time";
   std::string values = fmt::format("{:.4f} s", sim.time());
+  if (options_.slowmo != 1) {
+    titles += "\nslow motion";
+    values += fmt::format("\n{:g}x", options_.slowmo);
+  }
   const std::vector<PairTag>& tags = sim.contact_model().tags();
   for (int t = 0; t < static_cast<int>(tags.size()); ++t) {
     titles += fmt::format("\n{}", tags[t].label);
     values += fmt::format("\n{}", LawName(tags[t].law));
-    if (!IsElastic(tags[t].law)) values += fmt::format(" e = {}", tags[t].restitution);
-    values += fmt::format("  e_post {}", LastRestitution(sim, t));
+    if (!IsElastic(tags[t].law)) values += fmt::format("   e = {}", tags[t].restitution);
+    values += fmt::format("   e_post {}", LastRestitution(sim, t));
   }
   const mjrRect viewport = {0, 0, options_.width, options_.height};
   mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, titles.c_str(), values.c_str(),
@@ -120,11 +110,18 @@ void FrameRenderer::Overlay(const Simulation& sim) {
 void FrameRenderer::Draw(Simulation* sim, std::vector<unsigned char>* rgb) {
   const mjModel* m = sim->model();
   mjData* d = sim->data();
-  const int ncon = d->ncon;
-  AppendVisibleContacts(sim->contacts(), &overflow_);
+  if (!moving_) moving_.emplace(m, d);
+  if (options_.tracks()) {
+    // the overlay's lines (Overlay's) and the half line of its border
+    const double lines =
+        1.5 + (options_.slowmo != 1) + sim->contact_model().tags().size();
+    const double top = std::min(kMaxOverlayShare, lines * context_.charHeight / options_.height);
+    AimTrackingCamera(m, run_, moving_->Extent(d),
+                      static_cast<double>(options_.width) / options_.height, top, &camera_);
+  }
   mjv_updateScene(m, d, &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
-  d->ncon = ncon;  // the points are drawn: the data as the step left it
-  AddForceArrows(*sim);
+  SeeThrough(m);
+  AddContactMarks(*sim, *moving_, options_.force_scale, &scene_);
   const mjrRect viewport = {0, 0, options_.width, options_.height};
   mjr_render(viewport, &scene_, &context_);
   Overlay(*sim);

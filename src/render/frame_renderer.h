@@ -1,11 +1,12 @@
 // Copyright contactlaws authors.
 //
 // One frame of a Simulation drawn with MuJoCo's own renderer (mjv_*, mjr_*)
-// into an offscreen buffer: the scene, the tagged contact points (appended to
-// d->contact, as mujoco-simulate shows them with the plugin), an arrow per
-// point for our normal force (MuJoCo draws forces only for contacts in its
-// solver), and an overlay: the time, each tag's law and restitution, and the
-// e_post of its last closed contact episode.
+// into an offscreen buffer: the scene seen by the tracking camera
+// (tracking_camera.h), MuJoCo's free camera or one of the scene's; the moving
+// bodies half see-through, so that what happens under them shows; the marks
+// of the tagged contact points (contact_marks.h); and an overlay: the time
+// and the slow motion, each tag's law and restitution, and the e_post of its
+// last closed contact episode.
 
 #ifndef CONTACTLAWS_RENDER_FRAME_RENDERER_H_
 #define CONTACTLAWS_RENDER_FRAME_RENDERER_H_
@@ -17,18 +18,26 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/simulation.h"
-#include "contactlaws/visible_contacts.h"
+#include "render/moving_bodies.h"
 #include "render/offscreen_gl.h"
+#include "render/tracking_camera.h"
 
 namespace contactlaws::render {
 
 struct FrameOptions {
   int width = 640;   // pixels
   int height = 480;  // pixels
-  // a camera of the scene by name; none: MuJoCo's free camera of the model
-  std::optional<std::string> camera;
-  // arrow length per newton, m/N; none: MuJoCo's own, vis.map.force / meanmass
+  // kTrack, kFree (MuJoCo's free camera of the model, as mujoco-simulate
+  // opens it), or a camera of the scene by name
+  std::string camera = kTrack;
+  // arrow length per newton, m/N; none: each body's (contact_marks.h)
   std::optional<double> force_scale;
+  double slowmo = 1;  // shown in the overlay
+
+  static constexpr char kTrack[] = "track";
+  static constexpr char kFree[] = "free";
+  bool tracks() const { return camera == kTrack; }
+  bool named() const { return camera != kTrack && camera != kFree; }
 };
 
 // The camera of m named name; Error listing the scene's cameras otherwise.
@@ -36,8 +45,9 @@ int FindCamera(const mjModel* m, const std::string& source, const std::string& n
 
 class FrameRenderer {
  public:
-  // m's vis.global.offwidth/offheight must hold the frame (see Prepare).
-  FrameRenderer(const Simulation& sim, const FrameOptions& options);
+  // m's vis.global.offwidth/offheight must hold the frame (see Prepare);
+  // run: what the tracking camera frames (TrackRun), when options track.
+  FrameRenderer(const Simulation& sim, const FrameOptions& options, const TrackedRun& run = {});
   ~FrameRenderer();
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
@@ -46,23 +56,22 @@ class FrameRenderer {
   static void Prepare(mjModel* m, const FrameOptions& options);
 
   // Draws the current state of sim (after mj_forward: Simulation::Sample);
-  // rgb gets width x height x 3 bytes, top row first.
+  // rgb gets width x height x 3 bytes, top row first. The bodies' sizes are
+  // measured in the first frame drawn.
   void Draw(Simulation* sim, std::vector<unsigned char>* rgb);
 
  private:
-  void AddForceArrows(const Simulation& sim);
-  void AddArrow(const mjModel* m, const double pos[3], const double force[3],
-                const float rgba[4]);
+  void SeeThrough(const mjModel* m);
   void Overlay(const Simulation& sim);
 
   FrameOptions options_;
+  TrackedRun run_;
+  std::optional<MovingBodies> moving_;
   OffscreenGl gl_;
   mjvScene scene_;
   mjrContext context_;
   mjvCamera camera_;
   mjvOption option_;
-  double force_scale_ = 0;
-  VisibleContactsOverflow overflow_;
   std::vector<unsigned char> flipped_;
 };
 

@@ -118,6 +118,20 @@ OutputFormat OutputFormatOf(const std::string& output) {
                           "FILE.gif, or DIR/ (one PNG per frame)", output));
 }
 
+void RequireOutputFolder(OutputFormat format, const std::string& output) {
+  std::string path = output;
+  if (format == OutputFormat::kPngDirectory) {
+    while (path.size() > 1 && path.back() == '/') path.pop_back();
+  }
+  const size_t slash = path.rfind('/');
+  const std::string folder =
+      slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (!IsDirectory(folder)) {
+    throw Error(fmt::format("--output={} needs the folder {}, which does not exist", output,
+                            folder));
+  }
+}
+
 std::unique_ptr<FrameSink> MakeFrameSink(OutputFormat format, const std::string& output,
                                          const std::string& ffmpeg, int width, int height,
                                          double fps) {

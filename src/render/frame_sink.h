@@ -23,6 +23,10 @@ enum class OutputFormat { kMp4, kGif, kPngDirectory };
 // directory). Error naming the formats otherwise.
 OutputFormat OutputFormatOf(const std::string& output);
 
+// Error unless the folder output goes in exists: FILE's folder, or DIR/'s
+// (DIR itself is made when missing).
+void RequireOutputFolder(OutputFormat format, const std::string& output);
+
 class FrameSink {
  public:
   virtual ~FrameSink() = default;

@@ -106,14 +106,32 @@ std::string BallBoxXml(int balls) {
 <mujoco model="ball_box_{n}">
   <option timestep="1e-5" gravity="0 0 -9.81" integrator="RK4"/>
   <size nconmax="{nconmax}" njmax="{njmax}"/>
+  <!-- how it looks (no physics): MuJoCo's samples' sky, checker floor and light -->
+  <visual>
+    <headlight ambient="0.3 0.3 0.3" diffuse="0.5 0.5 0.5" specular="0.1 0.1 0.1"/>
+    <rgba haze="0.15 0.25 0.35 1"/>
+    <quality shadowsize="2048"/>
+  </visual>
+  <asset>
+    <texture name="sky" type="skybox" builtin="gradient" rgb1="0.3 0.5 0.7" rgb2="0 0 0"
+             width="64" height="64"/>
+    <texture name="checker" type="2d" builtin="checker" rgb1="0.2 0.3 0.4" rgb2="0.1 0.2 0.3"
+             width="64" height="64"/>
+    <material name="floor" texture="checker" texrepeat="10 10" texuniform="true" reflectance="0.2"/>
+    <material name="wall" rgba="0.6 0.65 0.7 1"/>
+    <material name="ball0" rgba="0.9 0.45 0.1 1"/>
+    <material name="ball1" rgba="0.3 0.7 0.3 1"/>
+    <material name="ball2" rgba="0.85 0.85 0.8 1"/>
+    <material name="ball3" rgba="0.6 0.4 0.8 1"/>
+  </asset>
 
   <worldbody>
     <light pos="0 0 {light:.4f}" dir="0 0 -1"/>
-    <geom name="floor" type="plane" size="{w:.4f} {w:.4f} 0.1" group="2"/>
-    <geom name="wall_px" type="plane" pos="{w:.4f} 0 {wall:.4f}" zaxis="-1 0 0" size="{wall:.4f} {w:.4f} 0.1" group="2"/>
-    <geom name="wall_nx" type="plane" pos="-{w:.4f} 0 {wall:.4f}" zaxis="1 0 0" size="{wall:.4f} {w:.4f} 0.1" group="2"/>
-    <geom name="wall_py" type="plane" pos="0 {w:.4f} {wall:.4f}" zaxis="0 -1 0" size="{w:.4f} {wall:.4f} 0.1" group="2"/>
-    <geom name="wall_ny" type="plane" pos="0 -{w:.4f} {wall:.4f}" zaxis="0 1 0" size="{w:.4f} {wall:.4f} 0.1" group="2"/>
+    <geom name="floor" type="plane" size="{w:.4f} {w:.4f} 0.1" group="2" material="floor"/>
+    <geom name="wall_px" type="plane" pos="{w:.4f} 0 {wall:.4f}" zaxis="-1 0 0" size="{wall:.4f} {w:.4f} 0.1" group="2" material="wall"/>
+    <geom name="wall_nx" type="plane" pos="-{w:.4f} 0 {wall:.4f}" zaxis="1 0 0" size="{wall:.4f} {w:.4f} 0.1" group="2" material="wall"/>
+    <geom name="wall_py" type="plane" pos="0 {w:.4f} {wall:.4f}" zaxis="0 -1 0" size="{w:.4f} {wall:.4f} 0.1" group="2" material="wall"/>
+    <geom name="wall_ny" type="plane" pos="0 -{w:.4f} {wall:.4f}" zaxis="0 1 0" size="{w:.4f} {wall:.4f} 0.1" group="2" material="wall"/>
 )",
                  fmt::arg("n", n), fmt::arg("k", k), fmt::arg("r", r), fmt::arg("m", box.mass),
                  fmt::arg("v", box.launch_speed), fmt::arg("gap", 1e3 * (box.spacing - 2 * r)),
@@ -134,9 +152,9 @@ std::string BallBoxXml(int balls) {
                    "    <body name=\"ball{0}\" pos=\"{1:.4f} {2:.4f} {3:.4f}\">\n"
                    "      <freejoint/>\n"
                    "      <geom name=\"ball{0}\" type=\"sphere\" size=\"{4}\" mass=\"{5}\" "
-                   "group=\"1\"/>\n"
+                   "group=\"1\" material=\"ball{6}\"/>\n"
                    "    </body>\n",
-                   i, x, y, z, r, box.mass);
+                   i, x, y, z, r, box.mass, (ix + iy + iz) % 4);
   }
   xml += "  </worldbody>\n\n";
 

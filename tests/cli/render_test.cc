@@ -3,11 +3,16 @@
 // contactlaws render: a video of the right frame count and size, frames that
 // change where the ball moves, and in each frame the pose of the simulated
 // state at its time (a falling ball's pixel row against its free-fall
-// height projected through the scene's camera); the bad inputs.
+// height projected through the scene's camera); the tracking camera
+// framing a sliding die in every frame; a resting body's arrow as long as
+// the body; the slow motion in the overlay; every scene of mjcf/ drawn; the
+// bad inputs.
 
 #include <png.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -35,23 +40,30 @@ constexpr double kFovy = 45.0;         // degrees, MuJoCo's default
 // error would be 10 to 30 pixels here.
 constexpr double kPixelTolerance = 1.0;
 
-// A red ball falling before a side camera (looking along +y) over a floor;
-// tagged, so that the laws are on.
-std::string FallScene() {
-  return testing::WriteScene("render_fall", fmt::format(R"(<mujoco>
+// A body over a floor before a side camera (looking along +y) at distance
+// and height; tagged (tag: the rest of the tag's data), so that the laws
+// are on.
+std::string SideScene(const std::string& name, double distance, double height,
+                      const std::string& body, const std::string& tag) {
+  return testing::WriteScene(name, fmt::format(R"(<mujoco>
   <option timestep="1e-4" gravity="0 0 -{g}" integrator="RK4"/>
   <worldbody>
     <geom name="floor" type="plane" size="2 2 0.1"/>
     <camera name="side" pos="0 -{d} {ch}" xyaxes="1 0 0 0 0 1" fovy="{fovy}"/>
-    <body name="ball" pos="0 0 {z0}">
-      <freejoint/>
-      <geom name="ball" type="sphere" size="0.1" mass="1" rgba="1 0 0 1"/>
-    </body>
+    {body}
   </worldbody>
-  <custom><text name="contactlaw:ball-floor"
-    data="geom1=ball geom2=floor law=hunt-crossley restitution=0.8 stiffness=1e7"/></custom>
-</mujoco>)", fmt::arg("g", kGravity), fmt::arg("d", kCameraDistance),
-      fmt::arg("ch", kCameraHeight), fmt::arg("fovy", kFovy), fmt::arg("z0", kStartHeight)));
+  <custom><text name="contactlaw:body-floor" data="geom1=body geom2=floor {tag}"/></custom>
+</mujoco>)", fmt::arg("g", kGravity), fmt::arg("d", distance), fmt::arg("ch", height),
+      fmt::arg("fovy", kFovy), fmt::arg("body", body), fmt::arg("tag", tag)));
+}
+
+// A red ball falling before the side camera.
+std::string FallScene() {
+  return SideScene("render_fall", kCameraDistance, kCameraHeight, fmt::format(R"(
+    <body name="ball" pos="0 0 {}">
+      <freejoint/>
+      <geom name="body" type="sphere" size="0.1" mass="1" rgba="1 0 0 1"/>
+    </body>)", kStartHeight), "law=hunt-crossley restitution=0.8 stiffness=1e7");
 }
 
 struct Image {
@@ -94,10 +106,11 @@ double BallRow(const Image& image) {
   return count ? sum / count : std::nan("");
 }
 
-// The row of a point at height z in the camera's vertical plane.
-double ProjectedRow(double z) {
-  const double half_view = kCameraDistance * std::tan(0.5 * kFovy * M_PI / 180);
-  return 0.5 * kHeight * (1 - (z - kCameraHeight) / half_view);
+// The row of a point at height z in the vertical plane of the camera at
+// distance and height.
+double ProjectedRow(double z, double distance = kCameraDistance, double height = kCameraHeight) {
+  const double half_view = distance * std::tan(0.5 * kFovy * M_PI / 180);
+  return 0.5 * kHeight * (1 - (z - height) / half_view);
 }
 
 std::string Frame(const std::string& dir, int k) {
@@ -147,6 +160,166 @@ TEST(RenderTest, FramesChangeWhereTheBallMoves) {
   EXPECT_EQ(elsewhere, 0);
 }
 
+// The frames' names in dir, in order.
+std::vector<Image> ReadFrames(const std::string& dir, int count) {
+  std::vector<Image> frames;
+  for (int k = 0; k < count; ++k) frames.push_back(ReadPng(Frame(dir, k)));
+  return frames;
+}
+
+// The box of the ball-coloured pixels: count and extent.
+struct Blob {
+  long count = 0;
+  int left = 1 << 30, right = -1, top = 1 << 30, bottom = -1;
+};
+
+template <typename Is>
+Blob FindBlob(const Image& image, Is is) {
+  Blob blob;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!is(image.at(x, y))) continue;
+      ++blob.count;
+      blob.left = std::min(blob.left, x);
+      blob.right = std::max(blob.right, x);
+      blob.top = std::min(blob.top, y);
+      blob.bottom = std::max(blob.bottom, y);
+    }
+  }
+  return blob;
+}
+
+// A red 2 cm die dropped 4 cm onto a frictionless floor, sliding away at
+// 1 m/s: 1 m in 1 s, 50 times its size.
+std::string SlideScene() {
+  return testing::WriteScene("render_slide", R"(<mujoco>
+  <option timestep="1e-4" gravity="0 0 -9.81" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="die" pos="0 0 0.05">
+      <freejoint/>
+      <geom name="die" type="box" size="0.01 0.01 0.01" mass="0.008" rgba="1 0 0 1"/>
+    </body>
+  </worldbody>
+  <keyframe><key qpos="0 0 0.05 1 0 0 0" qvel="1 0 0 0 0 0"/></keyframe>
+  <custom><text name="contactlaw:die-floor"
+    data="geom1=die geom2=floor law=hunt-crossley restitution=0.5 stiffness=1e7 friction=none"/>
+  </custom>
+</mujoco>)");
+}
+
+// The default camera follows the die across the floor and frames it: in
+// every frame the die is whole (clear of the borders) and large, where
+// MuJoCo's free camera of the model (framing the 10 m floor) shows it as a
+// few pixels.
+TEST(RenderTest, TrackingCameraFollowsAndFramesTheMovingBody) {
+  constexpr int kFrames = 6;  // 0, 0.2, ..., 1 s
+  // The die's share of the frame: its bounding box is a third of the view
+  // box (kSurroundings), the die 0.58 of that box's side (a cube in its
+  // bounding sphere's box); the view box's corners, margins and the
+  // overlay's rows take the rest. Measured 1.7% to 2.3% of 160 x 120
+  // (16 x 20 pixels and more).
+  constexpr double kTrackedShare = 0.01;
+  // The free camera's die: measured 7 pixels at most (0.04%), and none at
+  // 1 s, where it has left the view.
+  constexpr double kFreeShare = 0.001;
+  const std::string scene = SlideScene();
+  for (const char* camera : {"track", "free"}) {
+    const std::string dir = ::testing::TempDir() + "/render_" + camera;
+    const Result r = RunCli(fmt::format("render {} --camera {} --duration 1 --fps 5 --width 160 "
+                                        "--height 120 --output {}/", scene, camera, dir));
+    ASSERT_EQ(r.status, 0) << r.output;
+    int k = 0;
+    for (const Image& frame : ReadFrames(dir, kFrames)) {
+      const Blob die = FindBlob(frame, IsBall);
+      const double share = static_cast<double>(die.count) / (frame.width * frame.height);
+      if (std::string(camera) == "free") {
+        EXPECT_LT(share, kFreeShare) << "frame " << k;
+      } else {
+        EXPECT_GT(share, kTrackedShare) << "frame " << k;
+        EXPECT_GT(die.left, 0) << "frame " << k;
+        EXPECT_LT(die.right, frame.width - 1) << "frame " << k;
+        EXPECT_GT(die.top, 0) << "frame " << k;
+        EXPECT_LT(die.bottom, frame.height - 1) << "frame " << k;
+      }
+      ++k;
+    }
+  }
+}
+
+// contact_marks.cc's magenta at any brightness (the headlight alone lights
+// the thin arrow: (110, 19, 64)), down to its antialiased tip
+bool IsNormalArrow(const unsigned char* p) { return p[0] >= p[1] + 8 && p[2] >= p[1] + 4; }
+
+// A resting body's normal-force arrow is as long as the body's size (its
+// bounding sphere's diameter, 0.1732 m for a 10 cm cube): a cube resting on
+// its four corners, seen from the side, gets one arrow from the middle of
+// its bottom face whose tip stands 0.1732 m above the floor.
+TEST(RenderTest, RestingBodysArrowIsItsSize) {
+  constexpr double kSize = 0.1 * 1.7320508;  // m
+  constexpr double kNear = 0.8;  // m, the camera's distance: the arrow 2 pixels wide
+  constexpr double kLow = 0.15;  // m, the camera's height: the cube and the arrow in view
+  // The head's last pixels are under half a pixel wide and fade into the
+  // background: the tip seen is 4.4 pixels short of it (of 63 for the
+  // arrow; the head's base, at 2/3 of it, is where it should be). An arrow
+  // at half the length would end 31 pixels lower, inside the cube.
+  constexpr double kTipTolerance = 6.0;  // pixels
+  // at its static depth: each corner carries m g / 4 = K d^1.5
+  const double depth = std::pow(1.0 * kGravity / 4 / 1e7, 2.0 / 3);
+  const std::string scene = SideScene("render_rest", kNear, kLow, fmt::format(R"(
+    <body name="cube" pos="0 0 {}">
+      <freejoint/>
+      <geom name="body" type="box" size="0.05 0.05 0.05" mass="1" rgba="0.2 0.2 0.8 1"/>
+    </body>)", 0.05 - depth), "law=hunt-crossley restitution=0.5 stiffness=1e7 "
+                              "min_impact_velocity=0.01 friction=none");
+  const std::string dir = ::testing::TempDir() + "/render_rest";
+  const Result r = RunCli(fmt::format("render {} --camera side --duration 0.2 --fps 5 --width {} "
+                                      "--height {} --output {}/", scene, kWidth, kHeight, dir));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Blob arrow = FindBlob(ReadPng(Frame(dir, 1)), IsNormalArrow);
+  ASSERT_GT(arrow.count, 0);
+  EXPECT_NEAR(arrow.top, ProjectedRow(kSize - depth / 2, kNear, kLow), kTipTolerance);
+}
+
+// --slowmo is shown: the first frame at 2x differs from the one at 1x in the
+// overlay only (the time, the tags and the slow motion, top left).
+TEST(RenderTest, OverlayShowsTheSlowMotion) {
+  std::vector<Image> first;
+  for (const char* slowmo : {"1", "2"}) {
+    const std::string dir = ::testing::TempDir() + "/render_slowmo" + slowmo;
+    const Result r = RunCli(fmt::format("render {} --camera side --duration 0.01 --fps 10 "
+                                        "--slowmo {} --width {} --height {} --output {}/",
+                                        FallScene(), slowmo, kWidth, kHeight, dir));
+    ASSERT_EQ(r.status, 0) << r.output;
+    first.push_back(ReadPng(Frame(dir, 0)));
+  }
+  const Blob changed = FindBlob(first[0], [&](const unsigned char* p) {
+    const size_t i = p - first[0].rgb.data();
+    return !std::equal(p, p + 3, first[1].rgb.data() + i);
+  });
+  EXPECT_GT(changed.count, 0);
+  // the overlay's three lines, 24 pixels each at MuJoCo's font at 100%:
+  // measured to row 74
+  EXPECT_LT(changed.bottom, kHeight * 3 / 8);
+}
+
+// Every scene of mjcf/ (their visuals: textures, skybox, shadows) draws:
+// two small frames each.
+TEST(RenderTest, ShippedScenesDraw) {
+  int scenes = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf")) {
+    if (entry.path().extension() != ".xml") continue;
+    const std::string dir = ::testing::TempDir() + "/render_" + entry.path().stem().string();
+    const Result r = RunCli(fmt::format("render {} --duration 0.05 --fps 20 --width 64 "
+                                        "--height 48 --output {}/", entry.path().string(), dir));
+    EXPECT_EQ(r.status, 0) << entry.path() << r.output;
+    EXPECT_EQ(ReadPng(Frame(dir, 1)).width, 64) << entry.path();
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 9);
+}
+
 // ffprobe's frame count and size of a video.
 std::string Probe(const std::string& path) {
   std::FILE* pipe = popen(fmt::format("ffprobe -v error -count_frames -select_streams v:0 "
@@ -174,10 +347,23 @@ TEST(RenderTest, BadInputIsOneLine) {
   const std::string out = ::testing::TempDir() + "/render_bad.mp4";
   Result r = RunCli(fmt::format("render {} --camera top --output {}", FallScene(), out));
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.output, fmt::format("contactlaws: --camera=top is not a camera of {} (its "
-                                  "cameras: side)\n", FallScene()));
+  EXPECT_EQ(r.output, fmt::format("contactlaws: --camera=top is not track, free or a camera of "
+                                  "{} (its cameras: side)\n", FallScene()));
   r = RunCli(fmt::format("render {} --camera top --output {}", testing::kBall, out));
-  EXPECT_NE(r.output.find("it has none"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(it has none)"), std::string::npos) << r.output;
+  // refused before the run: a folder that is not there, too many frames
+  r = RunCli(fmt::format("render {} --output /nonexistent/dir/ball.mp4", testing::kBall));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "contactlaws: --output=/nonexistent/dir/ball.mp4 needs the folder "
+                      "/nonexistent/dir, which does not exist\n");
+  r = RunCli(fmt::format("render {} --output /nonexistent/frames/", testing::kBall));
+  EXPECT_EQ(r.output, "contactlaws: --output=/nonexistent/frames/ needs the folder /nonexistent, "
+                      "which does not exist\n");
+  r = RunCli(fmt::format("render {} --duration 10 --fps 100 --slowmo 1000 --output {}",
+                         testing::kBall, out));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.output, "contactlaws: --duration=10 at --fps=100 and --slowmo=1000 is 1000001 "
+                      "frames, more than 100000: shorten the run or lower --fps or --slowmo\n");
   r = RunCli(fmt::format("render {} --output ball.avi", testing::kBall));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.output, "contactlaws: --output=ball.avi is not a format render writes: FILE.mp4 "
