@@ -206,7 +206,10 @@ void ContactModel::ReadTags(const Overrides& overrides) {
   for (int i = 0; i < m->ntext; ++i) {
     const std::string_view name = TextName(m, i);
     if (!StartsWith(name, kPairTagPrefix)) continue;
-    const PairTagSpec spec = ParsePairTag(source_, name, TextData(m, i));
+    const PairTagSpec spec =
+        overrides.keys.empty()
+            ? ParsePairTag(source_, name, TextData(m, i))
+            : ParsePairTag(source_, name, WithKeys(TextData(m, i), overrides.keys));
     const TagResolver resolve(m, source_, spec.label);
     const LawParams base = ResolveLaw(spec, overrides, resolve);
 
