@@ -64,6 +64,10 @@ ReplayOptions WithParameters(const ReplayOptions& options,
 std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
                                  const std::vector<FitParameter>& parameters);
 
+// "law/friction" of the scene's first contactlaw tag with the overrides
+// ("flores/coulomb"); "mujoco" for a scene without one.
+std::string CombinationName(const Scene& scene, const Overrides& overrides);
+
 // Refuses (Error naming the key) a parameter no tag of the scene reads under
 // options' law and friction, and bounds outside a tag key's range (the tags
 // are read with each parameter at lo and at hi).

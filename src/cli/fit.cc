@@ -27,15 +27,6 @@ struct Fitted {
   std::string label;  // "flores/coulomb"
 };
 
-// The scene's law and friction of a combination, named.
-std::string Label(const Scene& scene, const ReplayOptions& options) {
-  UniqueModel model(mj_copyModel(nullptr, scene.model()));
-  const ContactModel cm(model.get(), scene.path(), options.simulation.overrides);
-  if (cm.pairs().empty()) return "mujoco";
-  const GeomPair& pair = cm.pairs().front();
-  return fmt::format("{}/{}", LawName(cm.tags()[pair.tag].law), FrictionName(pair.friction.kind));
-}
-
 // The first contactlaw tag of the scene with the fitted values, as a line
 // to paste into the scene; model parameters as comments beside it.
 std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& options,
@@ -150,7 +141,7 @@ int FitCommand(const FitArgs& args) {
       o.should_stop = StopRequested;
       f.law = law;
       f.friction = friction;
-      f.label = Label(scene, o);
+      f.label = CombinationName(scene, o.simulation.overrides);
       fitted.push_back(std::move(f));
       combos.push_back(std::move(o));
     }
@@ -195,10 +186,9 @@ int FitCommand(const FitArgs& args) {
     fmt::print(stderr, "contactlaws: interrupted before a first evaluation: no file written\n");
     return kExitInterrupted;
   }
-  // ranked by the validation mean when there is one, else the training mean
-  auto key = [&](const Fitted& f) {
-    return MeanScore(validate ? f.validate : f.train, metric);
-  };
+  // ranked by the training mean: choosing by the held-out scores would fit
+  // the choice to them
+  auto key = [&](const Fitted& f) { return MeanScore(f.train, metric); };
   std::stable_sort(fitted.begin(), fitted.end(),
                    [&](const Fitted& a, const Fitted& b) { return key(a) < key(b); });
 

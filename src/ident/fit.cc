@@ -202,6 +202,12 @@ std::vector<std::pair<LawKind, FrictionKind>> TagKinds(const Scene& scene, const
 
 }  // namespace
 
+std::string CombinationName(const Scene& scene, const Overrides& overrides) {
+  const auto tags = TagKinds(scene, overrides);
+  if (tags.empty()) return "mujoco";
+  return fmt::format("{}/{}", LawName(tags[0].first), FrictionName(tags[0].second));
+}
+
 std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
                                  const std::vector<FitParameter>& parameters) {
   const auto tags = TagKinds(scene, options.simulation.overrides);
