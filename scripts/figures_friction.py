@@ -18,6 +18,14 @@ Reads the trajectories scripts/run.sh makes in RESULTS_DIR/friction/ with
         the block on the incline: displacement since settling and speed down
         the slope, log scale, per model and with MuJoCo's own contact
 
+    friction_chung_ooi_test4.png  chung_ooi/test4_<material>_<angle>.csv
+        Chung & Ooi's test 4 (mjcf/chung_ooi_oblique.xml swept over the
+        angle): tangential restitution, spin and the contact surface's
+        rebound angle, beside the rigid sphere's sliding and rolling
+    friction_chung_ooi_test5.png  chung_ooi/test5_<material>_<psi>.csv
+        test 5: the normalized rebound angle and spin over the normalized
+        incident angle, beside the rigid sphere's
+
 --creep prints, for each trajectory FILE, the block's creep down the slope
 between the times T0 and T1: the displacement (m) and the mean speed (m/s).
 The closed forms' parameters are the scenes' (mjcf/friction_*.xml).
@@ -52,6 +60,11 @@ LABELS = {"mujoco": "MuJoCo's own (condim 3)",
 # the belt's friction axis: up to past mu_s m g (5.9 N), where LuGre's
 # bristles overshoot as the block comes to stick on the belt (6.4 N)
 BELT_FORCE_LIMITS = (-1, 8)
+# mjcf/chung_ooi_oblique.xml and its sweep in scripts/run.sh: mu, e, radius,
+# test 4's speed, each material's Poisson ratio
+CO = {"mu": 0.092, "e": 0.98, "R": 2.55e-3, "speed": 3.9,
+      "nu": {"alumina": 0.23, "alloy": 0.33}}
+CHUNG_OOI = {"alumina": ("tab:blue", "alumina"), "alloy": ("tab:red", "aluminium alloy")}
 # Speeds and displacements below this are rounding: drawn at it (log scale)
 FLOOR = 1e-15
 
@@ -214,6 +227,93 @@ CREEPERS = ("regularized", "mujoco")
 SINCE = 0.3
 
 
+def rigid_sliding(tangent, e, mu):
+    """The rigid sphere's rebound off a plane, per unit normal speed: v_t',
+    w' R and the contact surface's slip after, for an incident tangent
+    v_t / v_n. It slides throughout while tangent >= 7/2 mu (1 + e), else it
+    leaves rolling at 5/7 v_t."""
+    slides = tangent >= 3.5 * mu * (1 + e)
+    vt = np.where(slides, tangent - mu * (1 + e), 5 / 7 * tangent)
+    spin = np.where(slides, 2.5 * mu * (1 + e), 5 / 7 * tangent)
+    return vt, spin, vt - spin
+
+
+def chung_ooi_runs(results, test, keys):
+    """The rebound of each run of one of Chung & Ooi's tests: per material,
+    the incident (v_t, v_n) and the final v_t, v_n and spin, by key."""
+    out = {}
+    for material in CHUNG_OOI:
+        rows = []
+        for key in keys:
+            run = read(results / "friction" / "chung_ooi" / f"{test}_{material}_{key}.csv",
+                       ["sphere.vx", "sphere.vz", "sphere.wy"])
+            rows.append([run["sphere.vx"][0], -run["sphere.vz"][0], run["sphere.vx"][-1],
+                         run["sphere.vz"][-1], run["sphere.wy"][-1]])
+        out[material] = np.array(rows).T
+    return out
+
+
+def chung_ooi(results):
+    """Chung & Ooi's tests 4 and 5, beside rigid-body sliding."""
+    mu, e, radius = CO["mu"], CO["e"], CO["R"]
+    angles = np.arange(5, 90, 10)
+    runs = chung_ooi_runs(results, "test4", angles)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    theta = np.linspace(1, 89, 400)
+    tangent = np.tan(np.radians(theta))
+    vt, spin, slip = rigid_sliding(tangent, e, mu)
+    vn = CO["speed"] * np.cos(np.radians(theta))
+    axes[0].plot(theta, vt / tangent, color="grey", ls="--", label="rigid body")
+    axes[1].plot(theta, spin * vn / radius, color="grey", ls="--", label="rigid body")
+    axes[2].plot(theta, np.degrees(np.arctan(slip / e)), color="grey", ls="--",
+                 label="rigid body")
+    for material, (colour, name) in CHUNG_OOI.items():
+        vt0, vn0, vt1, vn1, w1 = runs[material]
+        style = dict(color=colour, marker="o", ms=4, lw=1.2, label=name)
+        axes[0].plot(angles, vt1 / vt0, **style)
+        axes[1].plot(angles, w1, **style)
+        axes[2].plot(angles, np.degrees(np.arctan((vt1 - w1 * radius) / vn1)), **style)
+    titles = ["tangential restitution v_t' / v_t", "spin after (rad/s)",
+              "contact surface's rebound angle (degrees)"]
+    for ax, title in zip(axes, titles):
+        ax.set_xlabel("incident angle from the normal (degrees)")
+        ax.set_title(title, fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Chung & Ooi test 4: a 2.55 mm sphere at {CO['speed']} m/s onto a rigid "
+                 f"plane, mu {mu}, e {e} (mjcf/chung_ooi_oblique.xml, Mindlin's no-slip spring)",
+                 fontsize=10)
+    fig.tight_layout()
+    save(fig, results / "friction_chung_ooi_test4.png")
+
+    psis = ["0.5", "1", "1.5", "2", "3", "4", "6", "8", "10"]
+    runs = chung_ooi_runs(results, "test5", psis)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
+    for material, (colour, name) in CHUNG_OOI.items():
+        nu = CO["nu"][material]
+        kappa = 2 * (1 - nu) / (mu * (2 - nu))
+        vt0, vn0, vt1, vn1, w1 = runs[material]
+        psi = np.linspace(0.01, 10.5, 400)
+        vt, spin, slip = rigid_sliding(psi / kappa, e, mu)
+        axes[0].plot(psi, kappa * slip / e, color=colour, ls="--", lw=1,
+                     label=f"rigid body ({name})")
+        axes[1].plot(psi, spin / (psi / kappa), color=colour, ls="--", lw=1,
+                     label=f"rigid body ({name})")
+        style = dict(color=colour, marker="o", ms=4, lw=1.2, label=name)
+        axes[0].plot(kappa * vt0 / vn0, kappa * (vt1 - w1 * radius) / vn1, **style)
+        axes[1].plot(kappa * vt0 / vn0, w1 * radius / vt0, **style)
+    axes[0].set_title("normalized rebound angle of the contact surface, Psi_2", fontsize=10)
+    axes[1].set_title("spin after, w' R / v_t", fontsize=10)
+    for ax in axes:
+        ax.set_xlabel("normalized incident angle Psi_1 = 2 (1 - nu) / (mu (2 - nu)) v_t / v_n")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Chung & Ooi test 5: v_n = 5 m/s, v_t varied, mu {mu}, e {e} "
+                 "(mjcf/chung_ooi_oblique.xml swept by scripts/run.sh)", fontsize=10)
+    fig.tight_layout()
+    save(fig, results / "friction_chung_ooi_test5.png")
+
+
 def creep(t0, t1, paths):
     """Print the creep between t0 and t1 of each trajectory."""
     print("file,displacement_m,speed_m_per_s")
@@ -236,6 +336,7 @@ def main(argv):
     belt(results)
     slide_roll(results)
     incline(results)
+    chung_ooi(results)
 
 
 if __name__ == "__main__":

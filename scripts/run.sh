@@ -12,8 +12,9 @@
 #   results/*.png      the figures (scripts/figures.py)
 #   results/reproduction.txt  the numbers docs/paper-reproduction.md quotes
 #   results/ball.gif, results/ball_table.gif  the two scenes drawn (contactlaws render)
-#   results/friction/  the friction scenes' runs; results/friction_*.png their
-#                      figures (scripts/figures_friction.py, docs/friction.md)
+#   results/friction/  the friction scenes' runs (chung_ooi/: Chung & Ooi's tests 4
+#                      and 5); results/friction_*.png their figures
+#                      (scripts/figures_friction.py, docs/friction.md)
 # Each directory holds trajectories.csv (the columns the figures read), impacts.csv and
 # summary.csv. After the build: 25 s of CPU, 16.6 s of wall time on 2 cores at load 1.7
 # (150 s of CPU at the fixed 1e-5 s: docs/performance.md, "Issue 15").
@@ -143,6 +144,39 @@ done
 "$cl" run mjcf/friction_incline_mujoco.xml --duration 1.2 --sample-rate 200 --columns bodies \
   --output "$fr/incline_mujoco.csv" > /dev/null
 wait "$belt_runs"
+echo
+echo "== Friction: Chung & Ooi's tests 4 and 5, alumina and aluminium alloy =="
+# mjcf/chung_ooi_oblique.xml swept (docs/friction.md): test 4 at 3.9 m/s from 5 to 85
+# degrees, test 5 at v_n = 5 m/s with v_t for normalized incident angles Psi = 0.5 ... 10;
+# the alloy's scene is the alumina's with its E, nu and density. 36 runs of 4000 steps, one
+# material per core.
+co="$fr/chung_ooi"
+mkdir -p "$co"
+sweep() {  # material nu density E E_plane
+  local scene="$co/$1.xml"
+  sed -e "s/density=\"4000\"/density=\"$3\"/" \
+    -e "s/youngs1=380e9 poisson1=0.23 youngs2=380e12 poisson2=0.23/youngs1=$4 poisson1=$2 youngs2=$5 poisson2=$2/" \
+    mjcf/chung_ooi_oblique.xml > "$scene"
+  local runs=() run
+  for angle in 5 15 25 35 45 55 65 75 85; do
+    runs+=("test4_$1_$angle $(awk -v a="$angle" \
+      'BEGIN { r = a * atan2(0, -1) / 180; printf "%.17g 0 %.17g", 3.9 * sin(r), -3.9 * cos(r) }')")
+  done
+  for psi in 0.5 1 1.5 2 3 4 6 8 10; do
+    runs+=("test5_$1_$psi $(awk -v p="$psi" -v nu="$2" \
+      'BEGIN { printf "%.17g 0 -5", p * 0.092 * (2 - nu) / (2 * (1 - nu)) * 5 }')")
+  done
+  for run in "${runs[@]}"; do
+    sed "s/qvel=\"[^\"]*\"/qvel=\"${run#* } 0 0 0\"/" "$scene" > "$co/${run%% *}.xml"
+    "$cl" run "$co/${run%% *}.xml" --duration 4e-5 --sample-rate 5e4 --columns bodies \
+      --output "$co/${run%% *}.csv" > /dev/null
+    rm "$co/${run%% *}.xml"
+  done
+}
+sweep alumina 0.23 4000 380e9 380e12 &
+alumina_runs=$!
+sweep alloy 0.33 2700 70e9 70e12
+wait "$alumina_runs"
 /usr/bin/python3 scripts/figures_friction.py "$out"
 echo
 echo "Results in ${repo}/${out}/"

@@ -109,6 +109,7 @@ TagEstimate EstimateTag(const ContactData& contacts, int tag,
 // (friction_mass |gravity|) and the law's spring force there.
 struct TangentialEstimate {
   double stiffness = 0;     // N/m: k_t, or LuGre's sigma0 F_n; 0 for regularized
+  double damping = 0;       // N s/m: c_t (coulomb, stribeck: TangentialDamping)
   double mass = 0;          // kg, GeomPair::friction_mass
   double normal_force = 0;  // N, the load assumed
   // s, TangentialDuration (infinite: none, or not estimated)

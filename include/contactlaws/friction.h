@@ -78,6 +78,15 @@ inline constexpr double kDefaultBristleStiffness = 1e5;  // 1/m (x F_n: N/m)
 inline constexpr double kDefaultPoisson = 0.3;
 inline constexpr double kMindlinRatio = 2 * (1 - kDefaultPoisson) / (2 - kDefaultPoisson);
 
+// Mindlin's no-slip stiffness of two elastic spheres, k_t = 8 G* a, over
+// Hertz's normal one, dF_n/dd = 2 E* a (a = sqrt(R* d)): 4 G* / E*, with
+// 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2,
+// G = E / (2 (1 + nu)), each material with its own Poisson ratio (Pa; nu in
+// (-1, 0.5)). R. D. Mindlin, J. Appl. Mech. 16:259 (1949); the DEM codes'
+// Hertz-Mindlin (LIGGGHTS, Yade, MFIX-DEM, Lethe) and C. Thornton, S. J.
+// Cummins, P. W. Cleary, Powder Technol. 210:189 (2011).
+double MindlinRatio(double youngs1, double poisson1, double youngs2, double poisson2);
+
 // The friction of one pair, resolved (tag, geoms, overrides) and validated.
 struct FrictionParams {
   FrictionKind kind = FrictionKind::kNone;
@@ -85,10 +94,19 @@ struct FrictionParams {
   double mu_kinetic = 0;   // in [0, mu_static]
   double transition_velocity = kDefaultTransitionVelocity;  // m/s > 0 (regularized)
   double stribeck_velocity = kDefaultStribeckVelocity;      // m/s > 0 (stribeck, lugre)
-  // k_t, N/m > 0; unset: Mindlin, kMindlinRatio x dF_n/dd of the normal law
+  // k_t, N/m > 0; unset: Mindlin's no-slip spring, tangential_ratio x dF_n/dd
+  // of the normal law at the depth (8 G* a for Hertz spheres of materials)
   std::optional<double> tangential_stiffness;
-  // c_t, N s/m >= 0; unset: 2 sqrt(k_t m), m the pair's mass (ContactModel)
+  // k_t / (dF_n/dd) > 0: the tag's, else MindlinRatio of its materials, else
+  // kMindlinRatio (one material of nu = 0.3)
+  double tangential_ratio = kMindlinRatio;
+  // c_t, N s/m >= 0; unset: 2 zeta sqrt(k_t m), m the pair's mass
+  // (ContactModel), zeta the tangential_damping_ratio; unset: the normal
+  // law's damping ratio where normal_damping_ratio (a tag of materials),
+  // else 1 (critical)
   std::optional<double> tangential_damping;
+  std::optional<double> tangential_damping_ratio;  // zeta in [0, 1]
+  bool normal_damping_ratio = false;
   double bristle_stiffness = kDefaultBristleStiffness;  // sigma0, 1/m > 0 (x F_n)
   // sigma1, s/m >= 0 (x F_n); unset: critical for the bristles at the load and
   // the pair's mass m, 2 sqrt(sigma0 F_n m) N s/m (see FrictionInput::mass)
@@ -105,6 +123,20 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& params);
 // or k (Kelvin-Voigt).
 double NormalStiffness(const LawParams& law, double depth);
 
+// k_t of coulomb and stribeck at depth d > 0 (N/m): the tag's, else Mindlin's
+// no-slip spring tangential_ratio x NormalStiffness(law, d). Incremental in
+// the kernels (CappedSpring), so that it follows the load history as
+// Thornton et al. (2011) and Di Renzo and Di Maio (2005) have it.
+double TangentialStiffness(const FrictionParams& params, const LawParams& law, double depth);
+
+// c_t of coulomb and stribeck (N s/m) for the stick spring k_t on mass m (kg):
+// the tag's c_t; else 2 zeta sqrt(k_t m), zeta the tag's ratio, or the normal
+// law's own damping ratio at state, c_n / (2 sqrt(k_n m)), which makes c_t =
+// c_n sqrt(k_t / k_n) whatever m (Tsuji, Tanaka, Ishida, Powder Technol.
+// 71:239, 1992; LIGGGHTS' and Yade's Hertz-Mindlin), or 1 (critical).
+double TangentialDamping(const FrictionParams& params, const LawParams& law,
+                         const ContactState& state, double stiffness, double mass);
+
 // mu at slip speed s (m/s) while sliding: mu_k (coulomb), Andersson's
 // mu_k + (mu_s - mu_k) exp(-(s / v_s)^2) (stribeck, lugre), the regularized
 // curve (regularized).
@@ -115,16 +147,16 @@ double SlidingMu(const FrictionParams& params, double speed);
 // divide it into steps). pi / r, r the fastest rate (1/s) of the spring k and
 // damper c the contact puts on mass m (kg): r = sqrt(k / m) when c <= 2
 // sqrt(k m), else c / 2m + sqrt((c / 2m)^2 - k / m). The spring and damper:
-//   coulomb, stribeck: k_t = stiffness (N/m), c_t (default 2 sqrt(k_t m):
-//     critical, r = sqrt(k_t / m)) plus viscous;
+//   coulomb, stribeck: k_t = stiffness (N/m), c_t = damping (N s/m, from
+//     TangentialDamping) plus viscous;
 //   lugre: the bristles sigma0 F_n, BristleDamping plus viscous;
 //   regularized: no spring; its curve's slope at zero slip, c = 2 mu_s F_n /
 //     v_t, is a damper, with no period: the duration is 10 m / c, so that
 //     the 20 steps per period of the callers are its lag m / c each.
 // Infinite for none, and where nothing stiffens the contact (no load, no
 // stiffness, an infinite mass).
-double TangentialDuration(const FrictionParams& params, double stiffness, double mass,
-                          double normal_force);
+double TangentialDuration(const FrictionParams& params, double stiffness, double damping,
+                          double mass, double normal_force);
 
 // LuGre's bristle damper at rest, N s/m: the tag's sigma1 x F_n, or critical
 // for the bristle spring sigma0 F_n on the pair's mass, 2 sqrt(sigma0 F_n m).

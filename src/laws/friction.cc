@@ -99,6 +99,31 @@ double NormalStiffness(const LawParams& law, double depth) {
   return law.exponent * law.stiffness * std::pow(depth, law.exponent - 1);
 }
 
+double MindlinRatio(double youngs1, double poisson1, double youngs2, double poisson2) {
+  // normal and shear compliances, summed over the two materials
+  auto shear = [](double youngs, double poisson) { return youngs / (2 * (1 + poisson)); };
+  const double normal = (1 - poisson1 * poisson1) / youngs1 + (1 - poisson2 * poisson2) / youngs2;
+  const double tangential =
+      (2 - poisson1) / shear(youngs1, poisson1) + (2 - poisson2) / shear(youngs2, poisson2);
+  return 4 * normal / tangential;
+}
+
+double TangentialStiffness(const FrictionParams& params, const LawParams& law, double depth) {
+  return params.tangential_stiffness.value_or(params.tangential_ratio *
+                                              NormalStiffness(law, depth));
+}
+
+double TangentialDamping(const FrictionParams& params, const LawParams& law,
+                         const ContactState& state, double stiffness, double mass) {
+  if (params.tangential_damping) return *params.tangential_damping;
+  if (!params.tangential_damping_ratio && params.normal_damping_ratio) {
+    // the normal law's damping ratio on k_t: c_n sqrt(k_t / k_n)
+    const double normal = state.depth > 0 ? NormalStiffness(law, state.depth) : 0.0;
+    return normal > 0 ? DampingCoefficient(law, state) * std::sqrt(stiffness / normal) : 0.0;
+  }
+  return 2 * params.tangential_damping_ratio.value_or(1.0) * std::sqrt(stiffness * mass);
+}
+
 double SlidingMu(const FrictionParams& params, double speed) {
   switch (params.kind) {
     case FrictionKind::kRegularized: return RegularizedMu(params, speed);
@@ -110,8 +135,8 @@ double SlidingMu(const FrictionParams& params, double speed) {
   return 0;
 }
 
-double TangentialDuration(const FrictionParams& p, double stiffness, double mass,
-                          double normal_force) {
+double TangentialDuration(const FrictionParams& p, double stiffness, double damping,
+                          double mass, double normal_force) {
   const double fn = std::max(normal_force, 0.0);
   double k = 0, c = p.viscous;
   switch (p.kind) {
@@ -119,7 +144,7 @@ double TangentialDuration(const FrictionParams& p, double stiffness, double mass
     case FrictionKind::kCoulomb:
     case FrictionKind::kStribeck:
       k = stiffness;
-      c += p.tangential_damping.value_or(2 * std::sqrt(k * mass));
+      c += damping;
       break;
     case FrictionKind::kLuGre:
       k = p.bristle_stiffness * fn;

@@ -20,11 +20,15 @@ const std::vector<FrictionInfo>& FrictionModels() {
        "spring",
        "the spring's force, anchored on both bodies (body-frame points), committed per step",
        "mu_static, mu_kinetic (>= 0, kinetic <= static; mu sets both), tangential_stiffness "
-       "k_t (N/m > 0, default Mindlin 0.82 dF_n/dd), tangential_damping c_t (N s/m >= 0, "
-       "default 2 sqrt(k_t m))",
+       "k_t (N/m > 0; default Mindlin's tangential_ratio x dF_n/dd: 8 G* a from materials, "
+       "else 0.82), tangential_damping c_t (N s/m >= 0) or tangential_damping_ratio zeta "
+       "([0, 1]; c_t = 2 zeta sqrt(k_t m); default: the normal law's damping ratio from "
+       "materials, else 1)",
        "Coulomb with an elastic stick anchor: R. Featherstone, Rigid Body Dynamics Algorithms "
        "(2008) 11.8; P. A. Cundall, O. D. L. Strack, Geotechnique 29:47-65 (1979); "
-       "R. D. Mindlin, J. Appl. Mech. 16:259-268 (1949)"},
+       "R. D. Mindlin, J. Appl. Mech. 16:259-268 (1949); R. D. Mindlin, H. Deresiewicz, "
+       "J. Appl. Mech. 20:327-344 (1953); Y. Tsuji, T. Tanaka, T. Ishida, Powder Technol. "
+       "71:239-250 (1992)"},
       {"regularized",
        "F = -mu(|v|) F_n v/|v|; mu = mu_s s(2-s) for s = |v|/v_t < 1, then step5 to mu_k at "
        "s = 3",
@@ -85,6 +89,7 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
     return ParamError{"mu_kinetic", p.mu_kinetic, "must be in [0, mu_static]"};
   }
   const std::pair<const char*, double> positive[] = {
+      {"tangential_ratio", p.tangential_ratio},
       {"transition_velocity", p.transition_velocity},
       {"stribeck_velocity", p.stribeck_velocity},
       {"bristle_stiffness", p.bristle_stiffness},
@@ -101,6 +106,9 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
   for (const auto& [key, value] : non_negative) {
     if (!finite(value) || value < 0) return ParamError{key, value, "must be >= 0"};
   }
+  // beyond critical for the pair's mass: give tangential_damping in N s/m
+  const double zeta = p.tangential_damping_ratio.value_or(0.0);
+  if (!(zeta >= 0 && zeta <= 1)) return ParamError{"tangential_damping_ratio", zeta, "must be in [0, 1]"};
   return std::nullopt;
 }
 

@@ -92,13 +92,15 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   in.was_sliding = committed.sliding;
   in.normal_force = std::max(e->force, 0.0);
 
-  // k_t: the tag's, or Mindlin's share of the normal law's stiffness here
-  in.stiffness = params.tangential_stiffness.value_or(kMindlinRatio *
-                                                      NormalStiffness(pair.params, e->depth));
+  // k_t: the tag's, or Mindlin's no-slip spring at this depth; c_t
+  in.stiffness = TangentialStiffness(params, pair.params, e->depth);
   in.committed_stiffness = committed.stiffness;
   in.mass = pair.friction_mass;
-  in.damping =
-      params.tangential_damping.value_or(2 * std::sqrt(in.stiffness * pair.friction_mass));
+  ContactState state;
+  state.depth = e->depth;
+  state.depth_rate = e->depth_rate;
+  state.impact_velocity = e->impact_velocity;
+  in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
 
   const FrictionOutput out = EvaluateFriction(params, in);
   for (int b = 0; b < 2; ++b) {

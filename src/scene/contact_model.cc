@@ -304,7 +304,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
 void ContactModel::AddFriction(int g1, int g2, const PairTagSpec& spec,
                                const std::string& pair_name, const TagResolver& resolve,
                                GeomPair* pair) {
-  const PairFriction friction = ResolvePairFriction(model_, g1, g2, spec.friction, overrides_);
+  const PairFriction friction = ResolvePairFriction(model_, g1, g2, spec, overrides_);
   if (!friction.error.empty()) resolve.Fail(fmt::format("{}: {}", pair_name, friction.error));
   if (friction.ignored_key) {
     warnings_.push_back(resolve.Message(fmt::format(

@@ -10,8 +10,9 @@
 
 namespace contactlaws {
 
-PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const FrictionTagSpec& spec,
+PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const PairTagSpec& tag,
                                  const Overrides& overrides) {
+  const FrictionTagSpec& spec = tag.friction;
   PairFriction out;
   FrictionParams& p = out.params;
   // MuJoCo 2.2 (mj_contactParam): the larger condim, and each friction
@@ -49,8 +50,16 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const Frictio
   }
   if (spec.transition_velocity) p.transition_velocity = *spec.transition_velocity;
   if (spec.stribeck_velocity) p.stribeck_velocity = *spec.stribeck_velocity;
+  // Mindlin's no-slip spring of the tag's materials, damped at the normal
+  // law's damping ratio, unless the tag says otherwise
   p.tangential_stiffness = spec.tangential_stiffness;
+  if (tag.youngs1) {
+    p.tangential_ratio = MindlinRatio(*tag.youngs1, *tag.poisson1, *tag.youngs2, *tag.poisson2);
+    p.normal_damping_ratio = true;
+  }
+  if (spec.tangential_ratio) p.tangential_ratio = *spec.tangential_ratio;
   p.tangential_damping = spec.tangential_damping;
+  p.tangential_damping_ratio = spec.tangential_damping_ratio;
   if (spec.bristle_stiffness) p.bristle_stiffness = *spec.bristle_stiffness;
   p.bristle_damping = spec.bristle_damping;
   if (spec.viscous) p.viscous = *spec.viscous;

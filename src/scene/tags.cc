@@ -63,15 +63,11 @@ class TagContext {
       KeyValue kv{word.substr(0, eq), word.substr(eq + 1)};
       if (std::find(allowed.begin(), allowed.end(), kv.key) == allowed.end()) {
         std::string_view hint = NearestWord(kv.key, allowed.data(), N);
-        Fail(hint.empty()
-                 ? fmt::format("unknown key '{}'", kv.key)
-                 : fmt::format("unknown key '{}' (did you mean '{}'?)", kv.key,
-                               hint));
+        Fail(hint.empty() ? fmt::format("unknown key '{}'", kv.key)
+                          : fmt::format("unknown key '{}' (did you mean '{}'?)", kv.key, hint));
       }
       for (const KeyValue& seen : words) {
-        if (seen.key == kv.key) {
-          Fail(fmt::format("key '{}' is given twice", kv.key));
-        }
+        if (seen.key == kv.key) Fail(fmt::format("key '{}' is given twice", kv.key));
       }
       if (kv.value.empty()) FailValue(kv.key, "", "has no value");
       words.push_back(kv);
@@ -99,7 +95,6 @@ class TagContext {
 
 std::string_view Label(const TagContext& ctx, std::string_view name,
                        std::string_view prefix) {
-  // (a name shorter than the prefix made substr throw std::out_of_range)
   if (name.substr(0, prefix.size()) != prefix) {
     ctx.Fail(fmt::format("the tag name must start with '{}'", prefix));
   }
@@ -119,19 +114,24 @@ bool ParseFrictionKey(const TagContext& ctx, const KeyValue& kv, FrictionTagSpec
   if (k == "friction") {
     f->kind = ParseFrictionName(kv.value);
     if (!f->kind) {
-      ctx.FailValue(k, kv.value,
-                    fmt::format("is not a friction model ({}){}", FrictionNameList(),
-                                FrictionSuggestion(kv.value)));
+      ctx.FailValue(k, kv.value, fmt::format("is not a friction model ({}){}", FrictionNameList(),
+                                             FrictionSuggestion(kv.value)));
     }
   } else if (k == "mu" || k == "mu_static" || k == "mu_kinetic") {
     (k == "mu" ? f->mu : k == "mu_static" ? f->mu_static : f->mu_kinetic) = non_negative("");
   } else if (k == "stribeck_velocity" || k == "transition_velocity") {
     (k == "stribeck_velocity" ? f->stribeck_velocity : f->transition_velocity) =
         ctx.Positive(kv, "m/s");
-  } else if (k == "tangential_stiffness") {
-    f->tangential_stiffness = ctx.Positive(kv, "N/m");
+  } else if (k == "tangential_stiffness" || k == "tangential_ratio") {
+    const bool ratio = k == "tangential_ratio";
+    (ratio ? f->tangential_ratio : f->tangential_stiffness) =
+        ctx.Positive(kv, ratio ? "k_t over dF_n/dd" : "N/m");
   } else if (k == "tangential_damping") {
     f->tangential_damping = non_negative(" (N s/m)");
+  } else if (k == "tangential_damping_ratio") {
+    const double zeta = ctx.Number(kv);
+    if (!(zeta >= 0 && zeta <= 1)) ctx.FailValue(k, kv.value, "must be in [0, 1] (1: critical)");
+    f->tangential_damping_ratio = zeta;
   } else if (k == "bristle_stiffness") {
     f->bristle_stiffness = ctx.Positive(kv, "1/m, per newton of normal force");
   } else if (k == "bristle_damping") {
@@ -153,6 +153,11 @@ void CheckFrictionKeys(const TagContext& ctx, const FrictionTagSpec& f) {
   if (f.mu && (f.mu_static || f.mu_kinetic)) {
     ctx.Fail(fmt::format("mu={} and {} exclude each other (mu sets both)", *f.mu,
                          f.mu_static ? "mu_static" : "mu_kinetic"));
+  }
+  const bool both_k = f.tangential_stiffness && f.tangential_ratio;
+  if (both_k || (f.tangential_damping && f.tangential_damping_ratio)) {
+    ctx.Fail(both_k ? "tangential_stiffness and tangential_ratio exclude each other"
+                    : "tangential_damping and tangential_damping_ratio exclude each other");
   }
   if (f.mu_static && f.mu_kinetic && *f.mu_kinetic > *f.mu_static) {
     ctx.FailValue("mu_kinetic", fmt::format("{}", *f.mu_kinetic),
@@ -279,7 +284,6 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
   TagContext ctx(source, name);
   PairTagSpec spec;
   spec.label = std::string(Label(ctx, name, kPairTagPrefix));
-
   for (const KeyValue& kv : ctx.Split(data, kPairKeys)) {
     const std::string_view k = kv.key;
     if (ParseFrictionKey(ctx, kv, &spec.friction)) continue;
@@ -351,9 +355,8 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
                           : !spec.poisson1 ? "poisson1"
                           : !spec.youngs2  ? "youngs2"
                                            : "poisson2";
-    ctx.Fail(fmt::format(
-        "missing key {} (materials need youngs1 poisson1 youngs2 poisson2)",
-        missing));
+    ctx.Fail(fmt::format("missing key {} (materials need youngs1 poisson1 youngs2 poisson2)",
+                         missing));
   }
   if (materials == 4 && spec.stiffness) {
     ctx.Fail("stiffness and materials (youngs1 ...) exclude each other");
@@ -383,12 +386,9 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
       spec.speed = ctx.Number(kv);
       has_speed = true;
     } else if (k == "axis") {
-      if (kv.value == "x") {
-        spec.axis = {1, 0, 0};
-      } else if (kv.value == "y") {
-        spec.axis = {0, 1, 0};
-      } else if (kv.value == "z") {
-        spec.axis = {0, 0, 1};
+      if (kv.value == "x" || kv.value == "y" || kv.value == "z") {
+        spec.axis = {0, 0, 0};
+        spec.axis[kv.value[0] - 'x'] = 1;
       } else {
         // ax,ay,az
         std::array<double, 3> a{};

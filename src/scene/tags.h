@@ -27,14 +27,15 @@ namespace contactlaws {
 inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
 inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
 
-inline constexpr std::array<std::string_view, 28> kPairKeys = {
+inline constexpr std::array<std::string_view, 30> kPairKeys = {
     "geom1",         "geom2",    "law",      "restitution",
     "stiffness",     "exponent", "linear_stiffness", "damping",
     "dissipation",   "min_impact_velocity", "allow_tension", "youngs1",
     "poisson1",      "youngs2",  "poisson2",
     // friction (friction.h)
     "friction", "mu", "mu_static", "mu_kinetic", "stribeck_velocity", "transition_velocity",
-    "tangential_stiffness", "tangential_damping", "bristle_stiffness", "bristle_damping",
+    "tangential_stiffness", "tangential_ratio", "tangential_damping",
+    "tangential_damping_ratio", "bristle_stiffness", "bristle_damping",
     "viscous", "torsional_friction", "rolling_friction"};
 
 inline constexpr std::array<std::string_view, 7> kDriveKeys = {
@@ -47,7 +48,9 @@ struct FrictionTagSpec {
   std::optional<double> mu, mu_static, mu_kinetic;  // >= 0
   std::optional<double> stribeck_velocity, transition_velocity;  // m/s > 0
   std::optional<double> tangential_stiffness;  // N/m > 0
+  std::optional<double> tangential_ratio;      // k_t / (dF_n/dd) > 0
   std::optional<double> tangential_damping;    // N s/m >= 0
+  std::optional<double> tangential_damping_ratio;  // [0, 1]
   std::optional<double> bristle_stiffness;     // 1/m > 0
   std::optional<double> bristle_damping;       // s/m >= 0
   std::optional<double> viscous;               // N s/m >= 0

@@ -152,8 +152,10 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
   if (f.kind == FrictionKind::kNone) return kInfinity;
   // the stick spring (or bristles, or regularized curve) at this point's
   // stiffness and load, on the pair's mass
-  double duration =
-      TangentialDuration(f, e.friction_state.stiffness, pair.friction_mass, e.force);
+  const double k = e.friction_state.stiffness;
+  double duration = TangentialDuration(
+      f, k, TangentialDamping(f, pair.params, State(e), k, pair.friction_mass),
+      pair.friction_mass, e.force);
   // the rolling and torsional springs, critically damped on the pair's
   // moment of inertia
   const double lengths[2] = {f.torsional, f.rolling};

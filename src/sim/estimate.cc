@@ -235,8 +235,7 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
     t.what = fmt::format("bristles ({}, sigma0 F_n {:.4g} N/m, F_n {:.4g} N, mass {:.4g} kg)",
                          model, t.stiffness, t.normal_force, t.mass);
   } else {
-    t.stiffness =
-        f.tangential_stiffness.value_or(kMindlinRatio * NormalStiffness(pair.params, depth));
+    t.stiffness = TangentialStiffness(f, pair.params, depth);
     t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,
                          t.stiffness,
                          f.tangential_stiffness ? ""
@@ -244,7 +243,12 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
                                                 : " (Mindlin, at the max depth)",
                          t.mass);
   }
-  t.duration = TangentialDuration(f, t.stiffness, t.mass, t.normal_force);
+  // c_t at that depth, with the law's v0 of the estimate's impact
+  ContactState at;
+  at.depth = depth;
+  at.impact_velocity = std::max(normal.impact_velocity, pair.params.min_impact_velocity);
+  t.damping = TangentialDamping(f, pair.params, at, t.stiffness, t.mass);
+  t.duration = TangentialDuration(f, t.stiffness, t.damping, t.mass, t.normal_force);
   return t;
 }
 

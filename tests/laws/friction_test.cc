@@ -148,6 +148,65 @@ TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
   p = Params(FrictionKind::kCoulomb);
   p.tangential_stiffness = 0;
   EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_stiffness");
+  p = Params(FrictionKind::kCoulomb);
+  p.tangential_ratio = -1;
+  EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_ratio");
+  p = Params(FrictionKind::kCoulomb);
+  p.tangential_damping_ratio = 1.5;
+  EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_damping_ratio");
+  p.tangential_damping_ratio = 1;
+  EXPECT_FALSE(ValidateFrictionParams(p));
+}
+
+// Mindlin's no-slip spring: 8 G* a of two spheres whose normal law is Hertz's
+// 4/3 E* sqrt(R*) d^1.5, G* of each material's own Poisson ratio.
+TEST(FrictionKernelTest, MindlinsStiffnessIsEightGStarA) {
+  // rounding of a few operations
+  constexpr double kRounding = 1e-14;
+  const double e1 = 380e9, nu1 = 0.23, e2 = 70e9, nu2 = 0.25;  // alumina on glass
+  const double r = 2.55e-3, d = 1e-6;
+  const double e_star = 1 / ((1 - nu1 * nu1) / e1 + (1 - nu2 * nu2) / e2);
+  const double g1 = e1 / (2 * (1 + nu1)), g2 = e2 / (2 * (1 + nu2));
+  const double g_star = 1 / ((2 - nu1) / g1 + (2 - nu2) / g2);
+  LawParams hertz;
+  hertz.stiffness = 4.0 / 3.0 * e_star * std::sqrt(r);
+  FrictionParams p = Params(FrictionKind::kCoulomb);
+  p.tangential_ratio = MindlinRatio(e1, nu1, e2, nu2);
+  EXPECT_NEAR(TangentialStiffness(p, hertz, d) / (8 * g_star * std::sqrt(r * d)), 1, kRounding);
+  // one material: 2 (1 - nu) / (2 - nu), the default's form
+  EXPECT_NEAR(MindlinRatio(2e11, kDefaultPoisson, 2e11, kDefaultPoisson), kMindlinRatio, kRounding);
+  // the tag's k_t wins
+  p.tangential_stiffness = 5e5;
+  EXPECT_EQ(TangentialStiffness(p, hertz, d), 5e5);
+}
+
+// c_t: the tag's, zeta's, the normal law's damping ratio on k_t, or critical.
+TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
+  // rounding of a few operations
+  constexpr double kRounding = 1e-14;
+  LawParams law;
+  law.kind = LawKind::kHuntCrossley;
+  law.stiffness = 1e9;
+  law.restitution = 0.9;
+  ContactState state;
+  state.depth = 1e-5;
+  state.impact_velocity = 2;
+  const double k_n = NormalStiffness(law, state.depth);
+  const double c_n = DampingCoefficient(law, state);
+  const double k_t = 0.8 * k_n, m = 0.01;
+  FrictionParams p = Params(FrictionKind::kCoulomb);
+  EXPECT_DOUBLE_EQ(TangentialDamping(p, law, state, k_t, m), 2 * std::sqrt(k_t * m));
+  p.normal_damping_ratio = true;
+  // the same ratio c / (2 sqrt(k m)) on both springs
+  const double c_t = TangentialDamping(p, law, state, k_t, m);
+  EXPECT_NEAR(c_t / (2 * std::sqrt(k_t * m)), c_n / (2 * std::sqrt(k_n * m)), kRounding);
+  EXPECT_GT(c_t, 0);
+  state.depth = 0;
+  EXPECT_EQ(TangentialDamping(p, law, state, k_t, m), 0);
+  p.tangential_damping_ratio = 0.5;
+  EXPECT_DOUBLE_EQ(TangentialDamping(p, law, state, k_t, m), std::sqrt(k_t * m));
+  p.tangential_damping = 3;
+  EXPECT_EQ(TangentialDamping(p, law, state, k_t, m), 3);
 }
 
 // The tangential time scale: pi / omega of a critically damped stick spring,
@@ -156,23 +215,24 @@ TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
 TEST(FrictionKernelTest, TangentialDurationIsPiOverTheFastestRate) {
   FrictionParams p = Params(FrictionKind::kCoulomb);
   const double m = 2, k = 8e4, fn = 19.62;
-  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn), M_PI * std::sqrt(m / k));
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, 2 * std::sqrt(k * m), m, fn), M_PI * std::sqrt(m / k));
   // c = 10 sqrt(k m): rates of m s^2 + c s + k = 0, the larger one
-  p.tangential_damping = 10 * std::sqrt(k * m);
-  const double half = *p.tangential_damping / (2 * m);
-  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn), M_PI / (half + std::sqrt(half * half - k / m)));
+  const double c = 10 * std::sqrt(k * m);
+  const double half = c / (2 * m);
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, c, m, fn),
+                   M_PI / (half + std::sqrt(half * half - k / m)));
   // a damper: ten lags m / c, so that 20 steps per period 2 x duration are a
   // lag each
   p = Params(FrictionKind::kRegularized);
-  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn),
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, 0, m, fn),
                    10 * m * p.transition_velocity / (2 * p.mu_static * fn));
   p = Params(FrictionKind::kLuGre);
   p.bristle_damping = 0;
-  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, m, fn),
+  EXPECT_DOUBLE_EQ(TangentialDuration(p, k, 0, m, fn),
                    M_PI * std::sqrt(m / (p.bristle_stiffness * fn)));
-  EXPECT_TRUE(std::isinf(TangentialDuration(p, k, m, 0)));
-  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kNone), k, m, fn)));
-  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kCoulomb), k, INFINITY, fn)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(p, k, 0, m, 0)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kNone), k, 0, m, fn)));
+  EXPECT_TRUE(std::isinf(TangentialDuration(Params(FrictionKind::kCoulomb), k, 0, INFINITY, fn)));
 }
 
 }  // namespace

@@ -141,6 +141,8 @@ TEST_F(SceneTest, FrictionComesFromTheGeomsAsMujocoCombinesThem) {
   EXPECT_EQ(p.mu_kinetic, 0.7);
   EXPECT_EQ(p.torsional, 0.01);
   EXPECT_EQ(p.rolling, 0);
+  EXPECT_EQ(p.tangential_ratio, kMindlinRatio);
+  EXPECT_FALSE(p.normal_damping_ratio);
   // condim 1: frictionless, and the tag's friction key is warned about
   EXPECT_EQ(cm.pairs()[1].friction.kind, FrictionKind::kNone);
   ASSERT_EQ(cm.warnings().size(), 1u);
@@ -154,6 +156,43 @@ TEST_F(SceneTest, FrictionComesFromTheGeomsAsMujocoCombinesThem) {
   EXPECT_EQ(over.pairs()[0].friction.kind, FrictionKind::kLuGre);
   EXPECT_EQ(over.pairs()[0].friction.mu_kinetic, 0.2);
   EXPECT_EQ(over.pairs()[1].friction.kind, FrictionKind::kNone);
+}
+
+// A tag of materials gives its pair Mindlin's spring of their shear moduli
+// and the normal law's damping ratio; a tag of stiffness keeps nu = 0.3 and
+// the critical damper; the keys override either; a tangential key on a
+// frictionless pair is warned about.
+TEST_F(SceneTest, MaterialsGiveMindlinsSpringAndTheNormalDampingRatio) {
+  UniqueModel m = LoadModelString(R"(<mujoco>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <geom name="ice" type="plane" size="1 1 0.1" pos="0 0 -1" condim="1"/>
+    <geom name="wall" type="plane" size="1 1 0.1" pos="0 0 -2"/>
+    <body name="ball" pos="0 0 0.2"><freejoint/><geom name="ball" type="sphere" size="0.1"/></body>
+    <body name="puck" pos="1 0 0.2"><freejoint/>
+      <geom name="puck" type="sphere" size="0.1" condim="1"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:p" data="geom1=ball geom2=floor law=exact restitution=0.9
+      youngs1=380e9 poisson1=0.23 youngs2=70e9 poisson2=0.25"/>
+    <text name="contactlaw:q" data="geom1=puck geom2=ice law=hertz stiffness=1
+      tangential_damping_ratio=0.5"/>
+    <text name="contactlaw:r" data="geom1=ball geom2=wall law=exact restitution=0.9
+      youngs1=380e9 poisson1=0.23 youngs2=70e9 poisson2=0.25 tangential_ratio=0.7
+      tangential_damping_ratio=1"/>
+  </custom>
+</mujoco>)", "mindlin.xml");
+  const ContactModel cm(m.get(), "mindlin.xml");
+  const FrictionParams& p = cm.pairs()[0].friction;
+  EXPECT_EQ(p.tangential_ratio, MindlinRatio(380e9, 0.23, 70e9, 0.25));
+  EXPECT_TRUE(p.normal_damping_ratio);
+  EXPECT_FALSE(p.tangential_damping_ratio);
+  ASSERT_EQ(cm.warnings().size(), 1u);
+  EXPECT_EQ(cm.warnings()[0], "mindlin.xml: contactlaw:q: (puck, ice): tangential_damping_ratio "
+                              "is not read: the pair is frictionless (condim 1, as in MuJoCo)");
+  const FrictionParams& r = cm.pairs()[2].friction;
+  EXPECT_EQ(r.tangential_ratio, 0.7);
+  EXPECT_EQ(r.tangential_damping_ratio, 1.0);
 }
 
 // The tag's torque caps replace the geoms' where condim has them, and are

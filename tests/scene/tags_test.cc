@@ -88,6 +88,22 @@ TEST(TagsTest, FrictionKeysAreReadAndBadOnesNamed) {
             "s.xml: contactlaw:t: mu=0.3 and mu_static exclude each other (mu sets both)");
   EXPECT_EQ(PairTagError(ok + "tangential_stiffness=0"),
             "s.xml: contactlaw:t: tangential_stiffness=0 must be > 0 (N/m)");
+  // Mindlin's spring and its damping ratio (friction.h)
+  const PairTagSpec mindlin = ParsePairTag(
+      "s.xml", "contactlaw:t", ok + "tangential_ratio=0.9 tangential_damping_ratio=0.25");
+  EXPECT_EQ(mindlin.friction.tangential_ratio, 0.9);
+  EXPECT_EQ(mindlin.friction.tangential_damping_ratio, 0.25);
+  EXPECT_EQ(PairTagError(ok + "tangential_ratio=0"),
+            "s.xml: contactlaw:t: tangential_ratio=0 must be > 0 (k_t over dF_n/dd)");
+  EXPECT_EQ(PairTagError(ok + "tangential_damping_ratio=1.5"),
+            "s.xml: contactlaw:t: tangential_damping_ratio=1.5 must be in [0, 1] (1: critical)");
+  EXPECT_EQ(PairTagError(ok + "tangential_damping_ratio=-0.1"),
+            "s.xml: contactlaw:t: tangential_damping_ratio=-0.1 must be in [0, 1] (1: critical)");
+  EXPECT_EQ(PairTagError(ok + "tangential_stiffness=1e5 tangential_ratio=0.8"),
+            "s.xml: contactlaw:t: tangential_stiffness and tangential_ratio exclude each other");
+  EXPECT_EQ(PairTagError(ok + "tangential_damping=1 tangential_damping_ratio=0.5"),
+            "s.xml: contactlaw:t: tangential_damping and tangential_damping_ratio exclude each "
+            "other");
   EXPECT_EQ(PairTagError(ok + "bristle_stiffness=-1"),
             "s.xml: contactlaw:t: bristle_stiffness=-1 must be > 0 (1/m, per newton of normal "
             "force)");
