@@ -66,7 +66,10 @@ bool Reads(std::string_view key, LawKind law, FrictionKind friction) {
   }
   if (key == "transition_velocity") return friction == FrictionKind::kRegularized;
   if (key == "stribeck_velocity" || key == "viscous") return andersson;
-  if (key == "tangential_stiffness" || key == "tangential_damping") return sticks;
+  if (key == "tangential_stiffness" || key == "tangential_damping" || key == "tangential_ratio" ||
+      key == "tangential_damping_ratio") {
+    return sticks;
+  }
   if (key == "bristle_stiffness" || key == "bristle_damping") return friction == FrictionKind::kLuGre;
   return true;  // stiffness, min_impact_velocity, the materials
 }
