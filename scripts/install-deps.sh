@@ -14,6 +14,7 @@ packages=(
   libgtest-dev
   libcli11-dev
   libbenchmark-dev
+  libnlopt-dev        # fit: NLopt's optimisers through its C API (docs/identification.md)
   clang               # the sanitizer builds and the fuzzer of scripts/test.sh
   libclang-rt-14-dev  # clang's sanitizer and libFuzzer runtimes
   python3-matplotlib

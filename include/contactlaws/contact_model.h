@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <mujoco/mujoco.h>
@@ -32,6 +33,10 @@ struct Overrides {
   // every tagged pair's friction model, and its mu (mu_static = mu_kinetic)
   std::optional<FrictionKind> friction;
   std::optional<double> mu;
+  // key=value words set on every contactlaw tag before it is read (a fit's
+  // parameters): each replaces the tag's own value of the key or adds it,
+  // and is checked as the tag's own words are
+  std::vector<std::pair<std::string, std::string>> keys;
 };
 
 // One contactlaw tag.

@@ -24,5 +24,9 @@
 #include "contactlaws/summary.h"
 #include "contactlaws/timestep_advice.h"
 #include "contactlaws/visible_contacts.h"
+#include "contactlaws/measured.h"
+#include "contactlaws/score.h"
+#include "contactlaws/replay.h"
+#include "contactlaws/fit.h"
 
 #endif  // CONTACTLAWS_CONTACTLAWS_H_

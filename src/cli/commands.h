@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/identify.h"
 #include "cli/options.h"
 #include "cli/sweep.h"
 
@@ -73,6 +74,8 @@ struct LawsArgs {
 };
 
 int LawsCommand(const LawsArgs& args);
+int ReplayCommand(const ReplayArgs& args);
+int FitCommand(const FitArgs& args);
 
 }  // namespace contactlaws::cli
 

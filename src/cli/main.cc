@@ -8,6 +8,8 @@
 //   contactlaws laws               every law: formula, parameters, citation
 //   contactlaws simulate SCENE     mujoco-simulate with the plugin preloaded
 //   contactlaws render SCENE       the run drawn offscreen: MP4, GIF or PNG files
+//   contactlaws replay SCENE       measured trajectories simulated and scored
+//   contactlaws fit SCENE          parameters identified from measured trajectories
 // Exit status: 0 done; 2 refused input (one line on stderr naming the file,
 // tag, key and value); 3 a run did not give what was asked; 1 anything else.
 
@@ -118,6 +120,10 @@ struct Commands {
   LawsArgs laws;
   SimulateArgs simulate;
   RenderArgs render;
+  ReplayArgs replay;
+  FitArgs fit;
+  CLI::App* replay_cmd = nullptr;
+  CLI::App* fit_cmd = nullptr;
   CLI::App* run_cmd = nullptr;
   CLI::App* compare_cmd = nullptr;
   CLI::App* restitution_cmd = nullptr;
@@ -241,6 +247,79 @@ void AddRender(CLI::App* app, Commands* c) {
             "times)");
 }
 
+// The options replay and fit share.
+void AddReplayOptions(CLI::App* cmd, ReplayArgs* args) {
+  cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags (or none: MuJoCo's own "
+                  "contact)")->required();
+  cmd->add_option("--data", args->data,
+                  "measured trajectories, CSV (docs/identification.md)")->required();
+  cmd->add_option("--start", args->start,
+                  "first: each trajectory's first sample; refit: the published cube-toss rule "
+                  "(docs/identification.md)")->capture_default_str();
+  AddNumber(cmd, "--refit-height", &args->refit_height,
+            "with --start refit: the height (m) whose first crossing the start precedes "
+            "(default: the body's bounding radius)");
+  cmd->add_option("--refit-lead", args->refit_lead,
+                  "with --start refit: samples before that crossing")->capture_default_str();
+  cmd->add_option("--refit-min-samples", args->refit_min_samples,
+                  "with --start refit: velocities refit when the start is at least this sample")
+      ->capture_default_str();
+  cmd->add_option("--metric", args->metric,
+                  "e_q (published), position_rms (m), angle_rms (rad), or weighted")
+      ->capture_default_str();
+  cmd->add_option("--weights", args->weights,
+                  "with --metric weighted: P,A[,J]: P position_rms + A angle_rms + J joint_rms");
+  AddNumber(cmd, "--length", &args->length,
+            "e_q's length, m (default: each body's smallest geom size, a box's half side)");
+  cmd->add_option("--timestep", args->timestep,
+                  "s, or auto (default: auto for a tagged scene, else the scene's)");
+  AddNumber(cmd, "--max-timestep", &args->max_timestep,
+            "s, with --timestep auto: an optional cap on every step");
+  AddNumber(cmd, "--accuracy", &args->accuracy,
+            "with --timestep auto: the relative error accepted in a collision, in (0, 0.1]");
+  cmd->add_option("--integrator", args->integrator, "euler, rk4 or implicit (default: the scene's)");
+  AddOverrides(cmd, &args->law, &args->restitution);
+  AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
+  AddFriction(cmd, &args->friction, &args->mu);
+  cmd->add_option("--set", args->set, "KEY=VALUE: set a contactlaw tag key on every tag "
+                  "(repeatable)");
+  cmd->add_option("--jobs", args->jobs,
+                  "threads, >= 1 (default: the number of cores); the results do not depend on it")
+      ->type_name("INT");
+  cmd->add_flag("--quiet", args->quiet, "no progress on stderr");
+}
+
+void AddReplay(CLI::App* app, Commands* c) {
+  c->replay_cmd = app->add_subcommand(
+      "replay", "simulate measured trajectories from their start state and score them");
+  AddReplayOptions(c->replay_cmd, &c->replay);
+  c->replay_cmd->add_option("--output", c->replay.output,
+                            "DIR: writes replay.csv (scores) and trajectories.csv (simulated)");
+}
+
+void AddFit(CLI::App* app, Commands* c) {
+  c->fit_cmd = app->add_subcommand(
+      "fit", "identify tag and model parameters from measured trajectories (NLopt)");
+  FitArgs& f = c->fit;
+  AddReplayOptions(c->fit_cmd, &f);
+  c->fit_cmd->add_option("--params", f.params,
+                         "KEY=LO:HI[:log],...: tag keys, BODY.mass_scale, BODY.inertia_scale, "
+                         "GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction")
+      ->required();
+  c->fit_cmd->add_option("--laws", f.laws, fmt::format("L1,L2,... or all ({})", LawNameList()));
+  c->fit_cmd->add_option("--frictions", f.frictions,
+                         fmt::format("M1,M2,... or all ({})", FrictionNameList()));
+  c->fit_cmd->add_option("--validate", f.validate,
+                         "measured trajectories the fit does not see, scored at the fitted values");
+  c->fit_cmd->add_option("--budget", f.budget, "evaluations per combination")
+      ->capture_default_str();
+  c->fit_cmd->add_option("--seed", f.seed, "the search's seed: the same seed, the same result")
+      ->capture_default_str();
+  c->fit_cmd->add_option("--output", f.output,
+                         "DIR (default fit): ranking.csv, errors.csv, best_trajectories.csv, "
+                         "best_tag.txt");
+}
+
 // The subcommands, in the order the help lists them.
 struct Subcommand {
   const char* name;
@@ -249,7 +328,7 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"run", AddRun},         {"compare", AddCompare}, {"restitution", AddRestitution},
     {"check", AddCheck},     {"laws", AddLaws},       {"simulate", AddSimulate},
-    {"render", AddRender}};
+    {"render", AddRender},   {"replay", AddReplay},   {"fit", AddFit}};
 
 bool IsSubcommand(std::string_view word) {
   return std::any_of(std::begin(kSubcommands), std::end(kSubcommands),
@@ -283,6 +362,8 @@ int Dispatch(const Commands& c) {
     if (Parsed(c.laws_cmd)) return LawsCommand(c.laws);
     if (Parsed(c.simulate_cmd)) return SimulateCommand(c.simulate);
     if (Parsed(c.render_cmd)) return RenderCommand(c.render);
+    if (Parsed(c.replay_cmd)) return ReplayCommand(c.replay);
+    if (Parsed(c.fit_cmd)) return FitCommand(c.fit);
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     return kExitRefused;

@@ -206,7 +206,14 @@ void ContactModel::ReadTags(const Overrides& overrides) {
   for (int i = 0; i < m->ntext; ++i) {
     const std::string_view name = TextName(m, i);
     if (!StartsWith(name, kPairTagPrefix)) continue;
-    const PairTagSpec spec = ParsePairTag(source_, name, TextData(m, i));
+    // the keys set, read under the law that overrides the tag's, if any: a
+    // key that law reads (dissipation) is then not refused as the tag's
+    // law's
+    std::vector<std::pair<std::string, std::string>> keys = overrides.keys;
+    if (!keys.empty() && overrides.law) keys.emplace_back("law", LawName(*overrides.law));
+    const PairTagSpec spec = keys.empty()
+                                 ? ParsePairTag(source_, name, TextData(m, i))
+                                 : ParsePairTag(source_, name, WithKeys(TextData(m, i), keys));
     const TagResolver resolve(m, source_, spec.label);
     const LawParams base = ResolveLaw(spec, overrides, resolve);
 

@@ -211,6 +211,46 @@ std::string Suggestion(std::string_view name, const std::vector<std::string_view
 
 }  // namespace
 
+std::string WithKeys(std::string_view data,
+                     const std::vector<std::pair<std::string, std::string>>& keys) {
+  std::string out;
+  std::vector<bool> placed(keys.size(), false);
+  auto append = [&](std::string_view key, std::string_view value) {
+    out.append(out.empty() ? "" : " ").append(key).append("=").append(value);
+  };
+  size_t i = 0;
+  while (i < data.size()) {
+    while (i < data.size() && IsSpace(data[i])) ++i;
+    const size_t start = i;
+    while (i < data.size() && !IsSpace(data[i])) ++i;
+    if (start == i) break;
+    const std::string_view word = data.substr(start, i - start);
+    const size_t eq = word.find('=');
+    const std::string_view key = word.substr(0, eq);
+    // the last value given for the key, in the word's place
+    std::optional<size_t> set;
+    for (size_t k = 0; k < keys.size(); ++k) {
+      if (keys[k].first == key) set = k;
+    }
+    if (!set) {
+      out.append(out.empty() ? "" : " ").append(word);
+    } else if (!placed[*set]) {
+      append(key, keys[*set].second);
+      for (size_t k = 0; k < keys.size(); ++k) placed[k] = placed[k] || keys[k].first == key;
+    }
+  }
+  for (size_t k = 0; k < keys.size(); ++k) {
+    if (placed[k]) continue;
+    size_t last = k;  // the last value given for the key
+    for (size_t j = k + 1; j < keys.size(); ++j) {
+      if (keys[j].first == keys[k].first) last = j;
+    }
+    append(keys[k].first, keys[last].second);
+    for (size_t j = k; j < keys.size(); ++j) placed[j] = placed[j] || keys[j].first == keys[k].first;
+  }
+  return out;
+}
+
 std::string LawSuggestion(std::string_view name) {
   std::vector<std::string_view> names;
   for (const LawInfo& law : Laws()) names.push_back(law.name);

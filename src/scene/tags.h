@@ -16,6 +16,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "contactlaws/friction.h"
 #include "contactlaws/law.h"
@@ -100,6 +102,11 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
                          std::string_view data);
 DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
                            std::string_view data);
+
+// A tag's data with the words key=value of keys set: each replaces the
+// word of its key, or is appended when the data has none.
+std::string WithKeys(std::string_view data,
+                     const std::vector<std::pair<std::string, std::string>>& keys);
 
 // ": did you mean 'hertz'?" for a name close to a law's (letter case aside),
 // else "".

@@ -40,6 +40,14 @@ TEST(TagsTest, APairTagIsReadWhole) {
   EXPECT_EQ(spec.allow_tension, true);
 }
 
+TEST(TagsTest, WithKeysReplacesInPlaceAndAppendsTheRest) {
+  EXPECT_EQ(WithKeys("geom1=a geom2=b law=flores  restitution=0.1\n mu=0.2",
+                     {{"restitution", "0.5"}, {"stiffness", "1e6"}, {"restitution", "0.7"}}),
+            "geom1=a geom2=b law=flores restitution=0.7 mu=0.2 stiffness=1e6");
+  EXPECT_EQ(WithKeys("geom1=a", {}), "geom1=a");
+  EXPECT_EQ(WithKeys("", {{"law", "hertz"}}), "law=hertz");
+}
+
 TEST(TagsTest, BadValuesAreNamed) {
   const std::string ok = "geom1=a geom2=b law=hertz ";
   EXPECT_EQ(PairTagError(ok + "stiffness=1e8"), "");

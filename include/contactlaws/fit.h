@@ -1,0 +1,103 @@
+// Copyright contactlaws authors.
+//
+// Fit: the parameters of a scene identified from measured trajectories, by
+// minimising the mean score (score.h) of Replay over them with NLopt's
+// optimisers. A parameter is
+//   - a numeric key of the contactlaw tags (restitution, stiffness,
+//     exponent, dissipation, mu_static, mu_kinetic, tangential_stiffness,
+//     rolling_friction, ...), set on every tag (Overrides::keys);
+//   - BODY.mass_scale, BODY.inertia_scale: a body's mass or principal
+//     inertia times the value;
+//   - GEOM.offset: a geom moved along its own z axis (a plane's normal), m;
+//   - mujoco.timeconst, .dampratio (solref), .dmin, .dmax, .width (solimp),
+//     .friction (sliding): MuJoCo's own contact, on every geom, to fit the
+//     untagged scene as a peer.
+// Each is searched in [lo, hi], on a log scale when asked (lo > 0).
+//
+// The search: NLopt's CRS2 with local mutation (Kaelo & Ali 2006), a global
+// controlled random search seeded by `seed`, over 70% of the budget, then
+// BOBYQA (Powell 2009), a bounded local quadratic model, from the best point
+// for the rest. Both work on the parameters scaled to [0, 1] and need no
+// gradient (a rollout's score has none worth taking: a toss that lands on
+// another face jumps). The evaluations are sequential and each one's mean is
+// summed in trajectory order, so a seed gives the same result to the bit
+// whatever the number of threads.
+
+#ifndef CONTACTLAWS_FIT_H_
+#define CONTACTLAWS_FIT_H_
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contactlaws/replay.h"
+
+namespace contactlaws {
+
+struct FitParameter {
+  std::string key;  // as written: "stiffness", "cube.mass_scale", "board.offset"
+  double lo = 0, hi = 0;
+  bool log = false;
+  // what it sets: a tag key (edit unused), or a model edit (edit.value unused)
+  bool tag_key = true;
+  ModelEdit edit;
+  // The value at u in [0, 1].
+  double At(double u) const;
+};
+
+// "KEY=LO:HI[:log],KEY=..." checked against scene: a key that is neither a
+// numeric tag key nor a model parameter, a body or geom the scene lacks,
+// bounds that are not numbers, empty (lo >= hi), a log scale with lo <= 0,
+// a range a model parameter cannot take, a key given twice. Throws Error
+// "--params: KEY=...: ...". The tag keys' ranges are checked by CheckFit.
+std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjModel* m);
+
+// options with the parameters at values.
+ReplayOptions WithParameters(const ReplayOptions& options,
+                             const std::vector<FitParameter>& parameters,
+                             const std::vector<double>& values);
+
+// Per parameter, whether a tag of the scene reads it under options' law and
+// friction (model parameters always are).
+std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
+                                 const std::vector<FitParameter>& parameters);
+
+// "law/friction" of the scene's first contactlaw tag with the overrides
+// ("flores/coulomb"); "mujoco" for a scene without one.
+std::string CombinationName(const Scene& scene, const Overrides& overrides);
+
+// Refuses (Error naming the key) a parameter no tag of the scene reads under
+// options' law and friction, and bounds outside a tag key's range (the tags
+// are read with each parameter at lo and at hi).
+void CheckFit(const Scene& scene, const ReplayOptions& options,
+              const std::vector<FitParameter>& parameters);
+
+struct FitOptions {
+  ReplayOptions replay;  // the law, friction, start rule, metric's weights, threads
+  Metric metric = Metric::kEq;
+  std::vector<FitParameter> parameters;
+  int budget = 200;    // evaluations, each a replay of every trajectory
+  uint64_t seed = 1;
+  // After each evaluation: its number (from 1), its mean score, the best so far.
+  std::function<void(int, double, double)> on_evaluation;
+};
+
+struct FitResult {
+  std::vector<double> values;  // the best point, per parameter
+  double score = 0;            // its mean score over the trajectories
+  int evaluations = 0;
+  bool interrupted = false;    // ReplayOptions::should_stop ended it
+  double wall_seconds = 0;
+};
+
+// Minimises the mean score of replay's trajectories over the parameters.
+FitResult Fit(const Replay& replay, const FitOptions& options);
+
+// The mean of metric over replayed trajectories (0 when empty), summed in order.
+double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_FIT_H_

@@ -1,0 +1,144 @@
+// Copyright contactlaws authors.
+
+#include "cli/identify.h"
+
+#include <fmt/format.h>
+
+#include "cli/impact_csv.h"
+#include "cli/sweep.h"
+#include "scene/number.h"
+
+namespace contactlaws::cli {
+
+namespace {
+
+// "P,A" or "P,A,J", each >= 0.
+ScoreWeights ParseWeights(const std::string& text) {
+  std::vector<double> w;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma - start);
+    const std::optional<double> v = ParseNumber(part);
+    if (!v || *v < 0) Refuse("--weights", text, "must be P,A or P,A,J: numbers >= 0");
+    w.push_back(*v);
+    start = comma == std::string::npos ? text.size() + 1 : comma + 1;
+  }
+  if (w.size() < 2 || w.size() > 3) Refuse("--weights", text, "must be P,A or P,A,J: numbers >= 0");
+  return {w[0], w[1], w.size() == 3 ? w[2] : 0.0};
+}
+
+int ParseCount(std::string_view option, const std::string& text, long lo) {
+  const std::optional<long> v = ParseWholeNumber(text, lo, 1000000);
+  if (!v) Refuse(option, text, fmt::format("must be a whole number in [{}, 1000000]", lo));
+  return static_cast<int>(*v);
+}
+
+}  // namespace
+
+ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Metric* metric) {
+  ReplayOptions options;
+  const std::optional<Metric> m = ParseMetric(args.metric);
+  if (!m) Refuse("--metric", args.metric, "must be e_q, position_rms, angle_rms or weighted");
+  *metric = *m;
+  if (args.weights && *m != Metric::kWeighted) {
+    Refuse("--weights", *args.weights, "goes with --metric weighted");
+  }
+  if (args.weights) options.weights = ParseWeights(*args.weights);
+  if (args.length) options.length = ParsePositive("--length", *args.length, "m");
+
+  CommonOptions common = ParseCommon(args);
+  options.simulation = common.simulation;
+  // the laws need the contact-aware step; MuJoCo's own contact its scene's
+  bool tagged = false;
+  for (int i = 0; i < scene.model()->ntext; ++i) {
+    const char* name = scene.model()->names + scene.model()->name_textadr[i];
+    tagged = tagged || std::string_view(name).rfind("contactlaw:", 0) == 0;
+  }
+  options.auto_timestep = common.auto_timestep;
+  if (!args.timestep && !options.auto_timestep && tagged) options.auto_timestep.emplace();
+  ParseLawOverrides(args.law, args.restitution, &options.simulation.overrides);
+  for (const std::string& word : args.set) {
+    const size_t eq = word.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == word.size()) {
+      Refuse("--set", word, "must be KEY=VALUE, a contactlaw tag key and its value");
+    }
+    options.simulation.overrides.keys.emplace_back(word.substr(0, eq), word.substr(eq + 1));
+  }
+
+  if (args.start == "refit") {
+    options.start = StartRule::kRefit;
+  } else if (args.start != "first") {
+    Refuse("--start", args.start, "must be first or refit");
+  }
+  if (args.refit_height) options.refit.height = ParseOption("--refit-height", *args.refit_height);
+  options.refit.lead = ParseCount("--refit-lead", args.refit_lead, 0);
+  options.refit.min_samples = ParseCount("--refit-min-samples", args.refit_min_samples, 2);
+  options.jobs = Jobs(args.jobs);
+  return options;
+}
+
+MeasuredData ReadData(const std::string& option, const std::string& path) {
+  if (path.empty()) Refuse(option, path, "must name a trajectory file");
+  return ReadMeasuredData(path);
+}
+
+std::vector<std::string> ReplayColumns() {
+  return {"trajectory", "samples", "start", "e_q", "position_rms", "angle_rms", "joint_rms",
+          "weighted", "status"};
+}
+
+std::vector<std::string> ReplayFields(const MeasuredTrajectory& t, const ReplayedTrajectory& r) {
+  const char* status = r.status == ReplayedTrajectory::Status::kComplete   ? "complete"
+                       : r.status == ReplayedTrajectory::Status::kDiverged ? "diverged"
+                                                                           : "interrupted";
+  const Score& s = r.score;
+  return {t.name,
+          fmt::format("{}", s.samples),
+          fmt::format("{}", r.start),
+          Field(s.e_q),
+          Field(s.position_rms),
+          Field(s.angle_rms),
+          Field(s.joint_rms),
+          Field(s.weighted),
+          status};
+}
+
+void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed,
+                    CsvFile* file) {
+  std::vector<std::string> header = {"trajectory", "time"};
+  header.insert(header.end(), data.columns.begin(), data.columns.end());
+  file->Header(header);
+  const size_t width = data.columns.size();
+  std::vector<double> row;
+  for (size_t i = 0; i < replayed.size(); ++i) {
+    const MeasuredTrajectory& t = data.trajectories[i];
+    const ReplayedTrajectory& r = replayed[i];
+    const size_t samples = r.simulated.size() / width;
+    for (size_t k = 0; k < samples; ++k) {
+      row.assign(1, t.time[r.start + k]);
+      row.insert(row.end(), r.simulated.begin() + k * width, r.simulated.begin() + (k + 1) * width);
+      file->Row({t.name}, row);
+    }
+  }
+}
+
+std::string DistributionText(const std::vector<ReplayedTrajectory>& replayed, Metric metric) {
+  std::vector<double> values;
+  for (const ReplayedTrajectory& r : replayed) values.push_back(r.score.Of(metric));
+  const Distribution d = Distribute(values);
+  return fmt::format("{} mean {:.4g} median {:.4g} p90 {:.4g}", MetricName(metric), d.mean,
+                     d.median, d.p90);
+}
+
+std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed) {
+  int diverged = 0;
+  for (const ReplayedTrajectory& r : replayed) {
+    diverged += r.status == ReplayedTrajectory::Status::kDiverged;
+  }
+  if (diverged == 0) return "";
+  return fmt::format("{} of {} diverged (scored with their last finite state)", diverged,
+                     replayed.size());
+}
+
+}  // namespace contactlaws::cli

@@ -1,0 +1,70 @@
+// Copyright contactlaws authors.
+//
+// The options that replay and fit share, parsed and validated, and the
+// files they write (docs/identification.md).
+
+#ifndef CONTACTLAWS_CLI_IDENTIFY_H_
+#define CONTACTLAWS_CLI_IDENTIFY_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/csv_file.h"
+#include "cli/options.h"
+
+namespace contactlaws::cli {
+
+// replay's options; fit takes them all.
+struct ReplayArgs : CommonArgs {
+  std::string data;                    // the measured trajectories
+  std::optional<std::string> output;   // DIR
+  std::string start = "first";         // first or refit
+  std::optional<std::string> refit_height;
+  std::string refit_lead = "3";
+  std::string refit_min_samples = "4";
+  std::string metric = "e_q";
+  std::optional<std::string> weights;  // P,A[,J] of the weighted metric
+  std::optional<std::string> length;   // e_q's L, m
+  std::optional<std::string> jobs;
+  std::optional<std::string> law;
+  std::optional<std::string> restitution;
+  std::vector<std::string> set;        // KEY=VALUE on every tag
+  bool quiet = false;
+};
+
+struct FitArgs : ReplayArgs {
+  std::string params;
+  std::optional<std::string> laws;       // L1,L2,... or all
+  std::optional<std::string> frictions;  // M1,M2,... or all
+  std::optional<std::string> validate;   // trajectories not fitted on
+  std::string budget = "200";
+  std::string seed = "1";
+};
+
+// The replay options of args (the scene's tags read later, by Replay::Run):
+// the law and friction overrides, --set, the timestep (auto unless
+// --timestep is given or the scene has no contactlaw tag), the start rule,
+// the weights, the jobs. metric: the metric chosen.
+ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Metric* metric);
+
+// The measured data of path, bound to scene by Replay's constructor.
+MeasuredData ReadData(const std::string& option, const std::string& path);
+
+// replay.csv's columns and one trajectory's fields.
+std::vector<std::string> ReplayColumns();
+std::vector<std::string> ReplayFields(const MeasuredTrajectory& t, const ReplayedTrajectory& r);
+
+// The simulated samples of every trajectory in the data's own columns.
+void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed,
+                    CsvFile* file);
+
+// "mean 0.255 median 0.043 p90 0.52" of metric over replayed.
+std::string DistributionText(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
+
+// "3 of 300 diverged" or "".
+std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed);
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_IDENTIFY_H_

@@ -1,0 +1,199 @@
+// Copyright contactlaws authors.
+//
+// contactlaws replay and fit, run as a user runs them.
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "cli_test_util.h"
+
+namespace contactlaws::testing {
+namespace {
+
+// A cube thrown onto a board, its tag's words given.
+std::string CubeScene(const std::string& name, const std::string& tag) {
+  return WriteScene(name, fmt::format(R"(<mujoco>
+  <option timestep="5e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="board" type="plane" size="1 1 0.1"/>
+    <body name="cube" pos="0 0 0.2">
+      <freejoint/>
+      <inertial pos="0 0 0" mass="0.37" diaginertia="8.1e-4 8.1e-4 8.1e-4"/>
+      <geom name="cube" type="box" size="0.0524 0.0524 0.0524"/>
+    </body>
+  </worldbody>
+  <keyframe><key qpos="0 0 0.2 0.96 0.2 0.2 0" qvel="1 0 -0.5 3 -2 1"/></keyframe>
+  <custom><text name="contactlaw:cube-board" data="geom1=cube geom2=board {}"/></custom>
+</mujoco>)",
+                                                 tag));
+}
+
+constexpr char kTag[] = "law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3";
+
+// `run`'s trajectory of scene as measured data: a trajectory column added,
+// twice (two trajectories of the same run).
+std::string MeasuredFromRun(const std::string& scene, const std::string& name) {
+  const std::string run = ::testing::TempDir() + "/" + name + "_run.csv";
+  const Result r = RunCli(fmt::format("run {} --duration 0.5 --sample-rate 148 --columns bodies "
+                                      "--output {}",
+                                      scene, run));
+  EXPECT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> lines = Lines(ReadFile(run));
+  const std::string path = ::testing::TempDir() + "/" + name + ".csv";
+  std::ofstream out(path);
+  out << "trajectory," << lines[0] << "\n";
+  for (const char* t : {"a", "b"}) {
+    for (size_t i = 1; i < lines.size(); ++i) out << t << "," << lines[i] << "\n";
+  }
+  return path;
+}
+
+TEST(IdentifyCliTest, ARunReplaysAgainstItselfToZero) {
+  const std::string scene = CubeScene("replay_self", kTag);
+  const std::string data = MeasuredFromRun(scene, "replay_self");
+  const std::string dir = ::testing::TempDir() + "/replay_self_out";
+  const Result r = RunCli(fmt::format("replay {} --data {} --timestep 5e-4 --output {}", scene,
+                                      data, dir));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("2 trajectories of"), std::string::npos) << r.output;
+  const std::vector<std::string> rows = Lines(ReadFile(dir + "/replay.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], "trajectory,samples,start,e_q,position_rms,angle_rms,joint_rms,weighted,status");
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> f = Split(rows[i], ',');
+    EXPECT_EQ(f[1], "75");  // 0.5 s at 148 Hz, t = 0 included
+    // the start state read back from the CSV's shortest exact numbers and
+    // renormalized: rounding, grown through the landing
+    EXPECT_LT(std::stod(f[4]), 1e-12) << rows[i];
+    EXPECT_LT(std::stod(f[5]), 1e-10) << rows[i];
+    EXPECT_EQ(f[8], "complete");
+  }
+  // the simulated trajectories, in the data's columns
+  const std::vector<std::string> simulated = Lines(ReadFile(dir + "/trajectories.csv"));
+  EXPECT_EQ(simulated[0], Lines(ReadFile(data))[0]);
+  EXPECT_EQ(simulated.size(), 1u + 2 * 75u);
+  // another law is far from it: the score can fail
+  const Result hertz = RunCli(fmt::format("replay {} --data {} --timestep 5e-4 --law hertz",
+                                          scene, data));
+  EXPECT_EQ(hertz.status, 0) << hertz.output;
+  EXPECT_EQ(hertz.output.find("e_q mean 0 "), std::string::npos) << hertz.output;
+}
+
+TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
+  const std::string scene = CubeScene("replay_bad", kTag);
+  const std::string data = MeasuredFromRun(scene, "replay_bad");
+  const std::string dir = ::testing::TempDir() + "/replay_bad_out";
+  std::filesystem::remove_all(dir);
+  const std::string other = WriteScene("replay_bad_ball", TagScene(Tag("geom1=ball geom2=floor law=hertz stiffness=1e6")));
+  const std::pair<std::string, std::string> cases[] = {
+      {fmt::format("replay {} --data /nonexistent.csv --output {}", scene, dir),
+       "contactlaws: /nonexistent.csv: cannot open the file"},
+      {fmt::format("replay {} --data {} --output {}", other, data, dir),
+       fmt::format("contactlaws: {}: column 'cube.x': the scene {} has no body or joint 'cube'",
+                   data, other)},
+      {fmt::format("replay {} --data {} --start last --output {}", scene, data, dir),
+       "contactlaws: --start=last must be first or refit"},
+      {fmt::format("replay {} --data {} --metric rms --output {}", scene, data, dir),
+       "contactlaws: --metric=rms must be e_q, position_rms, angle_rms or weighted"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --laws flores,hartz --output {}", scene,
+                   data, dir),
+       "contactlaws: --laws=flores,hartz has 'hartz', which is not a law"},
+      {fmt::format("fit {} --data {} --params stribeck_velocity=0.01:0.1 --output {}", scene, data,
+                   dir),
+       "contactlaws: --params: stribeck_velocity: no tag of " + scene +
+           " reads it (law=flores, friction=coulomb)"},
+      {fmt::format("fit {} --data {} --params restitution=0.5:2 --output {}", scene, data, dir),
+       "contactlaws: --params: restitution=0.5:2: the bound 2 is refused: " + scene +
+           ": contactlaw:cube-board: restitution=2 must be in [0, 1]"},
+      {fmt::format("fit {} --data {} --params mu=0.5:0.5 --output {}", scene, data, dir),
+       "contactlaws: --params: mu=0.5:0.5: the bounds are empty (0.5 >= 0.5)"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Result r = RunCli(arguments);
+    EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+    const std::vector<std::string> lines = Lines(r.output);
+    ASSERT_EQ(lines.size(), 1u) << arguments << "\n" << r.output;
+    EXPECT_EQ(lines[0].substr(0, message.size()), message) << arguments;
+    EXPECT_FALSE(std::filesystem::exists(dir)) << arguments;
+  }
+}
+
+TEST(IdentifyCliTest, AFitWritesItsRankingAndTheTagToPaste) {
+  const std::string truth = CubeScene("fit_truth", kTag);
+  const std::string data = MeasuredFromRun(truth, "fit_data");
+  const std::string scene = CubeScene("fit_start", "law=flores restitution=0.6 stiffness=3e5 friction=coulomb mu=0.6");
+  const std::string dir = ::testing::TempDir() + "/fit_out";
+  const Result r = RunCli(fmt::format("fit {} --data {} --validate {} --timestep 5e-4 --params "
+                                      "restitution=0.1:0.9,mu=0.1:0.9 --budget 30 --laws flores,hertz "
+                                      "--quiet --output {}",
+                                      scene, data, data, dir));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> ranking = Lines(ReadFile(dir + "/ranking.csv"));
+  ASSERT_EQ(ranking.size(), 3u);
+  EXPECT_EQ(ranking[0], "law,friction,restitution,mu,train_mean,train_median,train_p90,"
+                        "validate_mean,validate_median,validate_p90,evaluations,wall_seconds,status");
+  // flores fits its own data best; hertz reads no restitution
+  EXPECT_EQ(ranking[1].substr(0, 15), "flores,coulomb,");
+  EXPECT_EQ(ranking[2].substr(0, 15), "hertz,coulomb,,");
+  const std::vector<std::string> best = Split(ranking[1], ',');
+  // near the data's e and mu: 30 evaluations on one toss check the plumbing
+  // (fit_test holds the recovery to its tolerances)
+  EXPECT_NEAR(std::stod(best[2]), 0.3, 0.1);
+  EXPECT_NEAR(std::stod(best[3]), 0.3, 0.1);
+  EXPECT_LT(std::stod(best[4]), std::stod(Split(ranking[2], ',')[4]));
+  const std::string tag = ReadFile(dir + "/best_tag.txt");
+  EXPECT_EQ(tag.rfind("<text name=\"contactlaw:cube-board\" data=\"geom1=cube geom2=board "
+                      "law=flores restitution=0.",
+                      0),
+            0u)
+      << tag;
+  EXPECT_EQ(Lines(ReadFile(dir + "/errors.csv")).size(), 1u + 2 * 2 * 2);
+}
+
+TEST(IdentifyCliTest, CtrlCEndsAFitWithTheBestSoFarWritten) {
+  const std::string truth = CubeScene("fit_int_truth", kTag);
+  const std::string data = MeasuredFromRun(truth, "fit_int_data");
+  const std::string dir = ::testing::TempDir() + "/fit_interrupted";
+  std::filesystem::remove_all(dir);
+  const std::string log = ::testing::TempDir() + "/fit_interrupted.log";
+  std::filesystem::remove(log);  // a previous run's progress is not this one's
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::FILE* out = std::fopen(log.c_str(), "w");
+    dup2(fileno(out), STDOUT_FILENO);
+    dup2(fileno(out), STDERR_FILENO);
+    execl(CONTACTLAWS_CLI, CONTACTLAWS_CLI, "fit", truth.c_str(), "--data", data.c_str(),
+          "--timestep", "5e-4", "--params", "restitution=0.1:0.9", "--budget", "100000",
+          "--jobs", "1", "--output", dir.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // progress every 10 evaluations: Ctrl-C once the 10th is done
+  bool evaluated = false;
+  for (int i = 0; i < 1200 && !evaluated; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    evaluated = ReadFile(log).find("evaluation 10/") != std::string::npos;
+  }
+  ASSERT_TRUE(evaluated) << ReadFile(log);
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << ReadFile(log);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << ReadFile(log);
+  EXPECT_NE(ReadFile(log).find("interrupted: the best result so far is written"),
+            std::string::npos)
+      << ReadFile(log);
+  const std::vector<std::string> ranking = Lines(ReadFile(dir + "/ranking.csv"));
+  ASSERT_EQ(ranking.size(), 2u);
+  EXPECT_EQ(ranking[1].substr(ranking[1].rfind(',') + 1), "interrupted");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/ranking.csv.tmp"));
+}
+
+}  // namespace
+}  // namespace contactlaws::testing

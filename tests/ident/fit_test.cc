@@ -1,0 +1,155 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/fit.h"
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "ident_scenes.h"
+
+namespace contactlaws {
+namespace {
+
+using testing::CubeScene;
+using testing::Simulated;
+using testing::TossStarts;
+
+std::string Refusal(const std::string& params) {
+  const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3");
+  try {
+    const std::vector<FitParameter> p = ParseFitParameters(params, scene.model());
+    CheckFit(scene, ReplayOptions(), p);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(FitTest, RefusesParametersNamingTheKey) {
+  EXPECT_EQ(Refusal("restitution=0.1:0.9,stiffness=1e4:1e7:log,cube.mass_scale=0.9:1.1,"
+                    "board.offset=-0.004:0.001"),
+            "accepted");
+  EXPECT_EQ(Refusal("restitutoin=0.1:0.9"),
+            "--params: restitutoin=0.1:0.9: 'restitutoin' is not a contactlaw tag key (did you "
+            "mean 'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
+  EXPECT_EQ(Refusal("law=0:1"),
+            "--params: law=0:1: 'law' is not a numeric key (--laws and --frictions choose laws "
+            "and friction models)");
+  EXPECT_EQ(Refusal("restitution=0.9:0.1"),
+            "--params: restitution=0.9:0.1: the bounds are empty (0.9 >= 0.1)");
+  EXPECT_EQ(Refusal("restitution=0.1"),
+            "--params: restitution=0.1: bounds must be LO:HI or LO:HI:log");
+  EXPECT_EQ(Refusal("stiffness=0:1e6:log"),
+            "--params: stiffness=0:1e6:log: a log scale needs LO > 0, not 0");
+  EXPECT_EQ(Refusal("mu=0.1:x"), "--params: mu=0.1:x: 'x' is not a finite number");
+  EXPECT_EQ(Refusal("mu=0.1:0.2,mu=0.2:0.3"), "--params: mu=0.2:0.3: key 'mu' is given twice");
+  EXPECT_EQ(Refusal("ball.mass_scale=0.5:2"),
+            "--params: ball.mass_scale=0.5:2: the scene has no moving body 'ball'");
+  EXPECT_EQ(Refusal("cube.mass_scale=0:2"),
+            "--params: cube.mass_scale=0:2: mass_scale must be > 0");
+  EXPECT_EQ(Refusal("mujoco.dmin=0.5:1.5"), "--params: mujoco.dmin=0.5:1.5: dmin must be in (0, 1)");
+  EXPECT_EQ(Refusal("cube.speed=0:1"),
+            "--params: cube.speed=0:1: 'cube.speed' is not a model parameter: BODY.mass_scale, "
+            "BODY.inertia_scale, GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction");
+  // the tag's own checks, at the bounds
+  EXPECT_EQ(Refusal("restitution=0.5:1.5"),
+            "--params: restitution=0.5:1.5: the bound 1.5 is refused: cube.xml: "
+            "contactlaw:cube-board: restitution=1.5 must be in [0, 1]");
+  // a key the law or friction model does not read
+  EXPECT_EQ(Refusal("transition_velocity=1e-4:1e-2:log"),
+            "--params: transition_velocity: no tag of cube.xml reads it (law=flores, "
+            "friction=coulomb)");
+  EXPECT_EQ(Refusal("linear_stiffness=1e4:1e6"),
+            "--params: linear_stiffness: no tag of cube.xml reads it (law=flores, "
+            "friction=coulomb)");
+}
+
+TEST(FitTest, ParametersMapToTagKeysAndModelEdits) {
+  const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5");
+  const std::vector<FitParameter> p =
+      ParseFitParameters("stiffness=1e4:1e8:log,board.offset=-0.01:0.01", scene.model());
+  EXPECT_NEAR(p[0].At(0.5), 1e6, 1e6 * 1e-14);  // exp(log) rounds
+  EXPECT_DOUBLE_EQ(p[1].At(0.25), -0.005);
+  const ReplayOptions o = WithParameters(ReplayOptions(), p, {2.5e5, -0.002});
+  ASSERT_EQ(o.simulation.overrides.keys.size(), 1u);
+  EXPECT_EQ(o.simulation.overrides.keys[0].first, "stiffness");
+  EXPECT_EQ(std::stod(o.simulation.overrides.keys[0].second), 2.5e5);
+  ASSERT_EQ(o.edits.size(), 1u);
+  UniqueModel m(mj_copyModel(nullptr, scene.model()));
+  ApplyEdits(m.get(), o.edits);
+  EXPECT_DOUBLE_EQ(m->geom_pos[2], -0.002);  // the board, along its normal
+}
+
+// Tosses simulated with a known tag, their positions and orientations
+// blurred as a camera tracker's, fitted back.
+TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
+  const Scene truth = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.35");
+  ReplayOptions options;
+  options.simulation.timestep = 6.756756756756757e-4;  // the published 10 steps per sample
+  MeasuredData data = Simulated(truth, TossStarts(12, 7), options);
+  // 1 mm of position and 0.01 rad of orientation noise: the order of the
+  // tracking's (the tosses rest ~2 mm from the board's plane); no velocity
+  // columns, the refit takes them from the positions
+  std::mt19937_64 random(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  MeasuredData noisy;
+  noisy.source = "noisy";
+  noisy.columns.assign(data.columns.begin(), data.columns.begin() + 7);
+  for (const MeasuredTrajectory& t : data.trajectories) {
+    MeasuredTrajectory n = t;
+    n.values.clear();
+    for (int k = 0; k < t.samples(); ++k) {
+      const double* x = t.values.data() + k * data.columns.size();
+      double q[4] = {x[3], x[4], x[5], x[6]};
+      for (double& c : q) c += 0.005 * noise(random);  // ~0.01 rad of turn
+      mju_normalize4(q);
+      n.values.insert(n.values.end(), {x[0] + 1e-3 * noise(random), x[1] + 1e-3 * noise(random),
+                                       x[2] + 1e-3 * noise(random), q[0], q[1], q[2], q[3]});
+    }
+    noisy.trajectories.push_back(std::move(n));
+  }
+
+  const Scene scene = CubeScene("law=flores restitution=0.7 stiffness=1e6 friction=coulomb mu=0.8");
+  const Replay replay(scene, noisy);
+  FitOptions fit;
+  fit.replay = options;
+  fit.replay.start = StartRule::kRefit;
+  fit.replay.jobs = 2;
+  fit.parameters =
+      ParseFitParameters("restitution=0.05:0.9,stiffness=3e4:3e6:log,mu=0.05:1", scene.model());
+  CheckFit(scene, fit.replay, fit.parameters);
+  fit.budget = 90;
+  fit.seed = 3;
+  const FitResult result = Fit(replay, fit);
+  EXPECT_GT(result.evaluations, 60);  // BOBYQA may stop early, at its tolerance
+  EXPECT_LE(result.evaluations, 90);
+  EXPECT_FALSE(result.interrupted);
+  // The tolerances: what 12 noisy tosses determine. e shapes each bounce
+  // (0.05 of its range); mu the slide after landing (0.05); K only the
+  // depth (d ~ K^-0.4: a factor of 3 in K is 0.2 mm of a corner's 0.5 mm,
+  // under the 1 mm noise) and the duration of contacts that last ~10 ms,
+  // which 148 Hz samples barely see.
+  EXPECT_NEAR(result.values[0], 0.3, 0.05);
+  EXPECT_GT(result.values[1], 3e5 / 3);
+  EXPECT_LT(result.values[1], 3e5 * 3);
+  EXPECT_NEAR(result.values[2], 0.35, 0.05);
+  // and the point found scores no worse than the truth on the noisy data
+  const double at_truth = MeanScore(
+      replay.Run(WithParameters(fit.replay, fit.parameters, {0.3, 3e5, 0.35})), Metric::kEq);
+  EXPECT_LE(result.score, at_truth * 1.02);
+
+  // the same seed, the same result, whatever the threads
+  fit.replay.jobs = 1;
+  fit.budget = 15;
+  const FitResult a = Fit(replay, fit);
+  fit.replay.jobs = 3;
+  const FitResult b = Fit(replay, fit);
+  EXPECT_EQ(a.values, b.values);
+  EXPECT_EQ(a.score, b.score);
+}
+
+}  // namespace
+}  // namespace contactlaws
