@@ -63,8 +63,13 @@
 //      and grows at most by `growth` from one step to the next. A scene with
 //      dynamics of its own (anything but free bodies, gravity, the tags and
 //      drives: joints with springs, damping or limits, actuators, tendons,
-//      equality constraints, untagged contacts) keeps its own opt.timestep
-//      as the flight step's bound: the author chose it for those dynamics.
+//      equality constraints) keeps its own opt.timestep as the flight
+//      step's bound: the author chose it for those dynamics. A pair that
+//      MuJoCo's own contact handles (untagged) asks for that step only while
+//      its bounding spheres are within MuJoCo's margin or could close
+//      gap_fraction of their gap beyond it within that step (rule 2's
+//      closing speed and acceleration); farther, for the time to close that
+//      fraction.
 //      Under Euler or implicit integration the flight step is also bounded
 //      by the accuracy: they integrate a parabola with a first-order error.
 // Re-evaluated before every step, a pair's allowed step shrinks with its gap
@@ -78,6 +83,7 @@
 #ifndef CONTACTLAWS_AUTO_TIMESTEP_H_
 #define CONTACTLAWS_AUTO_TIMESTEP_H_
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -186,6 +192,33 @@ class AutoTimestep {
   // The fine step of pair at impact speed v (m/s).
   double FineStep(int pair, double v) const;
 
+  // A pair MuJoCo's own contact handles (no tag claims it).
+  struct UntaggedPair {
+    std::array<int, 2> geom;  // a plane first
+    std::array<int, 2> body;
+    double margin;            // m: MuJoCo's contact starts at this distance
+    double top_acceleration;  // of its driven bodies, m/s^2
+  };
+  static std::vector<UntaggedPair> UntaggedPairs(const ContactModel& cm);
+  // How two geoms close, from the current state: the gap between their
+  // bounding spheres (or a plane and a sphere), m, and its closing speed (the
+  // centres' relative velocity along the line between them plus what spin
+  // can add) and acceleration (gravity, drives' top_acceleration).
+  struct Closing {
+    double gap = 0;
+    double speed = 0;
+    double accel = 0;
+  };
+  // False when a geom has no bounding sphere (a plane against a plane or a
+  // height field, ...): then no gap is known.
+  bool Closes(const std::array<int, 2>& geom, const std::array<int, 2>& body,
+              double top_acceleration, Closing* c) const;
+  // The step the untagged pairs allow: the scene's own step while any of
+  // them is within MuJoCo's margin or could reach it within gap_fraction of
+  // its gap; otherwise the time to close that fraction (never less than the
+  // scene's step).
+  double UntaggedStep() const;
+
   const ContactData& contacts_;
   AutoTimestepOptions options_;
   double flight_step_;  // s, FlightStep() of the model as it was given
@@ -197,6 +230,8 @@ class AutoTimestep {
   std::vector<double> top_acceleration_;  // of the pair's driven bodies, m/s^2
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
+  std::vector<UntaggedPair> untagged_;
+  double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
   bool settled_rule_ = false;             // rule 6: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;

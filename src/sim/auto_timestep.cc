@@ -10,7 +10,6 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
-#include "sim/arena.h"
 
 namespace contactlaws {
 namespace {
@@ -51,10 +50,11 @@ constexpr double kTouchOvershoot = 1e-3;
 constexpr double kFirstOrderFlightStep = 1e-3;
 
 // True when the scene has dynamics of its own besides free bodies, gravity,
-// the tagged pairs and drives: their time scales are the scene's.
+// the tagged pairs, drives and untagged contacts (those bound the step only
+// while near: UntaggedStep): their time scales are the scene's.
 bool HasOwnDynamics(const ContactModel& cm) {
   const mjModel* m = cm.model();
-  if (m->nu || m->ntendon || m->neq || m->npair || m->opt.density > 0 || m->opt.viscosity > 0 ||
+  if (m->nu || m->ntendon || m->neq || m->opt.density > 0 || m->opt.viscosity > 0 ||
       m->opt.wind[0] || m->opt.wind[1] || m->opt.wind[2] || mjcb_control) {
     return true;
   }
@@ -64,7 +64,18 @@ bool HasOwnDynamics(const ContactModel& cm) {
   for (int v = 0; v < m->nv; ++v) {
     if (m->dof_damping[v] > 0 || m->dof_frictionloss[v] > 0) return true;
   }
-  return HasUntaggedContacts(cm);
+  return false;
+}
+
+// The top acceleration of the driven bodies among body, m/s^2 (A w^2 each).
+double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body) {
+  double accel = 0;
+  for (int b : body) {
+    if (const Drive* drive = cm.FindDrive(b)) {
+      accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
+    }
+  }
+  return accel;
 }
 
 }  // namespace
@@ -102,14 +113,10 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     const double n = Law(pair.params.kind).family == LawFamily::kLinear ? 1.0 : pair.params.exponent;
     duration_at_unit_speed_.push_back(ElasticContactDuration(pair.params, mass, 1.0));
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
-    double accel = 0;
-    for (int body : pair.body) {
-      if (const Drive* drive = cm.FindDrive(body)) {
-        accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
-      }
-    }
-    top_acceleration_.push_back(accel);
+    top_acceleration_.push_back(DriveAcceleration(cm, pair.body));
   }
+  untagged_ = UntaggedPairs(cm);
+  scene_step_ = cm.model()->opt.timestep;
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
   settled_rule_ = cm.model()->opt.integrator == mjINT_RK4;
@@ -201,16 +208,14 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   return std::min({separation, fine, tangential});
 }
 
-double AutoTimestep::ApproachStep(int p, bool* fine) const {
+bool AutoTimestep::Closes(const std::array<int, 2>& g, const std::array<int, 2>& body,
+                          double top_acceleration, Closing* c) const {
   const ContactModel& cm = contacts_.model();
   const mjModel* m = cm.model();
   const mjData* d = contacts_.data();
-  const GeomPair& pair = cm.pairs()[p];
-  const int g[2] = {pair.geom[0], pair.geom[1]};
   const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
   mjtNum normal[3];  // from geom[0] towards geom[1]
-  double gap;
-  double spin = 0;  // what rotation adds to the closing speed
+  double spin = 0;   // what rotation adds to the closing speed
   if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
     const mjtNum* mat = d->geom_xmat + 9 * g[0];
     normal[0] = mat[2];
@@ -218,27 +223,37 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
     normal[2] = mat[8];
     mjtNum offset[3];
     mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-    gap = mju_dot3(offset, normal) - rb[1];
-    spin = mju_norm3(d->cvel + 6 * pair.body[1]) * rb[1];
+    c->gap = mju_dot3(offset, normal) - rb[1];
+    spin = mju_norm3(d->cvel + 6 * body[1]) * rb[1];
   } else if (rb[0] > 0 && rb[1] > 0) {
     mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
     const double distance = mju_normalize3(normal);
-    gap = distance - rb[0] - rb[1];
+    c->gap = distance - rb[0] - rb[1];
     for (int b = 0; b < 2; ++b) {
-      if (!cm.FindDrive(pair.body[b])) spin += mju_norm3(d->cvel + 6 * pair.body[b]) * rb[b];
+      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
     }
   } else {
-    // no bounding sphere (planes, height fields): always near
+    return false;  // no bounding sphere (planes, height fields)
+  }
+  mjtNum v[2][3], relative[3];
+  for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
+  mju_sub3(relative, v[0], v[1]);
+  c->speed = mju_dot3(relative, normal) + spin;
+  c->accel = top_acceleration + GravityClosingAcceleration(cm, body, normal);
+  return true;
+}
+
+double AutoTimestep::ApproachStep(int p, bool* fine) const {
+  const GeomPair& pair = contacts_.model().pairs()[p];
+  Closing c;
+  if (!Closes(pair.geom, pair.body, top_acceleration_[p], &c)) {
+    // always near
     *fine = true;
     return FineStep(p, 0.0);
   }
-  mjtNum v[2][3], relative[3];
-  for (int b = 0; b < 2; ++b) {
-    contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
-  }
-  mju_sub3(relative, v[0], v[1]);
-  const double closing = mju_dot3(relative, normal) + spin;
-  const double accel = top_acceleration_[p] + GravityClosingAcceleration(cm, pair, normal);
+  const double gap = c.gap;
+  const double closing = c.speed;
+  const double accel = c.accel;
   const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
   const double allowed =
       gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
@@ -257,6 +272,46 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
   const double lead = kTouchOvershoot * pair_fine;
   if (touch > 2 * lead) return std::min(touch - lead, pair_fine);
   return touch + lead;
+}
+
+// The pairs MuJoCo's own contact handles: geom pairs its filter lets collide
+// that no tag claims, and the scene's explicit <pair>s; each ordered as
+// GeomPair (geom_type[geom[0]] <= geom_type[geom[1]]: a plane first), with
+// MuJoCo's margin for it (the larger geom margin, or the pair's).
+std::vector<AutoTimestep::UntaggedPair> AutoTimestep::UntaggedPairs(const ContactModel& cm) {
+  const mjModel* m = cm.model();
+  std::vector<UntaggedPair> pairs;
+  auto add = [&](int g0, int g1, double margin) {
+    if (m->geom_type[g0] > m->geom_type[g1]) std::swap(g0, g1);
+    const std::array<int, 2> body = {m->geom_bodyid[g0], m->geom_bodyid[g1]};
+    // both welded to the world: their gap never closes
+    if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return;
+    pairs.push_back({{g0, g1}, body, margin, DriveAcceleration(cm, body)});
+  };
+  for (int g0 = 0; g0 < m->ngeom; ++g0) {
+    for (int g1 = g0 + 1; g1 < m->ngeom; ++g1) {
+      if (!DefaultContactFilter(m, g0, g1) && cm.FindPair(g0, g1) < 0) {
+        add(g0, g1, std::max(m->geom_margin[g0], m->geom_margin[g1]));
+      }
+    }
+  }
+  for (int i = 0; i < m->npair; ++i) add(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]);
+  return pairs;
+}
+
+double AutoTimestep::UntaggedStep() const {
+  double step = kInfinity;
+  for (const UntaggedPair& u : untagged_) {
+    Closing c;
+    // MuJoCo's contact starts at its margin; a pair within reach (or without
+    // bounding spheres) needs the scene's own step
+    if (!Closes(u.geom, u.body, u.top_acceleration, &c) || !(c.gap > u.margin)) {
+      return scene_step_;
+    }
+    const double allowed = TimeToClose(options_.gap_fraction * (c.gap - u.margin), c.speed, c.accel);
+    step = std::min(step, std::max(scene_step_, allowed));
+  }
+  return step;
 }
 
 double AutoTimestep::Next(double until) {
@@ -290,13 +345,15 @@ double AutoTimestep::Next(double until) {
 
   // the other pairs: the time to close a fraction of their gap, from the
   // current state
-  if (in_contact < npair) {
+  if (in_contact < npair || !untagged_.empty()) {
     mj_kinematics(m, d);
     mj_comPos(m, d);
     mj_comVel(m, d);
     for (int p = 0; p < npair; ++p) {
       if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
     }
+    // untagged pairs: the scene's step while MuJoCo's contact can reach them
+    step = std::min(step, UntaggedStep());
   }
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;
