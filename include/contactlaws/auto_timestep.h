@@ -86,6 +86,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "contactlaws/contact_data.h"
@@ -143,10 +144,14 @@ inline constexpr double kSettledTouchFactor = 10;
 // collision (a collision lasts one, its rebound included).
 inline constexpr double kSettledDurations = 3;
 
+class ReachSweep;  // src/sim/reach_sweep.h
+
 class AutoTimestep {
  public:
   // contacts must outlive this object.
   explicit AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options = {});
+  ~AutoTimestep();
+  AutoTimestep(AutoTimestep&&) noexcept;
 
   // The step to take from the data's current state (after mj_step or
   // mj_forward), at most until (s, > 0). Computes the kinematics of the
@@ -192,14 +197,6 @@ class AutoTimestep {
   // The fine step of pair at impact speed v (m/s).
   double FineStep(int pair, double v) const;
 
-  // A pair MuJoCo's own contact handles (no tag claims it).
-  struct UntaggedPair {
-    std::array<int, 2> geom;  // a plane first
-    std::array<int, 2> body;
-    double margin;            // m: MuJoCo's contact starts at this distance
-    double top_acceleration;  // of its driven bodies, m/s^2
-  };
-  static std::vector<UntaggedPair> UntaggedPairs(const ContactModel& cm);
   // How two geoms close, from the current state: the gap between their
   // bounding spheres (or a plane and a sphere), m, and its closing speed (the
   // centres' relative velocity along the line between them plus what spin
@@ -213,11 +210,15 @@ class AutoTimestep {
   // height field, ...): then no gap is known.
   bool Closes(const std::array<int, 2>& geom, const std::array<int, 2>& body,
               double top_acceleration, Closing* c) const;
-  // The step the untagged pairs allow: the scene's own step while any of
-  // them is within MuJoCo's margin or could reach it within gap_fraction of
-  // its gap; otherwise the time to close that fraction (never less than the
-  // scene's step).
-  double UntaggedStep() const;
+  // The step the untagged pair of geoms g0, g1 allows (MuJoCo's contact
+  // starts at margin, m): the scene's own step while it is within margin or
+  // could close gap_fraction of its gap beyond it within that step;
+  // otherwise the time to close that fraction.
+  double UntaggedStep(int g0, int g1, double margin) const;
+  // reach_ for a step of at most bound (s): how far each geom's surface may
+  // move towards another's within it, over gap_fraction, twice over, beyond
+  // its margin; a pair whose reaches do not overlap cannot shorten the step.
+  void SetReach(double bound);
 
   const ContactData& contacts_;
   AutoTimestepOptions options_;
@@ -230,8 +231,10 @@ class AutoTimestep {
   std::vector<double> top_acceleration_;  // of the pair's driven bodies, m/s^2
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
-  std::vector<UntaggedPair> untagged_;
+  bool has_untagged_ = false;             // a pair MuJoCo's own contact handles exists
   double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
+  std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
+  std::vector<double> reach_;             // per geom, m (SetReach)
   bool settled_rule_ = false;             // rule 6: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;

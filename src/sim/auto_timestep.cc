@@ -10,6 +10,8 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
+#include "sim/arena.h"
+#include "sim/reach_sweep.h"
 
 namespace contactlaws {
 namespace {
@@ -89,7 +91,9 @@ double KelvinVoigtStepsPerContact(double accuracy) {
 }
 
 AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
-    : contacts_(contacts), options_(options) {
+    : contacts_(contacts),
+      options_(options),
+      sweep_(std::make_unique<ReachSweep>(contacts.model().model())) {
   if (!(options.accuracy > 0 && options.accuracy <= kMaxAccuracy) || !(options.max_step > 0) ||
       !(options.steps_per_contact >= 0) || !(options.kelvin_voigt_steps_per_contact >= 0) ||
       !(options.gap_fraction > 0) || !(options.gap_fraction < 1) || !(options.growth >= 1)) {
@@ -115,12 +119,16 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
     top_acceleration_.push_back(DriveAcceleration(cm, pair.body));
   }
-  untagged_ = UntaggedPairs(cm);
+  has_untagged_ = HasUntaggedContacts(cm);
   scene_step_ = cm.model()->opt.timestep;
+  reach_.assign(cm.model()->ngeom, kInfinity);
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
   settled_rule_ = cm.model()->opt.integrator == mjINT_RK4;
 }
+
+AutoTimestep::~AutoTimestep() = default;
+AutoTimestep::AutoTimestep(AutoTimestep&&) noexcept = default;
 
 double AutoTimestep::FineStep(int pair, double v) const {
   const LawParams& law = contacts_.model().pairs()[pair].params;
@@ -274,44 +282,47 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
   return touch + lead;
 }
 
-// The pairs MuJoCo's own contact handles: geom pairs its filter lets collide
-// that no tag claims, and the scene's explicit <pair>s; each ordered as
-// GeomPair (geom_type[geom[0]] <= geom_type[geom[1]]: a plane first), with
-// MuJoCo's margin for it (the larger geom margin, or the pair's).
-std::vector<AutoTimestep::UntaggedPair> AutoTimestep::UntaggedPairs(const ContactModel& cm) {
-  const mjModel* m = cm.model();
-  std::vector<UntaggedPair> pairs;
-  auto add = [&](int g0, int g1, double margin) {
-    if (m->geom_type[g0] > m->geom_type[g1]) std::swap(g0, g1);
-    const std::array<int, 2> body = {m->geom_bodyid[g0], m->geom_bodyid[g1]};
-    // both welded to the world: their gap never closes
-    if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return;
-    pairs.push_back({{g0, g1}, body, margin, DriveAcceleration(cm, body)});
-  };
-  for (int g0 = 0; g0 < m->ngeom; ++g0) {
-    for (int g1 = g0 + 1; g1 < m->ngeom; ++g1) {
-      if (!DefaultContactFilter(m, g0, g1) && cm.FindPair(g0, g1) < 0) {
-        add(g0, g1, std::max(m->geom_margin[g0], m->geom_margin[g1]));
-      }
-    }
+double AutoTimestep::UntaggedStep(int g0, int g1, double margin) const {
+  const mjModel* m = contacts_.model().model();
+  if (m->geom_type[g0] > m->geom_type[g1]) std::swap(g0, g1);  // a plane first, as GeomPair
+  const std::array<int, 2> body = {m->geom_bodyid[g0], m->geom_bodyid[g1]};
+  // both welded to the world: their gap never closes
+  if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return kInfinity;
+  Closing c;
+  // MuJoCo's contact starts at its margin; a pair within reach (or without
+  // bounding spheres) needs the scene's own step
+  if (!Closes({g0, g1}, body, DriveAcceleration(contacts_.model(), body), &c) ||
+      !(c.gap > margin)) {
+    return scene_step_;
   }
-  for (int i = 0; i < m->npair; ++i) add(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]);
-  return pairs;
+  const double allowed = TimeToClose(options_.gap_fraction * (c.gap - margin), c.speed, c.accel);
+  return std::max(scene_step_, allowed);
 }
 
-double AutoTimestep::UntaggedStep() const {
-  double step = kInfinity;
-  for (const UntaggedPair& u : untagged_) {
-    Closing c;
-    // MuJoCo's contact starts at its margin; a pair within reach (or without
-    // bounding spheres) needs the scene's own step
-    if (!Closes(u.geom, u.body, u.top_acceleration, &c) || !(c.gap > u.margin)) {
-      return scene_step_;
+void AutoTimestep::SetReach(double bound) {
+  const ContactModel& cm = contacts_.model();
+  const mjModel* m = cm.model();
+  const mjData* d = contacts_.data();
+  const double gravity = mju_norm3(m->opt.gravity);
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!std::isfinite(bound)) {
+      reach_[g] = kInfinity;
+      continue;
     }
-    const double allowed = TimeToClose(options_.gap_fraction * (c.gap - u.margin), c.speed, c.accel);
-    step = std::min(step, std::max(scene_step_, allowed));
+    // what the geom's surface can move towards another's within bound: its
+    // centre's speed, what spin adds, gravity and a drive's acceleration (a
+    // pair closes at most at the sum of its geoms'), over gap_fraction,
+    // twice for rounding, beyond MuJoCo's margin
+    const int body = m->geom_bodyid[g];
+    mjtNum v[3];
+    contacts_.PointVelocity(body, d->geom_xpos + 3 * g, v);
+    double speed = mju_norm3(v);
+    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * m->geom_rbound[g];
+    double accel = DriveAcceleration(cm, {body, body}) / 2;
+    if (!Immovable(cm, body)) accel += gravity;
+    const double travel = speed * bound + 0.5 * accel * bound * bound;
+    reach_[g] = m->geom_margin[g] + 2 * travel / options_.gap_fraction;
   }
-  return step;
 }
 
 double AutoTimestep::Next(double until) {
@@ -345,15 +356,26 @@ double AutoTimestep::Next(double until) {
 
   // the other pairs: the time to close a fraction of their gap, from the
   // current state
-  if (in_contact < npair || !untagged_.empty()) {
+  if (in_contact < npair || has_untagged_) {
     mj_kinematics(m, d);
     mj_comPos(m, d);
     mj_comVel(m, d);
-    for (int p = 0; p < npair; ++p) {
-      if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
+    // only the pairs that could close within the step so far (growth
+    // included) can shorten it: those whose geoms' reaches overlap
+    SetReach(previous_ > 0 ? std::min(step, options_.growth * previous_) : step);
+    sweep_->Overlaps(d, reach_, [&](int g0, int g1) {
+      const int p = cm.FindPair(g0, g1);
+      if (p >= 0) {
+        if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
+      } else if (!DefaultContactFilter(m, g0, g1)) {
+        // untagged: the scene's step while MuJoCo's contact can reach it
+        step = std::min(step, UntaggedStep(g0, g1, std::max(m->geom_margin[g0],
+                                                            m->geom_margin[g1])));
+      }
+    });
+    for (int i = 0; i < m->npair; ++i) {
+      step = std::min(step, UntaggedStep(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]));
     }
-    // untagged pairs: the scene's step while MuJoCo's contact can reach them
-    step = std::min(step, UntaggedStep());
   }
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;

@@ -102,7 +102,7 @@ int Goals(double scale, const std::vector<std::string>& items) {
 }
 
 void Drop(double scale) {
-  fmt::print("issue 22, item 1: 49 balls dropped, {} s, auto at 1e-3, no rows\n", 2 * scale);
+  fmt::print("issue 22, item 1: 49 balls dropped, {:g} s, auto at 1e-3, no rows\n", 2 * scale);
   const Measured untagged = Run(BallDropXml(BallBallPairs::kUntagged), "drop_untagged.xml",
                                 2 * scale, 1e-3, 0, 0);
   const Measured tagged =
@@ -113,7 +113,7 @@ void Drop(double scale) {
 }
 
 void Rows(double scale) {
-  fmt::print("issue 22, item 1b: 49 balls, ball-ball masked, {} s, auto at 1e-5\n", 20 * scale);
+  fmt::print("issue 22, item 1b: 49 balls, ball-ball masked, {:g} s, auto at 1e-5\n", 20 * scale);
   const std::string masked = BallDropXml(BallBallPairs::kMasked);
   const Measured quiet = Run(masked, "drop_masked.xml", 20 * scale, 1e-5, 0, 0);
   const Measured rows = Run(masked, "drop_masked.xml", 20 * scale, 1e-5, 0, 1000);
@@ -123,7 +123,7 @@ void Rows(double scale) {
 }
 
 void Pile(double scale) {
-  fmt::print("issue 22, item 1c: the 666 pile, {} s, no rows\n", 0.1 * scale);
+  fmt::print("issue 22, item 1c: the 666 pile, {:g} s, no rows\n", 0.1 * scale);
   const std::string pile = PileXml();
   const Measured automatic = Run(pile, "pile_216.xml", 0.1 * scale, 1e-3, 0, 0);
   const Measured fixed = Run(pile, "pile_216.xml", 0.1 * scale, 0, 3e-5, 0);
