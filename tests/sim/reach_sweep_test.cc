@@ -65,7 +65,9 @@ TEST(ReachSweepTest, VisitsExactlyThePairsWhoseGrownSpheresOverlap) {
     }
     EXPECT_EQ(visited, expected) << "round " << round;
     // the test means something: some pairs in, most out (but the last round)
-    if (round < 19) EXPECT_LT(expected.size(), static_cast<size_t>(m->ngeom * (m->ngeom - 1) / 4));
+    if (round < 19) {
+      EXPECT_LT(expected.size(), static_cast<size_t>(m->ngeom * (m->ngeom - 1) / 4));
+    }
   }
 }
 
