@@ -74,8 +74,8 @@
 //      by the accuracy: they integrate a parabola with a first-order error.
 // Re-evaluated before every step, a pair's allowed step shrinks with its gap
 // geometrically, so the first touch comes within a fine step whatever the
-// approach speed. The fixed sample grid of a trajectory is kept by cutting
-// the step at the next sample time (Next's `until` argument).
+// approach speed. A step ends at Next's `until` (the run's end; Advance
+// interpolates the trajectory's rows inside the steps).
 //
 // The model's opt.timestep is what mj_step uses: Step() sets it, so the model
 // must belong to this one mjData (Simulation copies its model).

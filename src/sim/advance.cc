@@ -70,7 +70,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   std::optional<AutoTimestep> stepper;
   if (options.auto_timestep) stepper.emplace(sim->contacts(), *options.auto_timestep);
   // times closer than this are the same grid time: half a fixed step, or a
-  // nanosecond with auto steps (which land on the grid)
+  // nanosecond with auto steps (rows inside them are interpolated)
   const double tolerance = stepper ? 1e-9 : 0.5 * sim->model()->opt.timestep;
   const bool sampling = options.sample_rate > 0 && on_row;
   const double period = sampling ? 1.0 / options.sample_rate : 0.0;
