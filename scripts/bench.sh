@@ -16,6 +16,9 @@
 #   jobs    scripts/bench_jobs.py: --jobs 2 against --jobs 1 of the
 #           restitution and compare commands, wall time as a ratio, and their
 #           outputs compared byte for byte (skipped with --markdown/--update-doc)
+#   auto    tests/bench/auto_cost: issue 22's costs of --timestep auto (untagged
+#           pairs far apart, trajectory rows, a dense pile) as ratios of CPU
+#           time (skipped with --markdown/--update-doc)
 # Arguments after -- go to contactlaws_bench, e.g. -- --benchmark_repetitions=3
 # (the report then uses the medians) or -- --benchmark_filter=BallBox.
 # The benchmarks take about a minute on 2 cores, the build aside.
@@ -47,7 +50,7 @@ build() {
     build_dir="$repo/build"
   else
     cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >&2
-    cmake --build "$build_dir" -j"$(nproc)" --target contactlaws_bench >&2
+    cmake --build "$build_dir" -j"$(nproc)" --target contactlaws_bench auto_cost >&2
   fi
   if [[ ! -x "$build_dir/tests/bench/contactlaws_bench" ]]; then
     echo "bench.sh: no $build_dir/tests/bench/contactlaws_bench (is libbenchmark-dev installed?)" >&2
@@ -72,11 +75,15 @@ jobs() {
   python3 scripts/bench_jobs.py "$build_dir/contactlaws"
 }
 
+auto_costs() {
+  "$build_dir/tests/bench/auto_cost"
+}
+
 main() {
   build
   run
   report
-  if [[ ${#report_args[@]} -eq 0 ]]; then jobs; fi
+  if [[ ${#report_args[@]} -eq 0 ]]; then jobs; auto_costs; fi
 }
 
 main

@@ -25,8 +25,13 @@ struct AdvanceOptions {
   // Stop as soon as the first contact episode of the scene's first tag ends.
   bool until_first_episode = false;
   // Step with AutoTimestep instead of the model's fixed timestep; rows stay
-  // on the sample grid (steps are cut at sample times).
+  // on the sample grid: a row inside a step is interpolated between the
+  // step's exact ends (src/sim/dense_rows.h), a row at a step's end is its.
   std::optional<AutoTimestepOptions> auto_timestep;
+  // With auto_timestep: end a step at every sample time instead, so that
+  // on_row is called with the simulation itself at the row's time (a
+  // renderer draws the data, not the row).
+  bool steps_end_at_rows = false;
 };
 
 // How a call of Advance ended.

@@ -63,14 +63,19 @@
 //      and grows at most by `growth` from one step to the next. A scene with
 //      dynamics of its own (anything but free bodies, gravity, the tags and
 //      drives: joints with springs, damping or limits, actuators, tendons,
-//      equality constraints, untagged contacts) keeps its own opt.timestep
-//      as the flight step's bound: the author chose it for those dynamics.
+//      equality constraints) keeps its own opt.timestep as the flight
+//      step's bound: the author chose it for those dynamics. A pair that
+//      MuJoCo's own contact handles (untagged) asks for that step only while
+//      its bounding spheres are within MuJoCo's margin or could close
+//      gap_fraction of their gap beyond it within that step (rule 2's
+//      closing speed and acceleration); farther, for the time to close that
+//      fraction.
 //      Under Euler or implicit integration the flight step is also bounded
 //      by the accuracy: they integrate a parabola with a first-order error.
 // Re-evaluated before every step, a pair's allowed step shrinks with its gap
 // geometrically, so the first touch comes within a fine step whatever the
-// approach speed. The fixed sample grid of a trajectory is kept by cutting
-// the step at the next sample time (Next's `until` argument).
+// approach speed. A step ends at Next's `until` (the run's end; Advance
+// interpolates the trajectory's rows inside the steps).
 //
 // The model's opt.timestep is what mj_step uses: Step() sets it, so the model
 // must belong to this one mjData (Simulation copies its model).
@@ -78,8 +83,10 @@
 #ifndef CONTACTLAWS_AUTO_TIMESTEP_H_
 #define CONTACTLAWS_AUTO_TIMESTEP_H_
 
+#include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "contactlaws/contact_data.h"
@@ -137,10 +144,14 @@ inline constexpr double kSettledTouchFactor = 10;
 // collision (a collision lasts one, its rebound included).
 inline constexpr double kSettledDurations = 3;
 
+class ReachSweep;  // src/sim/reach_sweep.h
+
 class AutoTimestep {
  public:
   // contacts must outlive this object.
   explicit AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options = {});
+  ~AutoTimestep();
+  AutoTimestep(AutoTimestep&&) noexcept;
 
   // The step to take from the data's current state (after mj_step or
   // mj_forward), at most until (s, > 0). Computes the kinematics of the
@@ -186,6 +197,29 @@ class AutoTimestep {
   // The fine step of pair at impact speed v (m/s).
   double FineStep(int pair, double v) const;
 
+  // How two geoms close, from the current state: the gap between their
+  // bounding spheres (or a plane and a sphere), m, and its closing speed (the
+  // centres' relative velocity along the line between them plus what spin
+  // can add) and acceleration (gravity, drives' top_acceleration).
+  struct Closing {
+    double gap = 0;
+    double speed = 0;
+    double accel = 0;
+  };
+  // False when a geom has no bounding sphere (a plane against a plane or a
+  // height field, ...): then no gap is known.
+  bool Closes(const std::array<int, 2>& geom, const std::array<int, 2>& body,
+              double top_acceleration, Closing* c) const;
+  // The step the untagged pair of geoms g0, g1 allows (MuJoCo's contact
+  // starts at margin, m): the scene's own step while it is within margin or
+  // could close gap_fraction of its gap beyond it within that step;
+  // otherwise the time to close that fraction.
+  double UntaggedStep(int g0, int g1, double margin) const;
+  // reach_ for a step of at most bound (s): how far each geom's surface may
+  // move towards another's within it, over gap_fraction, twice over, beyond
+  // its margin; a pair whose reaches do not overlap cannot shorten the step.
+  void SetReach(double bound);
+
   const ContactData& contacts_;
   AutoTimestepOptions options_;
   double flight_step_;  // s, FlightStep() of the model as it was given
@@ -197,6 +231,10 @@ class AutoTimestep {
   std::vector<double> top_acceleration_;  // of the pair's driven bodies, m/s^2
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
+  bool has_untagged_ = false;             // a pair MuJoCo's own contact handles exists
+  double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
+  std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
+  std::vector<double> reach_;             // per geom, m (SetReach)
   bool settled_rule_ = false;             // rule 6: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;

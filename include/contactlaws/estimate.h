@@ -7,6 +7,7 @@
 #ifndef CONTACTLAWS_ESTIMATE_H_
 #define CONTACTLAWS_ESTIMATE_H_
 
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -69,6 +70,9 @@ bool Immovable(const ContactModel& model, int body);
 // towards geom[1]), m/s^2: the difference of the two bodies' accelerations
 // (a body that cannot move does not fall).
 double GravityClosingAcceleration(const ContactModel& model, const GeomPair& pair,
+                                  const mjtNum normal[3]);
+// The same for any two bodies (body[0] moving away from normal's origin).
+double GravityClosingAcceleration(const ContactModel& model, const std::array<int, 2>& body,
                                   const mjtNum normal[3]);
 
 // The closing speed at touch, m/s, of a gap (m, < 0 counts as 0) closing at

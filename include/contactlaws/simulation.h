@@ -118,6 +118,16 @@ class Simulation {
   // The ledger at the current state (after mj_forward).
   EnergyLedger Energy() const;
 
+  // The tags' latest readings, by tag (ContactData::Reading).
+  std::vector<TagReading> Readings() const;
+
+  // The row of Columns() (what Sample writes) at a state d of this model at
+  // d->time, its kinematics and mass matrix computed (mj_kinematics,
+  // mj_comPos, mj_comVel, mj_crb), with the tags' readings and the laws'
+  // elastic and dissipated energy (J) given: a state inside a step.
+  void Row(mjData* d, const std::vector<TagReading>& readings, double elastic,
+           double dissipated, std::vector<double>* row) const;
+
   // True when nothing feeds energy in: no contactdrive and no actuator. Only
   // then must the ledger's total not grow.
   bool Undriven() const;
@@ -128,6 +138,8 @@ class Simulation {
  private:
   // Reset(); fresh: the data is mj_makeData's, already at qpos0.
   void Reset(bool fresh);
+  // The ledger's kinetic and potential energy at d (elastic, dissipated 0).
+  EnergyLedger MechanicalEnergy(mjData* d) const;
   // The bodies and joints whose columns the trajectory has.
   void RecordBodiesAndJoints();
 

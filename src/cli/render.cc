@@ -105,6 +105,7 @@ int RenderCommand(const RenderArgs& args) {
   advance.duration = plan.common.duration;
   advance.sample_rate = plan.fps * plan.slowmo;
   advance.auto_timestep = plan.common.auto_timestep;
+  advance.steps_end_at_rows = true;  // each frame draws the data at its time
   const auto start = std::chrono::steady_clock::now();
   // the tracking camera's first pass over the run, on a simulation of its own
   render::TrackedRun tracked;

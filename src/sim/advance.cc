@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "sim/dense_rows.h"
+
 namespace contactlaws {
 namespace {
 
@@ -68,19 +70,32 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   std::optional<AutoTimestep> stepper;
   if (options.auto_timestep) stepper.emplace(sim->contacts(), *options.auto_timestep);
   // times closer than this are the same grid time: half a fixed step, or a
-  // nanosecond with auto steps (which land on the grid)
+  // nanosecond with auto steps (rows inside them are interpolated)
   const double tolerance = stepper ? 1e-9 : 0.5 * sim->model()->opt.timestep;
   const bool sampling = options.sample_rate > 0 && on_row;
   const double period = sampling ? 1.0 / options.sample_rate : 0.0;
   std::vector<double> row;
   EnergyWatch energy(*sim);
   AdvanceResult result;
+  // auto steps do not end at sample times: the rows inside them are
+  // interpolated (dense_rows.h)
+  std::optional<DenseRows> dense;
+  if (stepper && sampling && !options.steps_end_at_rows) dense.emplace(sim);
 
   // sample at the first step that reaches each grid time k * period (within
   // the tolerance, so that rounding of the time does not skip or repeat a row)
   long next = 0;
   auto sample_if_due = [&] {
     if (!sampling || sim->time() < next * period - tolerance) return;
+    if (dense) {
+      dense->End();
+      energy.Observe(*sim);
+      for (; next * period - tolerance <= sim->time(); ++next) {
+        dense->Row(next * period, tolerance, &row);
+        on_row(row);
+      }
+      return;
+    }
     sim->Sample(&row);
     energy.Observe(*sim);
     on_row(row);
@@ -105,8 +120,10 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     }
     if (stepper) {
       double until = options.duration - sim->time();
-      if (sampling) until = std::min(until, next * period - sim->time());
-      sim->Step(stepper->Next(until));
+      if (sampling && !dense) until = std::min(until, next * period - sim->time());
+      const double step = stepper->Next(until);
+      if (dense && sim->time() + step >= next * period - 2 * tolerance) dense->Start();
+      sim->Step(step);
     } else {
       sim->Step();
     }

@@ -11,6 +11,7 @@
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
 #include "sim/arena.h"
+#include "sim/reach_sweep.h"
 
 namespace contactlaws {
 namespace {
@@ -51,10 +52,11 @@ constexpr double kTouchOvershoot = 1e-3;
 constexpr double kFirstOrderFlightStep = 1e-3;
 
 // True when the scene has dynamics of its own besides free bodies, gravity,
-// the tagged pairs and drives: their time scales are the scene's.
+// the tagged pairs, drives and untagged contacts (those bound the step only
+// while near: UntaggedStep): their time scales are the scene's.
 bool HasOwnDynamics(const ContactModel& cm) {
   const mjModel* m = cm.model();
-  if (m->nu || m->ntendon || m->neq || m->npair || m->opt.density > 0 || m->opt.viscosity > 0 ||
+  if (m->nu || m->ntendon || m->neq || m->opt.density > 0 || m->opt.viscosity > 0 ||
       m->opt.wind[0] || m->opt.wind[1] || m->opt.wind[2] || mjcb_control) {
     return true;
   }
@@ -64,7 +66,18 @@ bool HasOwnDynamics(const ContactModel& cm) {
   for (int v = 0; v < m->nv; ++v) {
     if (m->dof_damping[v] > 0 || m->dof_frictionloss[v] > 0) return true;
   }
-  return HasUntaggedContacts(cm);
+  return false;
+}
+
+// The top acceleration of the driven bodies among body, m/s^2 (A w^2 each).
+double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body) {
+  double accel = 0;
+  for (int b : body) {
+    if (const Drive* drive = cm.FindDrive(b)) {
+      accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
+    }
+  }
+  return accel;
 }
 
 }  // namespace
@@ -78,7 +91,9 @@ double KelvinVoigtStepsPerContact(double accuracy) {
 }
 
 AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
-    : contacts_(contacts), options_(options) {
+    : contacts_(contacts),
+      options_(options),
+      sweep_(std::make_unique<ReachSweep>(contacts.model().model())) {
   if (!(options.accuracy > 0 && options.accuracy <= kMaxAccuracy) || !(options.max_step > 0) ||
       !(options.steps_per_contact >= 0) || !(options.kelvin_voigt_steps_per_contact >= 0) ||
       !(options.gap_fraction > 0) || !(options.gap_fraction < 1) || !(options.growth >= 1)) {
@@ -102,18 +117,18 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     const double n = Law(pair.params.kind).family == LawFamily::kLinear ? 1.0 : pair.params.exponent;
     duration_at_unit_speed_.push_back(ElasticContactDuration(pair.params, mass, 1.0));
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
-    double accel = 0;
-    for (int body : pair.body) {
-      if (const Drive* drive = cm.FindDrive(body)) {
-        accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
-      }
-    }
-    top_acceleration_.push_back(accel);
+    top_acceleration_.push_back(DriveAcceleration(cm, pair.body));
   }
+  has_untagged_ = HasUntaggedContacts(cm);
+  scene_step_ = cm.model()->opt.timestep;
+  reach_.assign(cm.model()->ngeom, kInfinity);
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
   settled_rule_ = cm.model()->opt.integrator == mjINT_RK4;
 }
+
+AutoTimestep::~AutoTimestep() = default;
+AutoTimestep::AutoTimestep(AutoTimestep&&) noexcept = default;
 
 double AutoTimestep::FineStep(int pair, double v) const {
   const LawParams& law = contacts_.model().pairs()[pair].params;
@@ -203,16 +218,14 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   return std::min({separation, fine, tangential});
 }
 
-double AutoTimestep::ApproachStep(int p, bool* fine) const {
+bool AutoTimestep::Closes(const std::array<int, 2>& g, const std::array<int, 2>& body,
+                          double top_acceleration, Closing* c) const {
   const ContactModel& cm = contacts_.model();
   const mjModel* m = cm.model();
   const mjData* d = contacts_.data();
-  const GeomPair& pair = cm.pairs()[p];
-  const int g[2] = {pair.geom[0], pair.geom[1]};
   const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
   mjtNum normal[3];  // from geom[0] towards geom[1]
-  double gap;
-  double spin = 0;  // what rotation adds to the closing speed
+  double spin = 0;   // what rotation adds to the closing speed
   if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
     const mjtNum* mat = d->geom_xmat + 9 * g[0];
     normal[0] = mat[2];
@@ -220,27 +233,37 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
     normal[2] = mat[8];
     mjtNum offset[3];
     mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-    gap = mju_dot3(offset, normal) - rb[1];
-    spin = mju_norm3(d->cvel + 6 * pair.body[1]) * rb[1];
+    c->gap = mju_dot3(offset, normal) - rb[1];
+    spin = mju_norm3(d->cvel + 6 * body[1]) * rb[1];
   } else if (rb[0] > 0 && rb[1] > 0) {
     mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
     const double distance = mju_normalize3(normal);
-    gap = distance - rb[0] - rb[1];
+    c->gap = distance - rb[0] - rb[1];
     for (int b = 0; b < 2; ++b) {
-      if (!cm.FindDrive(pair.body[b])) spin += mju_norm3(d->cvel + 6 * pair.body[b]) * rb[b];
+      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
     }
   } else {
-    // no bounding sphere (planes, height fields): always near
+    return false;  // no bounding sphere (planes, height fields)
+  }
+  mjtNum v[2][3], relative[3];
+  for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
+  mju_sub3(relative, v[0], v[1]);
+  c->speed = mju_dot3(relative, normal) + spin;
+  c->accel = top_acceleration + GravityClosingAcceleration(cm, body, normal);
+  return true;
+}
+
+double AutoTimestep::ApproachStep(int p, bool* fine) const {
+  const GeomPair& pair = contacts_.model().pairs()[p];
+  Closing c;
+  if (!Closes(pair.geom, pair.body, top_acceleration_[p], &c)) {
+    // always near
     *fine = true;
     return FineStep(p, 0.0);
   }
-  mjtNum v[2][3], relative[3];
-  for (int b = 0; b < 2; ++b) {
-    contacts_.PointVelocity(pair.body[b], d->geom_xpos + 3 * g[b], v[b]);
-  }
-  mju_sub3(relative, v[0], v[1]);
-  const double closing = mju_dot3(relative, normal) + spin;
-  const double accel = top_acceleration_[p] + GravityClosingAcceleration(cm, pair, normal);
+  const double gap = c.gap;
+  const double closing = c.speed;
+  const double accel = c.accel;
   const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
   const double allowed =
       gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
@@ -259,6 +282,49 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
   const double lead = kTouchOvershoot * pair_fine;
   if (touch > 2 * lead) return std::min(touch - lead, pair_fine);
   return touch + lead;
+}
+
+double AutoTimestep::UntaggedStep(int g0, int g1, double margin) const {
+  const mjModel* m = contacts_.model().model();
+  if (m->geom_type[g0] > m->geom_type[g1]) std::swap(g0, g1);  // a plane first, as GeomPair
+  const std::array<int, 2> body = {m->geom_bodyid[g0], m->geom_bodyid[g1]};
+  // both welded to the world: their gap never closes
+  if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return kInfinity;
+  Closing c;
+  // MuJoCo's contact starts at its margin; a pair within reach (or without
+  // bounding spheres) needs the scene's own step
+  if (!Closes({g0, g1}, body, DriveAcceleration(contacts_.model(), body), &c) ||
+      !(c.gap > margin)) {
+    return scene_step_;
+  }
+  const double allowed = TimeToClose(options_.gap_fraction * (c.gap - margin), c.speed, c.accel);
+  return std::max(scene_step_, allowed);
+}
+
+void AutoTimestep::SetReach(double bound) {
+  const ContactModel& cm = contacts_.model();
+  const mjModel* m = cm.model();
+  const mjData* d = contacts_.data();
+  const double gravity = mju_norm3(m->opt.gravity);
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!std::isfinite(bound)) {
+      reach_[g] = kInfinity;
+      continue;
+    }
+    // what the geom's surface can move towards another's within bound: its
+    // centre's speed, what spin adds, gravity and a drive's acceleration (a
+    // pair closes at most at the sum of its geoms'), over gap_fraction,
+    // twice for rounding, beyond MuJoCo's margin
+    const int body = m->geom_bodyid[g];
+    mjtNum v[3];
+    contacts_.PointVelocity(body, d->geom_xpos + 3 * g, v);
+    double speed = mju_norm3(v);
+    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * m->geom_rbound[g];
+    double accel = DriveAcceleration(cm, {body, body}) / 2;
+    if (!Immovable(cm, body)) accel += gravity;
+    const double travel = speed * bound + 0.5 * accel * bound * bound;
+    reach_[g] = m->geom_margin[g] + 2 * travel / options_.gap_fraction;
+  }
 }
 
 double AutoTimestep::Next(double until) {
@@ -292,12 +358,25 @@ double AutoTimestep::Next(double until) {
 
   // the other pairs: the time to close a fraction of their gap, from the
   // current state
-  if (in_contact < npair) {
+  if (in_contact < npair || has_untagged_) {
     mj_kinematics(m, d);
     mj_comPos(m, d);
     mj_comVel(m, d);
-    for (int p = 0; p < npair; ++p) {
-      if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
+    // only the pairs that could close within the step so far (growth
+    // included) can shorten it: those whose geoms' reaches overlap
+    SetReach(previous_ > 0 ? std::min(step, options_.growth * previous_) : step);
+    sweep_->Overlaps(d, reach_, [&](int g0, int g1) {
+      const int p = cm.FindPair(g0, g1);
+      if (p >= 0) {
+        if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
+      } else if (!DefaultContactFilter(m, g0, g1)) {
+        // untagged: the scene's step while MuJoCo's contact can reach it
+        step = std::min(step, UntaggedStep(g0, g1, std::max(m->geom_margin[g0],
+                                                            m->geom_margin[g1])));
+      }
+    });
+    for (int i = 0; i < m->npair; ++i) {
+      step = std::min(step, UntaggedStep(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]));
     }
   }
 

@@ -27,10 +27,15 @@ bool Immovable(const ContactModel& cm, int body) {
 
 double GravityClosingAcceleration(const ContactModel& cm, const GeomPair& pair,
                                   const mjtNum normal[3]) {
+  return GravityClosingAcceleration(cm, pair.body, normal);
+}
+
+double GravityClosingAcceleration(const ContactModel& cm, const std::array<int, 2>& body,
+                                  const mjtNum normal[3]) {
   const mjtNum along = mju_dot3(cm.model()->opt.gravity, normal);
   double accel = 0;
-  if (!Immovable(cm, pair.body[0])) accel += along;
-  if (!Immovable(cm, pair.body[1])) accel -= along;
+  if (!Immovable(cm, body[0])) accel += along;
+  if (!Immovable(cm, body[1])) accel -= along;
   return accel;
 }
 

@@ -92,8 +92,14 @@ std::vector<std::string> Simulation::Columns() const {
 }
 
 EnergyLedger Simulation::Energy() const {
+  EnergyLedger e = MechanicalEnergy(data_.get());
+  e.elastic = contacts_->ElasticEnergy();
+  e.dissipated = contacts_->DissipatedEnergy();
+  return e;
+}
+
+EnergyLedger Simulation::MechanicalEnergy(mjData* d) const {
   const mjModel* m = model_.get();
-  mjData* d = data_.get();
   EnergyLedger e;
 
   // kinetic: 1/2 qvel^T M qvel
@@ -121,23 +127,32 @@ EnergyLedger Simulation::Energy() const {
       e.potential += 0.5 * m->jnt_stiffness[j] * stretch * stretch;
     }
   }
-
-  e.elastic = contacts_->ElasticEnergy();
-  e.dissipated = contacts_->DissipatedEnergy();
   return e;
 }
 
+std::vector<TagReading> Simulation::Readings() const {
+  std::vector<TagReading> readings;
+  for (int t = 0; t < static_cast<int>(contact_model_->tags().size()); ++t) {
+    readings.push_back(contacts_->Reading(t));
+  }
+  return readings;
+}
+
 void Simulation::Sample(std::vector<double>* row) {
+  mj_forward(model_.get(), data_.get());
+  Row(data_.get(), Readings(), contacts_->ElasticEnergy(), contacts_->DissipatedEnergy(), row);
+}
+
+void Simulation::Row(mjData* d, const std::vector<TagReading>& readings, double elastic,
+                     double dissipated, std::vector<double>* row) const {
   const mjModel* m = model_.get();
-  mjData* d = data_.get();
-  mj_forward(m, d);
   row->clear();
   // d->time accumulates timesteps: show it to the nanosecond
   row->push_back(std::round(d->time * 1e9) / 1e9);
   for (size_t i = 0; columns_.bodies && i < recorded_bodies_.size(); ++i) {
     const int b = recorded_bodies_[i];
     mjtNum vel[3];
-    contacts_->PointVelocity(b, d->xpos + 3 * b, vel);
+    PointVelocity(*contact_model_, d, b, d->xpos + 3 * b, vel);
     row->insert(row->end(), d->xpos + 3 * b, d->xpos + 3 * b + 3);
     row->insert(row->end(), vel, vel + 3);
     // cvel: (angular, linear) in the world frame
@@ -151,16 +166,17 @@ void Simulation::Sample(std::vector<double>* row) {
     row->push_back(d->qpos[m->jnt_qposadr[j]]);
     row->push_back(d->qvel[m->jnt_dofadr[j]]);
   }
-  for (int t = 0; columns_.pairs && t < static_cast<int>(contact_model_->tags().size()); ++t) {
-    const TagReading r = contacts_->Reading(t);
+  for (size_t t = 0; columns_.pairs && t < readings.size(); ++t) {
+    const TagReading& r = readings[t];
     row->insert(row->end(), {r.depth, r.depth_rate, r.force});
   }
-  for (int t = 0; columns_.friction && t < static_cast<int>(contact_model_->tags().size()); ++t) {
-    const TagReading r = contacts_->Reading(t);
-    row->insert(row->end(), r.friction, r.friction + 3);
+  for (size_t t = 0; columns_.friction && t < readings.size(); ++t) {
+    row->insert(row->end(), readings[t].friction, readings[t].friction + 3);
   }
   if (columns_.energy) {
-    const EnergyLedger e = Energy();
+    EnergyLedger e = MechanicalEnergy(d);
+    e.elastic = elastic;
+    e.dissipated = dissipated;
     row->insert(row->end(), {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
   }
 }

@@ -277,5 +277,41 @@ TEST(AutoTimestepTest, ASettledContactIsSteppedForStabilityNotForACollision) {
   EXPECT_LT(steps, 1500);
 }
 
+// A pair left to MuJoCo's own contact needs the scene's step only while that
+// contact can reach it within the step. Ball a falls on its tagged floor;
+// ball b (untagged with a and with the floor, scene step 1e-5 s) sits 2 m
+// away, then 1 mm and 10 um from a closing at 1 m/s, then on the floor.
+TEST(AutoTimestepTest, AnUntaggedPairHoldsTheStepDownOnlyWhileNear) {
+  constexpr double kSceneStep = 1e-5;  // s, the scene's opt.timestep
+  auto xml = [](double bx, double bz, double bvx) {
+    return fmt::format(R"(<mujoco>
+  <option timestep="1e-5" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body pos="0 0 1"><freejoint/><geom name="a" type="sphere" size="0.1" mass="1"/></body>
+    <body pos="{} 0 {}"><freejoint/><geom name="b" type="sphere" size="0.1" mass="1"/></body>
+  </worldbody>
+  <keyframe><key qvel="0 0 0 0 0 0 {} 0 0 0 0 0"/></keyframe>
+  <custom>
+    <text name="contactlaw:a" data="geom1=a geom2=floor law=hertz stiffness=1.4e8"/>
+  </custom>
+</mujoco>)", bx, bz, bvx);
+  };
+  auto first_step = [&](double bx, double bz, double bvx) {
+    Simulation sim(LoadModelString(xml(bx, bz, bvx), "untagged.xml"), "untagged.xml");
+    AutoTimestep stepper(sim.contacts());
+    return stepper.Next(1.0);
+  };
+  // far: the tagged drop's first step, the time to close half the gaps
+  // from rest: sqrt(0.9 m / g) for a (b's 0.9 m to the floor likewise)
+  EXPECT_NEAR(first_step(2.0, 1.0, 0.0), std::sqrt(0.9 / 9.81), 1e-9);
+  // closing on a at 1 m/s from 1 mm: the time to close half of it
+  EXPECT_NEAR(first_step(-0.201, 1.0, 1.0), 5e-4, 1e-12);
+  // from 10 um, which it can close within the scene's step: that step
+  EXPECT_EQ(first_step(-0.20001, 1.0, 1.0), kSceneStep);
+  // b resting on the floor (within MuJoCo's contact): the scene's step
+  EXPECT_EQ(first_step(2.0, 0.1, 0.0), kSceneStep);
+}
+
 }  // namespace
 }  // namespace contactlaws
