@@ -11,7 +11,6 @@ start state as its keyframe) and runs them `--jobs` at a time, and is not charge
 The medians of --repeat alternating runs; the machine's load is printed beside them.
 """
 import argparse
-import math
 import os
 import statistics
 import subprocess
@@ -20,6 +19,8 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, "scripts"))
+from cube_tosses_to_csv import rotate  # noqa: E402
 STEP = "6.756756756756757e-4"
 
 
@@ -27,16 +28,6 @@ def rotate_back(q, v):
     """R(q)^T v for the unit quaternion q = (w, x, y, z)."""
     w, x, y, z = q
     return rotate((w, -x, -y, -z), v)
-
-
-def rotate(q, v):
-    w, x, y, z = q
-    cx = y * v[2] - z * v[1]
-    cy = z * v[0] - x * v[2]
-    cz = x * v[1] - y * v[0]
-    return (v[0] + 2 * (w * cx + y * cz - z * cy),
-            v[1] + 2 * (w * cy + z * cx - x * cz),
-            v[2] + 2 * (w * cz + x * cy - y * cx))
 
 
 def timed(command):
