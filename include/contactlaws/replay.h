@@ -17,6 +17,7 @@
 #define CONTACTLAWS_REPLAY_H_
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,10 @@
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {
+
+namespace internal {
+class Binding;  // ident/binding.h: the data's columns bound to the scene
+}  // namespace internal
 
 // Where a trajectory's simulation starts.
 enum class StartRule {
@@ -123,14 +128,11 @@ class Replay {
   const MeasuredData& data() const { return data_; }
 
  private:
-  struct Body;
-  struct Joint;
   class Rollout;
 
   const Scene& scene_;
   const MeasuredData& data_;
-  std::vector<Body> bodies_;
-  std::vector<Joint> joints_;
+  std::unique_ptr<const internal::Binding> binding_;
 };
 
 // Mean, median and 90th percentile (linear interpolation between order

@@ -5,6 +5,8 @@
 #ifndef CONTACTLAWS_TESTS_CLI_CLI_TEST_UTIL_H_
 #define CONTACTLAWS_TESTS_CLI_CLI_TEST_UTIL_H_
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -27,6 +29,22 @@ struct Result {
 inline Result RunCli(const std::string& arguments) {
   const ShellResult r = RunShell(std::string(CONTACTLAWS_CLI) + " " + arguments + " 2>&1");
   return {r.status, r.out};
+}
+
+// Starts the program with arguments in a child process, its stdout and
+// stderr written to log (a previous log removed); its pid (-1 on failure).
+inline pid_t SpawnCli(const std::vector<std::string>& arguments, const std::string& log) {
+  std::remove(log.c_str());
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  std::FILE* out = std::fopen(log.c_str(), "w");
+  dup2(fileno(out), STDOUT_FILENO);
+  dup2(fileno(out), STDERR_FILENO);
+  std::vector<char*> argv = {const_cast<char*>(CONTACTLAWS_CLI)};
+  for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(CONTACTLAWS_CLI, argv.data());
+  _exit(127);
 }
 
 inline const std::string kBall = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";

@@ -162,18 +162,11 @@ TEST(IdentifyCliTest, CtrlCEndsAFitWithTheBestSoFarWritten) {
   const std::string dir = ::testing::TempDir() + "/fit_interrupted";
   std::filesystem::remove_all(dir);
   const std::string log = ::testing::TempDir() + "/fit_interrupted.log";
-  std::filesystem::remove(log);  // a previous run's progress is not this one's
-  const pid_t pid = fork();
+  const pid_t pid = SpawnCli({"fit", truth, "--data", data, "--timestep", "5e-4", "--params",
+                              "restitution=0.1:0.9", "--budget", "100000", "--jobs", "1",
+                              "--output", dir},
+                             log);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    std::FILE* out = std::fopen(log.c_str(), "w");
-    dup2(fileno(out), STDOUT_FILENO);
-    dup2(fileno(out), STDERR_FILENO);
-    execl(CONTACTLAWS_CLI, CONTACTLAWS_CLI, "fit", truth.c_str(), "--data", data.c_str(),
-          "--timestep", "5e-4", "--params", "restitution=0.1:0.9", "--budget", "100000",
-          "--jobs", "1", "--output", dir.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // progress every 10 evaluations: Ctrl-C once the 10th is done
   bool evaluated = false;
   for (int i = 0; i < 1200 && !evaluated; ++i) {

@@ -294,17 +294,10 @@ TEST(ReliabilityTest, CtrlCDuringCompareLeavesTheFinishedRunsIntact) {
   const std::string dir = ::testing::TempDir() + "/interrupted";
   std::filesystem::remove_all(dir);
   const std::string log = ::testing::TempDir() + "/interrupted.log";
-  const pid_t pid = fork();
+  const pid_t pid = SpawnCli({"compare", kBall, "--laws", "hertz,flores", "--restitution",
+                              "0.3,0.6,0.9", "--duration", "2", "--jobs", "1", "--output-dir", dir},
+                             log);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    std::FILE* out = std::fopen(log.c_str(), "w");
-    dup2(fileno(out), STDOUT_FILENO);
-    dup2(fileno(out), STDERR_FILENO);
-    execl(CONTACTLAWS_CLI, CONTACTLAWS_CLI, "compare", kBall.c_str(), "--laws",
-          "hertz,flores", "--restitution", "0.3,0.6,0.9", "--duration", "2", "--jobs", "1",
-          "--output-dir", dir.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
   const std::string temp = dir + "/trajectories.csv.tmp";
   bool first_run_written = false;
   for (int i = 0; i < 600 && !first_run_written; ++i) {

@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# The real cube-toss benchmark (docs/validation.md): the 300 tosses of data/cube_tosses/
+# (Acosta, Yang & Posa 2022) converted, split into a training set (tosses 0-199) and a held-out
+# set (200-299) that no fit sees, and fitted with `contactlaws fit`:
+#   A. every law of the table with coulomb friction;
+#   B. the law that A ranks first (by its training score) with every friction model;
+#   C. MuJoCo's own contact (mjcf/cube_toss_mujoco.xml: solref and friction), the peer.
+# Each fit identifies the restitution, stiffness, friction coefficient and the board's offset
+# (the tracked cube rests ~2 mm below the board's nominal plane), and a law's own key
+# (hunt-crossley-constant's dissipation); keys a law or model does not read are not fitted.
+# Every rollout steps at the published 10 steps per 148 Hz sample (1/1480 s).
+# Outputs under results/cube_toss/ (git-ignored), then docs/validation.md and its figures
+# (scripts/cube_toss_report.py).
+#
+#   scripts/cube_toss.sh                   the benchmark
+#   BUDGET=80 scripts/cube_toss.sh         evaluations per fit (default 24)
+#   PARALLEL=4 JOBS=1 scripts/cube_toss.sh fits at a time, threads per fit (default 2 x 1)
+#   FRICTIONS=all scripts/cube_toss.sh     stage A with every friction model (65 fits)
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$repo"
+
+if [ -z "${CONTACTLAWS_BUILT:-}" ]; then
+  bash scripts/install-deps.sh
+  bash scripts/build.sh >/dev/null
+fi
+
+cl="${CONTACTLAWS:-build/contactlaws}"
+out=results/cube_toss
+budget="${BUDGET:-24}"
+parallel="${PARALLEL:-2}"
+jobs="${JOBS:-1}"
+seed="${SEED:-1}"
+frictions="${FRICTIONS:-coulomb}"
+step=6.756756756756757e-4  # 1/1480 s
+rm -rf "$out"
+mkdir -p "$out"
+
+scripts/cube_tosses_to_csv.py data/cube_tosses/train.csv.gz "$out/train.csv" --tosses 0:200
+scripts/cube_tosses_to_csv.py data/cube_tosses/train.csv.gz "$out/validate.csv" --tosses 200:300
+
+common=(--data "$out/train.csv" --validate "$out/validate.csv" --start refit --timestep "$step"
+        --budget "$budget" --seed "$seed" --quiet)
+shared="stiffness=1e4:3e6:log,mu=0.05:1,board.offset=-0.005:0.001"
+
+# The parameters a law reads: the shared ones, and restitution or dissipation where its row of
+# `contactlaws laws` names them.
+law_params() {
+  "$cl" laws | awk -v law="$1" -v shared="$shared" '
+    $0 == law {found = 1; next}
+    found && /parameters:/ {
+      p = shared
+      if ($0 ~ /restitution/) p = p ",restitution=0.01:0.95"
+      if ($0 ~ /dissipation/) p = p ",dissipation=0.01:10:log"
+      print p; exit
+    }'
+}
+
+# fit NAME SCENE FIT_OPTIONS...: one fit into $out/NAME, what it prints into $out/NAME.log
+fit() {
+  local name="$1" scene="$2"
+  shift 2
+  "$cl" fit "$scene" "${common[@]}" --jobs "$jobs" "$@" --output "$out/$name" >"$out/$name.log" 2>&1 ||
+    { echo "cube_toss: fit $name failed:"; cat "$out/$name.log"; return 1; }
+}
+
+# Runs the queued fits ("NAME SCENE OPTIONS..." lines on stdin), $parallel at a time.
+fit_all() {
+  local failed=0 line
+  while read -r line; do
+    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || failed=1; done
+    # shellcheck disable=SC2086
+    fit $line &
+  done
+  while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n || failed=1; done
+  return "$failed"
+}
+
+# The law whose fit scores best on the training set, of $out/law-*/ranking.csv.
+best_law() {
+  awk -F, 'FNR == 1 {for (i = 1; i <= NF; ++i) if ($i == "train_mean") c = i; next}
+           best == "" || $c < best {best = $c; law = $1} END {print law}' "$out"/law-*/ranking.csv
+}
+
+start=$(date +%s)
+laws=$("$cl" laws --format csv | awk -F, 'NR > 1 && !seen[$1]++ {print $1}')
+echo "cube_toss: A. every law with friction ${frictions}; C. MuJoCo's own contact (budget ${budget})"
+{
+  for law in $laws; do
+    echo "law-$law mjcf/cube_toss.xml --laws $law --frictions $frictions --params $(law_params "$law")"
+  done
+  echo "mujoco mjcf/cube_toss_mujoco.xml --params mujoco.timeconst=0.002:0.1:log,mujoco.dampratio=0.05:2:log,mujoco.friction=0.05:1,board.offset=-0.005:0.001"
+} | fit_all
+
+law=$(best_law)
+echo "cube_toss: B. ${law} with every friction model"
+# one fit of the combinations, its threads as many as the fits of stage A at a time
+"$cl" fit mjcf/cube_toss.xml "${common[@]}" --jobs "$parallel" --laws "$law" --frictions all \
+  --params "$(law_params "$law")" --output "$out/frictions" >"$out/frictions.log" 2>&1 ||
+  { echo "cube_toss: fit frictions failed:"; cat "$out/frictions.log"; exit 1; }
+
+echo "cube_toss: $(($(date +%s) - start)) s of fitting (budget ${budget}, ${parallel} fits x ${jobs} threads)"
+/usr/bin/python3 scripts/cube_toss_report.py "$out" docs
