@@ -43,6 +43,15 @@
 //      a floor (v0 at the law's floor, 1e-3 m/s) under flores e = 0.2 is a
 //      damper of lag 1.6e-5 s, and steps of 6e-5 s hung it at 60% of its
 //      weight. An impact's damping (v0 of metres per second) never binds.
+//      Likewise no more than 2 lags 1 / lambda of its friction's dampers
+//      (TangentialDynamics: the stick spring's, the bristles', the
+//      regularized curve's slope), its points in parallel, on the inertia
+//      the bodies show at the points (mujoco/damper_rate.h): a 2 cm die
+//      resting on four corners turns about the vertical against them 12x
+//      faster than one of them moves its mass, and steps of 3.6e-5 s (rule
+//      4's, 0.4 of the period on its mass) were beyond RK4's 2.785 lags: the
+//      die spun at 5e-3 rad/s for ever, its friction dissipating what the
+//      integration fed in.
 //   6. Under RK4, a settled contact point (its depth rate below the law's
 //      floor of v0, min_impact_velocity, and its episode touched within
 //      kSettledTouchFactor of the floor or has lasted kSettledDurations
@@ -145,6 +154,7 @@ inline constexpr double kSettledTouchFactor = 10;
 inline constexpr double kSettledDurations = 3;
 
 class ReachSweep;  // src/sim/reach_sweep.h
+class TangentialDamperRate;
 
 class AutoTimestep {
  public:
@@ -187,6 +197,9 @@ class AutoTimestep {
   // of its rolling and torsional springs, over steps_per_contact; infinite
   // without friction.
   double TangentialStep(const ContactData::Evaluation& e) const;
+  // Rule 5's bound from the friction dampers of the points latest()[first, end)
+  // (one pair's); infinite without friction.
+  double FrictionLag(size_t first, size_t end);
   // The bound of the flight step: the scene's own timestep when it has
   // dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;
@@ -235,6 +248,9 @@ class AutoTimestep {
   double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
   std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
   std::vector<double> reach_;             // per geom, m (SetReach)
+  // FrictionLag's: the points' positions, normals and dampers, and its rate
+  std::vector<double> point_pos_, point_normal_, point_damping_;
+  std::unique_ptr<TangentialDamperRate> damper_rate_;
   bool settled_rule_ = false;             // rule 6: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;

@@ -107,15 +107,21 @@ struct Impact {
   // rates mix its points: a second corner that lands faster than the first
   // touched raises its largest approach, and is no chain.
   bool points_chained = false;
+  // A contact there when the run began (PointEvaluation::at_start): the
+  // largest approach rate of its first compression, m/s: the bodies placed
+  // touching sinking into their contact's spring, which is neither an
+  // impact nor a pulse (0 for a contact that touched during the run).
+  double settling_velocity = 0;
   // Compressed more than kChainFactor times faster than the law's v0 at its
-  // touch (a pulse through touching bodies), or, a collision, one of its
-  // points was. Gravity alone raises an impact's rate after the touch (the
-  // paper's ball by 5e-6 of 4.2 m/s, a slow one by tens of percent): that is
-  // no chain; neither is a contact that opened at rest and settles within
-  // the v0 floor.
+  // touch and than its settling (a pulse through touching bodies), or, a
+  // collision, one of its points was. Gravity alone raises an impact's rate
+  // after the touch (the paper's ball by 5e-6 of 4.2 m/s, a slow one by tens
+  // of percent): that is no chain; neither is a contact that opened at rest
+  // and settles within the v0 floor, nor one there at the start that settles.
   bool chained() const {
     return points_chained ||
-           max_approach_velocity > kChainFactor * std::max(impact_velocity, touch_v0);
+           max_approach_velocity >
+               kChainFactor * std::max({impact_velocity, touch_v0, settling_velocity});
   }
   // separation / the largest approach speed (closed only): an impact's touch
   // speed, a chained contact's pulse
@@ -236,6 +242,9 @@ class EpisodeLog {
     double last_normal[3] = {0, 0, 0};
     double local[2][3] = {{0, 0, 0}, {0, 0, 0}};  // where it sat on the bodies
     FrictionState friction;
+    // there at the start and in its first compression: its rate raises
+    // Impact::settling_velocity until it falls below 1 / kChainFactor of it
+    bool settling = false;
   };
   void Open(double t, const PointEvaluation& e);
   void Close(int index, double separation_velocity);

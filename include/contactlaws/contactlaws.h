@@ -20,6 +20,7 @@
 #include "contactlaws/model_io.h"
 #include "contactlaws/mujoco_warnings.h"
 #include "contactlaws/run_report.h"
+#include "contactlaws/settle.h"
 #include "contactlaws/simulation.h"
 #include "contactlaws/summary.h"
 #include "contactlaws/timestep_advice.h"

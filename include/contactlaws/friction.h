@@ -142,17 +142,29 @@ double TangentialDamping(const FrictionParams& params, const LawParams& law,
 // curve (regularized).
 double SlidingMu(const FrictionParams& params, double speed);
 
-// The time scale of a contact's tangential dynamics, s: what the contact
-// duration is to the normal law (the auto timestep and the timestep advice
-// divide it into steps). pi / r, r the fastest rate (1/s) of the spring k and
-// damper c the contact puts on mass m (kg): r = sqrt(k / m) when c <= 2
-// sqrt(k m), else c / 2m + sqrt((c / 2m)^2 - k / m). The spring and damper:
+// The spring k (N/m) and damper c (N s/m) a contact point's tangential
+// dynamics put between its bodies at rest, for the pair's mass m (kg) and
+// the normal force F_n (N):
 //   coulomb, stribeck: k_t = stiffness (N/m), c_t = damping (N s/m, from
 //     TangentialDamping) plus viscous;
 //   lugre: the bristles sigma0 F_n, BristleDamping plus viscous;
 //   regularized: no spring; its curve's slope at zero slip, c = 2 mu_s F_n /
-//     v_t, is a damper, with no period: the duration is 10 m / c, so that
-//     the 20 steps per period of the callers are its lag m / c each.
+//     v_t, is a damper;
+//   none: neither.
+struct TangentialSpringDamper {
+  double stiffness = 0;  // N/m
+  double damping = 0;    // N s/m
+};
+TangentialSpringDamper TangentialDynamics(const FrictionParams& params, double stiffness,
+                                          double damping, double mass, double normal_force);
+
+// The time scale of a contact's tangential dynamics, s: what the contact
+// duration is to the normal law (the auto timestep and the timestep advice
+// divide it into steps). pi / r, r the fastest rate (1/s) of the spring k and
+// damper c of TangentialDynamics on mass m (kg): r = sqrt(k / m) when c <= 2
+// sqrt(k m), else c / 2m + sqrt((c / 2m)^2 - k / m). A damper alone
+// (regularized) has no period: the duration is 10 m / c, so that the 20
+// steps per period of the callers are its lag m / c each.
 // Infinite for none, and where nothing stiffens the contact (no load, no
 // stiffness, an infinite mass).
 double TangentialDuration(const FrictionParams& params, double stiffness, double damping,

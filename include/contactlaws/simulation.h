@@ -20,6 +20,7 @@
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/model_io.h"
+#include "contactlaws/settle.h"
 
 namespace contactlaws {
 
@@ -69,6 +70,10 @@ struct SimulationOptions {
   std::optional<double> timestep;   // s, > 0; default: the scene's
   std::optional<int> integrator;    // mjtIntegrator; default: the scene's
   ColumnGroups columns;             // of the trajectory
+  // Before t = 0, move the bodies that start in contact into the static
+  // equilibrium of their contacts (settle.h); Simulation::settled() says what
+  // moved. Throws Error when there is none.
+  bool settle = false;
 };
 
 class Simulation {
@@ -135,6 +140,9 @@ class Simulation {
   // MuJoCo's warnings on this data since the last reset, one per kind.
   std::vector<MujocoWarning> Warnings() const;
 
+  // What SimulationOptions::settle moved (nullopt without it).
+  const std::optional<SettleReport>& settled() const { return settled_; }
+
  private:
   // Reset(); fresh: the data is mj_makeData's, already at qpos0.
   void Reset(bool fresh);
@@ -152,6 +160,8 @@ class Simulation {
   std::vector<int> recorded_bodies_;
   std::vector<uint8_t> oriented_;  // per recorded body: it has a free or ball joint
   std::vector<int> recorded_joints_;  // hinge and slide joints
+  std::optional<SettleReport> settled_;
+  std::vector<mjtNum> settled_qpos_;  // the initial positions after settle
 };
 
 // An MJCF scene, parsed once; every simulation gets its own copy of the model.

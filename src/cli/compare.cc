@@ -168,6 +168,7 @@ int CompareCommand(const SweepArgs& args) {
       Prepare(*in.scene, options, specs, in.common.auto_timestep.has_value());
 
   const std::unique_ptr<Simulation> first = in.scene->Make(OptionsFor(options, specs.front()));
+  ReportSettle(*first);
   if (frictions && !HasFriction(first->contact_model())) {
     Warn(in.scene->path(), "--frictions: every tagged pair is frictionless (condim 1, as in "
                            "MuJoCo): the friction models do not act");

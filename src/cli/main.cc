@@ -68,6 +68,9 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
                   "euler, rk4 or implicit (default: the scene's)");
   AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
   AddFriction(cmd, &args->friction, &args->mu);
+  cmd->add_flag("--settle", args->settle,
+                "before t = 0, move the bodies that start in contact into the static "
+                "equilibrium of their contacts (positions only); refused when there is none");
   if (sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();

@@ -115,6 +115,7 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy, args.timestep);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
+  options.simulation.settle = args.settle;
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
   if (args.dissipation) {
     options.simulation.overrides.dissipation = ParseDissipation(*args.dissipation);

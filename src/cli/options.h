@@ -29,6 +29,7 @@ struct CommonArgs {
   std::optional<std::string> dissipation;  // c (s/m) of the laws that read it
   std::optional<std::string> friction;     // every tagged pair's friction model
   std::optional<std::string> mu;           // every tagged pair's mu (static = kinetic)
+  bool settle = false;  // the bodies in contact at t = 0 into their static equilibrium
 };
 
 // What SimulationOptions leave out of the common options: the run's length

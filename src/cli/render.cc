@@ -96,6 +96,7 @@ int RenderCommand(const RenderArgs& args) {
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
+  ReportSettle(*sim);
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
   if (!plan.common.auto_timestep) {
     for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);

@@ -18,6 +18,10 @@ void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {
   }
 }
 
+void ReportSettle(const Simulation& sim) {
+  if (sim.settled()) fmt::print(stderr, "contactlaws: {}: {}\n", sim.source(), sim.settled()->Line());
+}
+
 void Warn(const std::string& scene, const std::string& what) {
   fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
 }

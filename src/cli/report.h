@@ -15,6 +15,9 @@
 
 namespace contactlaws::cli {
 
+// The line of what --settle moved, on stderr (nothing without it).
+void ReportSettle(const Simulation& sim);
+
 // "contactlaws: warning: SCENE: WHAT" on stderr.
 void Warn(const std::string& scene, const std::string& what);
 

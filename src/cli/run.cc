@@ -55,6 +55,7 @@ int RunCommand(const RunArgs& args) {
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   const Scene scene(args.scene);
   std::unique_ptr<Simulation> sim = scene.Make(options);
+  ReportSettle(*sim);
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
 

@@ -135,25 +135,35 @@ double SlidingMu(const FrictionParams& params, double speed) {
   return 0;
 }
 
-double TangentialDuration(const FrictionParams& p, double stiffness, double damping,
-                          double mass, double normal_force) {
+TangentialSpringDamper TangentialDynamics(const FrictionParams& p, double stiffness,
+                                          double damping, double mass, double normal_force) {
   const double fn = std::max(normal_force, 0.0);
-  double k = 0, c = p.viscous;
+  TangentialSpringDamper out;
   switch (p.kind) {
-    case FrictionKind::kNone: return kInfinity;
+    case FrictionKind::kNone: return out;
     case FrictionKind::kCoulomb:
     case FrictionKind::kStribeck:
-      k = stiffness;
-      c += damping;
+      out.stiffness = stiffness;
+      out.damping = p.viscous + damping;
       break;
     case FrictionKind::kLuGre:
-      k = p.bristle_stiffness * fn;
-      c += BristleDamping(p, fn, mass);
+      out.stiffness = p.bristle_stiffness * fn;
+      out.damping = p.viscous + BristleDamping(p, fn, mass);
       break;
     case FrictionKind::kRegularized:
-      c = 2 * p.mu_static * fn / p.transition_velocity;
+      out.damping = 2 * p.mu_static * fn / p.transition_velocity;
       break;
   }
+  return out;
+}
+
+double TangentialDuration(const FrictionParams& p, double stiffness, double damping,
+                          double mass, double normal_force) {
+  if (p.kind == FrictionKind::kNone) return kInfinity;
+  const TangentialSpringDamper spring =
+      TangentialDynamics(p, stiffness, damping, mass, normal_force);
+  const double k = spring.stiffness;
+  const double c = spring.damping;
   if (!(mass > 0) || !std::isfinite(mass) || !std::isfinite(k) || !std::isfinite(c)) {
     return kInfinity;
   }

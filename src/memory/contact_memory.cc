@@ -139,6 +139,7 @@ void EpisodeLog::Open(double t, const PointEvaluation& e) {
   const int index = static_cast<int>(impacts_.size());
   impacts_.push_back(impact);
   tracks_.emplace_back();
+  tracks_.back().settling = e.at_start;
   open_.push_back(index);
   pair_open_[e.pair].push_back(index);
 }
@@ -155,6 +156,11 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     track.force.Add(t, e.force);
     impact.max_force = track.force.peak();
     impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
+    // a contact there at the start: its first compression is its settling
+    if (track.settling) {
+      impact.settling_velocity = std::max(impact.settling_velocity, e.depth_rate);
+      track.settling = e.depth_rate * kChainFactor >= impact.settling_velocity;
+    }
     TangentialSide(e, impact.tangent, impact.normal, &impact.tangential_separation_velocity,
                    &impact.spin_after);
     track.last_commit = commits_;
@@ -227,8 +233,12 @@ void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
         collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
       }
       if (e.touch) collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
-      if (e.episode >= 0 && episodes.impacts()[e.episode].chained()) {
-        collision.points_chained = true;
+      // (a touch's settling starts at its next commit, as its episode's)
+      if (e.episode >= 0) {
+        const Impact& point = episodes.impacts()[e.episode];
+        collision.settling_velocity =
+            std::max(collision.settling_velocity, point.settling_velocity);
+        if (point.chained()) collision.points_chained = true;
       }
     }
     force_[pair].Add(t, force);

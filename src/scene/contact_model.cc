@@ -162,10 +162,20 @@ double MaterialStiffness(const mjModel* m, int g1, int g2, const PairTagSpec& sp
                          const std::string& pair_name, const TagResolver& resolve) {
   const std::optional<double> r1 = HertzRadius(m, g1);
   const std::optional<double> r2 = HertzRadius(m, g2);
-  if (!r1 || !r2 || (std::isinf(*r1) && std::isinf(*r2))) {
+  // Hertz's formula takes the radii of curvature where the surfaces touch: a
+  // sphere's or capsule's radius, a plane's infinity
+  for (const int g : {g1, g2}) {
+    if (HertzRadius(m, g)) continue;
     resolve.Fail(fmt::format(
-        "{}: materials (youngs1 ...) need sphere, capsule or plane geoms, not both planes; "
-        "give stiffness instead",
+        "{}: materials (youngs1 ...) give K through Hertz's formula from the radii of "
+        "curvature at the contact, and the {} {} has none (corners, edges and flat faces: "
+        "spheres, capsules and planes have one): give stiffness (N/m^n) instead",
+        pair_name, GeomTypeName(m->geom_type[g]), ObjectName(m, mjOBJ_GEOM, g)));
+  }
+  if (std::isinf(*r1) && std::isinf(*r2)) {
+    resolve.Fail(fmt::format(
+        "{}: materials (youngs1 ...) need a curved geom: two planes have no radius of "
+        "curvature for Hertz's formula; give stiffness (N/m^n) instead",
         pair_name));
   }
   return HertzSphereStiffness(*r1, *r2, MaterialCompliance(*spec.youngs1, *spec.poisson1),

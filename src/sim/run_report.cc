@@ -22,27 +22,37 @@ const Impact* FirstChainedPoint(const Simulation& sim, int p) {
 
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
   // the library handles any rise (Impact::max_approach_velocity); a chained
-  // contact is one a warning should name
-  const std::vector<Impact>& collisions = sim.contacts().impacts();
+  // contact is one a warning should name, once per tag: many pairs of a tag
+  // (balls on a box, a cradle) say one thing
+  const ContactModel& cm = sim.contact_model();
   std::vector<std::string> warnings;
-  for (int p = 0; p < static_cast<int>(sim.contact_model().pairs().size()); ++p) {
+  for (const PairTag& tag : cm.tags()) {
     const Impact* first = nullptr;
     int count = 0;
-    for (const Impact& c : collisions) {
-      if (c.pair != p || !c.chained()) continue;
-      if (!first) first = &c;
-      ++count;
+    int pairs = 0;
+    for (const int p : tag.pairs) {
+      int pair_count = 0;
+      for (const Impact& c : sim.contacts().impacts()) {
+        if (c.pair != p || !c.chained()) continue;
+        if (!first) first = &c;
+        ++pair_count;
+      }
+      count += pair_count;
+      pairs += pair_count > 0;
     }
     if (!first) continue;
-    const Impact* point = FirstChainedPoint(sim, p);
+    const Impact* point = FirstChainedPoint(sim, first->pair);
     if (!point) point = first;
+    const std::string others =
+        pairs > 1 ? fmt::format(" and {} more pair{} of its tag", pairs - 1, pairs > 2 ? "s" : "")
+                  : "";
     warnings.push_back(fmt::format(
-        "{}: {} collision{} touched slowly and then compressed far faster (the first at "
+        "{}{}: {} collision{} touched slowly and then compressed far faster (the first at "
         "t = {:.6g} s: touched at {:.4g} m/s, compressed at {:.4g} m/s): pushed while in "
         "contact (a pulse through touching bodies, or a body tipping onto the point); the "
         "law's v0 was the largest approach rate, and e_post is taken against it (README, "
         "Touching chains)",
-        PairName(sim, p), count, count == 1 ? "" : "s", point->time_contact,
+        PairName(sim, first->pair), others, count, count == 1 ? "" : "s", point->time_contact,
         point->impact_velocity, point->max_approach_velocity));
   }
   return warnings;

@@ -28,6 +28,11 @@ Simulation::Simulation(UniqueModel model, std::string source,
   columns_ = options.columns;
   RecordBodiesAndJoints();
   Reset(/*fresh=*/true);
+  if (options.settle) {
+    settled_ = Settle(this);
+    settled_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
+    Reset();
+  }
 }
 
 void Simulation::Reset() { Reset(/*fresh=*/false); }
@@ -39,6 +44,8 @@ void Simulation::Reset(bool fresh) {
   } else if (!fresh) {
     mj_resetData(model_.get(), data_.get());
   }
+  // the scene's state, its bodies in contact settled when asked
+  if (!settled_qpos_.empty()) mju_copy(data_->qpos, settled_qpos_.data(), model_->nq);
   contacts_->Reset();
   for (const Drive& drive : contact_model_->drives()) {
     drive.Position(data_->time, data_->mocap_pos + 3 * drive.mocap);

@@ -279,6 +279,40 @@ TEST(CollisionLogTest, ASecondCornerLandingFasterIsNoChainAPushedOneIs) {
   EXPECT_TRUE(collisions.impacts()[0].chained());
 }
 
+// A contact there at the start (bodies placed touching) sinks into its
+// spring: the first compression is its settling, no chain; a pulse that
+// comes through later, faster than kChainFactor x the settling, is one.
+TEST(EpisodeLogTest, AContactThereAtTheStartSettlesAPulseThroughItIsAChain) {
+  EpisodeLog log(/*points_per_pair=*/{1}, /*tags=*/1);
+  auto commit = [&](double t, double rate) {
+    PointEvaluation e = Point(0, 0, 1e-6, rate, 1, t > 0 ? 0 : -1);
+    e.at_start = t == 0;
+    e.touch_velocity = t == 0 ? rate : 0.0;
+    e.impact_velocity = 1e-3;  // the law's floor of v0
+    e.max_approach = std::max(t > 0 ? log.MaxApproach(0) : rate, rate);
+    log.Commit(t, {e});
+  };
+  commit(0.0, 0.0);
+  double t = 0;
+  for (const double rate : {0.05, 0.12, 0.04, -0.02, 0.03}) commit(++t, rate);
+  const Impact& placed = log.impacts()[0];
+  EXPECT_EQ(placed.settling_velocity, 0.12);  // its first compression's peak
+  EXPECT_FALSE(placed.chained());
+  commit(10.0, 0.23);  // below 2 x 0.12
+  EXPECT_FALSE(log.impacts()[0].chained());
+  commit(11.0, 0.5);  // a pulse
+  EXPECT_TRUE(log.impacts()[0].chained());
+  // touched during the run at the same rates: a chain from its first push
+  EpisodeLog later(/*points_per_pair=*/{1}, /*tags=*/1);
+  PointEvaluation touch = Point(0, 0, 1e-6, 0.0, 1);
+  touch.impact_velocity = 1e-3;
+  later.Commit(1.0, {touch});
+  PointEvaluation pushed = Point(0, 0, 1e-6, 0.12, 1, 0);
+  pushed.max_approach = 0.12;
+  later.Commit(2.0, {pushed});
+  EXPECT_TRUE(later.impacts()[0].chained());
+}
+
 TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
   Impact settling;
   settling.impact_velocity = 0;

@@ -70,6 +70,10 @@ const BadScene kBadScenes[] = {
      "contactlaw:p: dissipation=-1 must be >= 0 (s/m)"},
     {"poisson", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=hertz youngs1=1e9 poisson1=0.5 youngs2=1e9 poisson2=0.3"/>)",
      "contactlaw:p: poisson1=0.5 must be in (-1, 0.5)"},
+    {"materials on a box", R"(<text name="contactlaw:p" data="geom1=crate geom2=floor law=hertz youngs1=2e11 poisson1=0.3 youngs2=2e11 poisson2=0.3"/>)",
+     "contactlaw:p: (crate, floor): materials (youngs1 ...) give K through Hertz's formula from "
+     "the radii of curvature at the contact, and the box crate has none (corners, edges and "
+     "flat faces: spheres, capsules and planes have one): give stiffness (N/m^n) instead"},
     {"kelvin-voigt without k", R"(<text name="contactlaw:p" data="geom1=ball geom2=floor law=kelvin-voigt restitution=0.5 stiffness=1e8 exponent=1.5"/>)",
      "contactlaw:p: law=kelvin-voigt needs linear_stiffness (N/m), or stiffness with exponent 1 or absent"},
     {"same geom twice", R"(<text name="contactlaw:p" data="geom1=ball geom2=ball law=hertz stiffness=1"/>)",
@@ -106,6 +110,7 @@ TEST_F(SceneTest, BadScenesAreRefusedByName) {
     <geom name="wall" type="plane" size="1 1 0.1" zaxis="1 0 0"/>
     <body name="ball" pos="0 0 0.2"><freejoint/><geom name="ball" type="sphere" size="0.1"/>
       <geom name="ball2" type="sphere" size="0.05" pos="0 0 0.1"/></body>
+    <body name="crate" pos="1 0 0.2"><freejoint/><geom name="crate" type="box" size="0.1 0.1 0.1"/></body>
   </worldbody>
   <custom>{}</custom>
 </mujoco>)",

@@ -5,9 +5,12 @@
 
 #include "contactlaws/auto_timestep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -164,6 +167,19 @@ TEST(AutoTimestepTest, SpinCostsNoAccuracy) {
   }
 }
 
+// Steps sim until end (s) with stepper's steps, or fixed_step's without one,
+// stopping at a divergence. Returns the largest step taken.
+double StepUntil(Simulation* sim, AutoTimestep* stepper, std::optional<double> fixed_step,
+                 double end) {
+  double largest = 0;
+  while (sim->time() < end - 1e-9 && !sim->contacts().divergence()) {
+    const double step = stepper ? stepper->Next(end - sim->time()) : *fixed_step;
+    largest = std::max(largest, step);
+    sim->Step(step);
+  }
+  return largest;
+}
+
 // A block held by friction on an incline (tilted gravity, tan 0.3 < mu_s
 // 0.5) through stick springs far stiffer than its normal contact: k_t = 1e7
 // N/m on 1 kg, a period of 2 ms, against a normal contact (K = 1e6 N/m^1.5
@@ -181,16 +197,9 @@ double InclineDrift(const std::string& friction, std::optional<double> fixed_ste
   std::optional<AutoTimestep> stepper;
   if (!fixed_step) stepper.emplace(sim->contacts());
   mj_forward(sim->model(), sim->data());
-  double settled = 0;
-  *largest_step = 0;
-  for (const double end : {2.0, 3.0}) {
-    while (sim->time() < end - 1e-9 && !sim->contacts().divergence()) {
-      const double step = stepper ? stepper->Next(end - sim->time()) : *fixed_step;
-      if (end > 2.0) *largest_step = std::max(*largest_step, step);
-      sim->Step(step);
-    }
-    if (end == 2.0) settled = sim->data()->qpos[0];
-  }
+  StepUntil(sim.get(), stepper ? &*stepper : nullptr, fixed_step, 2.0);
+  const double settled = sim->data()->qpos[0];
+  *largest_step = StepUntil(sim.get(), stepper ? &*stepper : nullptr, fixed_step, 3.0);
   if (sim->contacts().divergence()) return INFINITY;
   return std::abs(sim->data()->qpos[0] - settled);
 }
@@ -235,9 +244,7 @@ double RestingForce(std::optional<double> fixed_step, long* steps = nullptr,
   if (!fixed_step) stepper.emplace(sim->contacts());
   mj_forward(sim->model(), sim->data());
   constexpr double kEnd = 0.5;  // s: settled either way by 0.1 s
-  while (sim->time() < kEnd - 1e-9 && !sim->contacts().divergence()) {
-    sim->Step(stepper ? stepper->Next(kEnd - sim->time()) : *fixed_step);
-  }
+  StepUntil(sim.get(), stepper ? &*stepper : nullptr, fixed_step, kEnd);
   if (steps && stepper) *steps = stepper->steps();
   double force = 0;
   for (const auto& e : sim->contacts().latest()) force += e.force;
@@ -311,6 +318,63 @@ TEST(AutoTimestepTest, AnUntaggedPairHoldsTheStepDownOnlyWhileNear) {
   EXPECT_EQ(first_step(-0.20001, 1.0, 1.0), kSceneStep);
   // b resting on the floor (within MuJoCo's contact): the scene's step
   EXPECT_EQ(first_step(2.0, 0.1, 0.0), kSceneStep);
+
+// A 2 cm die (10 g) resting on a face of a table (issue 22, item 2:
+// lankarani-nikravesh e 0.6, K 2e8, coulomb mu 0.4, RK4), set spinning at
+// 0.1 rad/s about the vertical: friction stops it within a millisecond. Its
+// four stick dampers (2 sqrt(k_t m) each, on the pair's mass) act in
+// parallel, and about the vertical on the die's inertia at its corners (1/m
+// + r^2/I = 4/m each): a rate of 8.3e4 /s, against the 3.5e3 /s of one
+// spring on the pair's mass that the period rule (4) sees. Steps past
+// RK4's 2.785 / rate (3.4e-5 s) feed the torsion: a fixed 3.4e-5 s keeps
+// it spinning, 3.2e-5 s stops it, as 2e-5 s does. Returns |w| (rad/s) at 1 s
+// and the ledger's total's change from 0.5 s to 1 s (J).
+std::pair<double, double> RestingDie(std::optional<double> fixed_step) {
+  constexpr double kRestZ = 0.01 - 2.4676e-7;  // m: each corner carries m g / 4 at K d^1.5
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="table" type="plane" size="1 1 0.1"/>
+    <body name="die" pos="0 0 {0}"><freejoint/>
+      <geom name="die" type="box" size="0.01 0.01 0.01" mass="0.01"/></body>
+  </worldbody>
+  <keyframe><key qpos="0 0 {0} 1 0 0 0" qvel="0 0 0 0 0 0.1"/></keyframe>
+  <custom><text name="contactlaw:die" data="geom1=table geom2=die law=lankarani-nikravesh
+    restitution=0.6 stiffness=2e8 friction=coulomb mu=0.4"/></custom>
+</mujoco>)",
+                                      kRestZ);
+  const Scene scene("die.xml", LoadModelString(xml, "die.xml"));
+  std::unique_ptr<Simulation> sim = scene.Make({});
+  std::optional<AutoTimestep> stepper;
+  if (!fixed_step) stepper.emplace(sim->contacts());
+  mj_forward(sim->model(), sim->data());
+  StepUntil(sim.get(), stepper ? &*stepper : nullptr, fixed_step, 0.5);
+  mj_forward(sim->model(), sim->data());
+  const double settled = sim->Energy().total();
+  StepUntil(sim.get(), stepper ? &*stepper : nullptr, fixed_step, 1.0);
+  mj_forward(sim->model(), sim->data());
+  EXPECT_FALSE(sim->contacts().divergence());
+  return {mju_norm3(sim->data()->qvel + 3), sim->Energy().total() - settled};
+}
+
+TEST(AutoTimestepTest, ARestingDieComesToRestAsAtAFineFixedStep) {
+  // At rest the die keeps only the rounding of its corner springs: measured
+  // 2.3e-13 rad/s at a fixed 2e-5 s, 1.9e-13 under auto (its steps 2.4e-5
+  // s; 1.9e-3 rad/s at 3.6e-5 s before rule 5 took the dampers); a die turning at 1e-6 rad/s moves its
+  // corners by 1.4e-8 m/s (the issue's die turned at 5e-3 rad/s).
+  constexpr double kRestSpin = 1e-6;  // rad/s
+  // Nothing acts on a die at rest: the ledger's total is flat to rounding
+  // (measured 2e-19 J at 2e-5 s, 0 under auto); 1e-12 J is 1e-9 of its potential energy m g
+  // h = 1e-3 J (the issue's phantom friction: 2.6e-7 J in 0.5 s).
+  constexpr double kLedgerCreep = 1e-12;  // J in 0.5 s
+  const auto [fine_spin, fine_creep] = RestingDie(2e-5);
+  const auto [spin, creep] = RestingDie(std::nullopt);
+  std::printf("resting die: |w| %.3g rad/s, ledger %.3g J in 0.5 s (fixed 2e-5 s: %.3g, %.3g)\n",
+              spin, creep, fine_spin, fine_creep);
+  EXPECT_LT(fine_spin, kRestSpin);
+  EXPECT_LT(std::abs(fine_creep), kLedgerCreep);
+  EXPECT_LT(spin, kRestSpin);
+  EXPECT_LT(std::abs(creep), kLedgerCreep);
 }
 
 }  // namespace

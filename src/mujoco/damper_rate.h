@@ -1,0 +1,47 @@
+// Copyright contactlaws authors.
+//
+// How fast the dampers of a pair's contact points act on its bodies: the
+// rate an explicit step must resolve. Dampers c_j at points p_j that resist
+// the relative tangential velocity of the pair's two bodies make the
+// velocities decay as exp(-lambda t), lambda an eigenvalue of
+//   C^(1/2) P J M^-1 J^T P C^(1/2),
+// J the points' relative Jacobians (body[1] minus body[0]), P the projections
+// on their tangent planes, M the mass matrix. The points act in parallel,
+// and through the bodies' rotations as well as their translations: a cube
+// resting on its four corners turns about the vertical against its dampers
+// at 12 c / m, where one of them on the cube's mass acts at c / m. RK4 is
+// stable up to 2.785 / lambda_max.
+
+#ifndef CONTACTLAWS_MUJOCO_DAMPER_RATE_H_
+#define CONTACTLAWS_MUJOCO_DAMPER_RATE_H_
+
+#include <memory>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_model.h"
+
+namespace contactlaws {
+
+class TangentialDamperRate {
+ public:
+  TangentialDamperRate();
+  ~TangentialDamperRate();
+
+  // lambda_max (1/s) for the dampers damping[j] (N s/m, >= 0) at points
+  // pos[3 j ..] with unit normals normal[3 j ..] of pair, j < points, at d's
+  // state: its positions' Jacobians and its factorized mass matrix (qLD:
+  // after mj_forward or a step). 0 when nothing can move. Allocates only
+  // when a pair has more points than any before.
+  double Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+              const mjtNum* pos, const mjtNum* normal, const double* damping);
+
+ private:
+  struct Workspace;
+  std::unique_ptr<Workspace> w_;
+};
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_MUJOCO_DAMPER_RATE_H_

@@ -1,0 +1,195 @@
+// Copyright contactlaws authors.
+
+#include "contactlaws/settle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "contactlaws/error.h"
+#include "contactlaws/estimate.h"
+#include "contactlaws/model_io.h"
+#include "contactlaws/simulation.h"
+#include "mujoco/narrowphase.h"
+
+namespace contactlaws {
+namespace {
+
+// The movable bodies of tagged pairs touching at sim's state (1 per body),
+// with the depth their contacts allow (the largest GeomPair::depth_limit).
+struct Touching {
+  std::vector<uint8_t> body;
+  std::vector<double> limit;
+  int count = 0;
+};
+
+Touching FindTouching(const Simulation& sim) {
+  const ContactModel& cm = sim.contact_model();
+  const mjModel* m = sim.model();
+  Touching t;
+  t.body.assign(m->nbody, 0);
+  t.limit.assign(m->nbody, 0.0);
+  ContactBuffer contacts = MakeContactBuffer();
+  for (const GeomPair& pair : cm.pairs()) {
+    if (Collide(m, sim.data(), pair.geom[0], pair.geom[1], kTouchingGap, contacts.get()) == 0) {
+      continue;
+    }
+    for (const int b : {0, 1}) {
+      const int body = pair.body[b];
+      if (cm.FindDrive(body)) {
+        throw Error(fmt::format(
+            "{}: --settle: body '{}' touches the driven body '{}' at t = 0: a driven body "
+            "moves, so no static equilibrium holds",
+            sim.source(), ObjectName(m, mjOBJ_BODY, pair.body[1 - b]),
+            ObjectName(m, mjOBJ_BODY, body)));
+      }
+      if (Immovable(cm, body)) continue;
+      t.count += !t.body[body];
+      t.body[body] = 1;
+      t.limit[body] = std::max(t.limit[body], pair.depth_limit);
+    }
+  }
+  return t;
+}
+
+// The joints that carry a touching body (its own and its ancestors').
+std::vector<uint8_t> MovingJoints(const mjModel* m, const Touching& touching) {
+  std::vector<uint8_t> moving(m->njnt, 0);
+  for (int b = 1; b < m->nbody; ++b) {
+    if (!touching.body[b]) continue;
+    for (int a = b; a > 0; a = m->body_parentid[a]) {
+      for (int j = m->body_jntadr[a]; j < m->body_jntadr[a] + m->body_jntnum[a]; ++j) {
+        moving[j] = 1;
+      }
+    }
+  }
+  return moving;
+}
+
+// qpos and qvel entries of joint j.
+int QposSize(int type) { return type == mjJNT_FREE ? 7 : type == mjJNT_BALL ? 4 : 1; }
+int DofSize(int type) { return type == mjJNT_FREE ? 6 : type == mjJNT_BALL ? 3 : 1; }
+
+// 1/2 qvel^T M qvel; mv: room for nv numbers.
+double Kinetic(const mjModel* m, mjData* d, std::vector<mjtNum>* mv) {
+  mj_mulM(m, d, mv->data(), d->qvel);
+  return 0.5 * mju_dot(d->qvel, mv->data(), m->nv);
+}
+
+// The largest |qacc| of the moving joints' dofs at rest (after mj_forward).
+double Residual(const mjModel* m, const mjData* d, const std::vector<uint8_t>& moving) {
+  double residual = 0;
+  for (int j = 0; j < m->njnt; ++j) {
+    if (!moving[j]) continue;
+    for (int v = 0; v < DofSize(m->jnt_type[j]); ++v) {
+      residual = std::max(residual, std::abs(d->qacc[m->jnt_dofadr[j] + v]));
+    }
+  }
+  return residual;
+}
+
+}  // namespace
+
+std::string SettleReport::Line() const {
+  if (bodies == 0) return "settle: no body touches another at t = 0: nothing moved";
+  return fmt::format(
+      "settled {} bod{} in contact at t = 0 ({:.3g} s of relaxation): the farthest, '{}', "
+      "by {:.3g} m; turns <= {:.3g} rad",
+      bodies, bodies == 1 ? "y" : "ies", relaxation, body, distance, angle);
+}
+
+SettleReport Settle(Simulation* sim) {
+  const mjModel* m = sim->model();
+  mjData* d = sim->data();
+  mj_forward(m, d);
+  const Touching touching = FindTouching(*sim);
+  SettleReport report;
+  if (touching.count == 0) return report;
+  const std::vector<uint8_t> moving = MovingJoints(m, touching);
+  const std::vector<mjtNum> qpos0(d->qpos, d->qpos + m->nq);
+  const std::vector<mjtNum> xpos0(d->xpos, d->xpos + 3 * m->nbody);
+  const std::vector<mjtNum> xquat0(d->xquat, d->xquat + 4 * m->nbody);
+  const double start = d->time;
+  mju_zero(d->qvel, m->nv);
+  mj_forward(m, d);
+
+  // the farthest touching body from its start, and the largest turn
+  auto measure = [&] {
+    for (int b = 1; b < m->nbody; ++b) {
+      if (!touching.body[b]) continue;
+      mjtNum offset[3];
+      mju_sub3(offset, d->xpos + 3 * b, xpos0.data() + 3 * b);
+      const double distance = mju_norm3(offset);
+      if (distance >= report.distance) {
+        report.distance = distance;
+        report.body = ObjectName(m, mjOBJ_BODY, b);
+      }
+      const double cosine = std::min(1.0, std::abs(mju_dot(d->xquat + 4 * b,
+                                                           xquat0.data() + 4 * b, 4)));
+      report.angle = std::max(report.angle, 2 * std::acos(cosine));
+      if (distance > touching.limit[b]) {
+        throw Error(fmt::format(
+            "{}: --settle: no static equilibrium: body '{}' moved {:.3g} m in {:.3g} s of "
+            "relaxation, farther than its contacts can compress ({:.3g} m): it would fall or "
+            "slide",
+            sim->source(), ObjectName(m, mjOBJ_BODY, b), distance, d->time - start,
+            touching.limit[b]));
+      }
+    }
+  };
+
+  // quasi-static relaxation: the other bodies held, the velocities quenched
+  // as the kinetic energy starts to fall, until the residual is small
+  double previous = 0;
+  std::vector<mjtNum> mv(m->nv);
+  bool converged = Residual(m, d, moving) < kSettleResidual;
+  while (!converged && d->time - start < kSettleDuration) {
+    sim->Step();
+    if (sim->contacts().divergence()) {
+      throw Error(fmt::format("{}: --settle: the relaxation diverged at t = {:.6g} s: {}",
+                              sim->source(), d->time - start,
+                              sim->contacts().divergence()->what));
+    }
+    for (int j = 0; j < m->njnt; ++j) {
+      if (moving[j]) continue;
+      const int type = m->jnt_type[j];
+      mju_copy(d->qpos + m->jnt_qposadr[j], qpos0.data() + m->jnt_qposadr[j], QposSize(type));
+      mju_zero(d->qvel + m->jnt_dofadr[j], DofSize(type));
+    }
+    measure();
+    const double kinetic = Kinetic(m, d, &mv);
+    if (kinetic < previous) {
+      mju_zero(d->qvel, m->nv);
+      mj_forward(m, d);
+      converged = Residual(m, d, moving) < kSettleResidual;
+      previous = 0;
+    } else {
+      previous = kinetic;
+    }
+  }
+  report.relaxation = d->time - start;
+  mj_forward(m, d);
+  measure();
+  if (!converged) {
+    throw Error(fmt::format(
+        "{}: --settle: no static equilibrium: the bodies in contact still accelerate at "
+        "{:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m): they would slide",
+        sim->source(), Residual(m, d, moving), kSettleDuration, report.body, report.distance));
+  }
+  for (const ContactData::Evaluation& e : sim->contacts().latest()) {
+    if (!e.friction_state.sliding) continue;
+    const GeomPair& pair = sim->contact_model().pairs()[e.pair];
+    throw Error(fmt::format(
+        "{}: --settle: no static equilibrium: the contact of '{}' and '{}' needs more "
+        "friction than mu_s F_n: it would slide",
+        sim->source(), ObjectName(m, mjOBJ_GEOM, pair.named[0]),
+        ObjectName(m, mjOBJ_GEOM, pair.named[1])));
+  }
+  report.bodies = touching.count;
+  return report;
+}
+
+}  // namespace contactlaws

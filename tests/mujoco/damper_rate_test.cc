@@ -1,0 +1,81 @@
+// Copyright contactlaws authors.
+//
+// TangentialDamperRate against the rigid-body closed forms: a point at r
+// from a free body's centre of mass moves, per unit impulse along t, by 1/m
+// + (r x t) . I^-1 (r x t).
+
+#include "mujoco/damper_rate.h"
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class DamperRateTest : public testing::MujocoTest {
+ protected:
+  // A free body of mass kMass (its geom given) on a static floor, at the
+  // state qpos.
+  mjData* Body(const std::string& geom) {
+    model_ = Load(fmt::format(R"(<mujoco>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="body" pos="0 0 1"><freejoint/><geom {} mass="{}"/></body>
+  </worldbody>
+</mujoco>)",
+                              geom, kMass));
+    mjData* d = MakeData(model_.get());
+    mj_forward(model_.get(), d);
+    pair_.body = {0, 1};
+    return d;
+  }
+
+  static constexpr double kMass = 0.01;   // kg
+  static constexpr double kDamping = 69;  // N s/m per point
+  UniqueModel model_;
+  GeomPair pair_;
+};
+
+TEST_F(DamperRateTest, OnePointUnderABallActsOnItsMassAndItsSpin) {
+  // the point R below the centre: 1/m + R^2 / (2/5 m R^2) = 3.5 / m along
+  // either tangent
+  constexpr double kRadius = 0.1;
+  mjData* d = Body(fmt::format(R"(type="sphere" size="{}")", kRadius));
+  const mjtNum pos[3] = {0, 0, 1 - kRadius};
+  const mjtNum normal[3] = {0, 0, 1};
+  TangentialDamperRate rate;
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, pos, normal, &kDamping),
+              kDamping * 3.5 / kMass, 1e-9 * kDamping / kMass);
+}
+
+TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMass) {
+  // the bottom corners of a cube of half size a, at r^2 = 2 a^2 from the
+  // vertical axis: torsion at 4 c 2 a^2 / I_zz, I_zz = 2/3 m a^2: 12 c / m
+  // (the fastest mode; translation with rocking 10 c / m)
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  for (const double x : {-kHalf, kHalf}) {
+    for (const double y : {-kHalf, kHalf}) {
+      pos.insert(pos.end(), {x, y, 1 - kHalf});
+      normal.insert(normal.end(), {0, 0, 1});
+    }
+  }
+  const std::vector<double> damping(4, kDamping);
+  TangentialDamperRate rate;
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data()),
+              12 * kDamping / kMass, 1e-9 * kDamping / kMass);
+  // the normal's own direction is not damped: a normal along x leaves y, z
+  const mjtNum side[3] = {1, 0, 0};
+  const mjtNum centre[3] = {0, 0, 1};
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, centre, side, &kDamping), kDamping / kMass,
+              1e-9 * kDamping / kMass);
+}
+
+}  // namespace
+}  // namespace contactlaws

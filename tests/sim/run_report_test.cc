@@ -1,0 +1,64 @@
+// Copyright contactlaws authors.
+//
+// ChainedContactWarnings: a pulse through touching bodies is named, once per
+// tag; bodies placed touching that settle into their contacts are not.
+
+#include "contactlaws/run_report.h"
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class RunReportTest : public testing::MujocoTest {};
+
+// A box (1 kg) on the floor with four balls (0.1 kg, r 2 cm) on it, every
+// contact placed 1 nm deep (there at t = 0), at rest; gravity sinks each into
+// its spring (K 1e7: the balls' static depth 2.1e-5 m) at up to ~1e-2 m/s,
+// ten times the law's floor of v0 (1e-3 m/s) they "touched" at.
+std::string BallsOnABox() {
+  constexpr double kOverlap = 1e-9;  // m
+  std::string balls;
+  for (int i = 0; i < 4; ++i) {
+    balls += fmt::format(R"(<body pos="{} {} {}"><freejoint/>
+      <geom name="b{}" type="sphere" size="0.02" mass="0.1" group="1"/></body>)",
+                         i % 2 ? 0.05 : -0.05, i / 2 ? 0.05 : -0.05, 0.1 + 0.02 - 2 * kOverlap, i);
+  }
+  return fmt::format(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body pos="0 0 {}"><freejoint/><geom name="box" type="box" size="0.1 0.1 0.05" mass="1"/></body>
+    {}
+  </worldbody>
+  <custom>
+    <text name="contactlaw:floor" data="geom1=box geom2=floor law=hunt-crossley restitution=0.5
+      stiffness=1e7 friction=none"/>
+    <text name="contactlaw:balls" data="geom1=group:1 geom2=box law=hunt-crossley restitution=0.5
+      stiffness=1e7 friction=none"/>
+  </custom>
+</mujoco>)",
+                     0.05 - kOverlap, balls);
+}
+
+TEST_F(RunReportTest, BodiesPlacedTouchingThatSettleAreNoChain) {
+  Simulation& sim = MakeSimulation(BallsOnABox());
+  while (sim.time() < 0.2) sim.Step();
+  // every contact opened at t = 0 and was compressed faster than its v0
+  int settled = 0;
+  for (const Impact& point : sim.contacts().point_impacts()) {
+    EXPECT_EQ(point.time_contact, 0.0);
+    settled += point.max_approach_velocity > kChainFactor * point.touch_v0;
+  }
+  EXPECT_EQ(settled, 8);  // the box's four corners, the four balls
+  EXPECT_EQ(ChainedContactWarnings(sim), std::vector<std::string>());
+}
+
+}  // namespace
+}  // namespace contactlaws

@@ -1,0 +1,132 @@
+// Copyright contactlaws authors.
+//
+// Settle: bodies placed touching start in the static equilibrium of their
+// contacts (positions only), or are refused in one line.
+
+#include "contactlaws/settle.h"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "mujoco_test_util.h"
+#include "sim/friction_scenes.h"
+
+namespace contactlaws {
+namespace {
+
+constexpr double kHalf = 0.05;       // cube half size, m
+constexpr double kStiffness = 1e7;   // K, N/m^1.5
+constexpr double kGravity = 9.81;    // m/s^2
+
+// Three 1 kg cubes stacked on a floor, placed exactly touching (d = 0), the
+// top one given qvel_top (vx) in the keyframe.
+std::string Stack(double vx_top) {
+  std::string bodies, tags, qpos, qvel;
+  for (int i = 0; i < 3; ++i) {
+    const double z = kHalf * (2 * i + 1);
+    bodies += fmt::format(R"(<body name="c{0}" pos="0 0 {1}"><freejoint/>
+      <geom name="c{0}" type="box" size="{2} {2} {2}" mass="1"/></body>)",
+                          i, z, kHalf);
+    tags += fmt::format(R"(<text name="contactlaw:t{0}" data="geom1={1} geom2=c{0}
+      law=hunt-crossley restitution=0.5 stiffness={2} min_impact_velocity=1e-2"/>)",
+                        i, i == 0 ? std::string("floor") : fmt::format("c{}", i - 1), kStiffness);
+    qpos += fmt::format("{}0 0 {} 1 0 0 0", i ? " " : "", z);
+    qvel += fmt::format("{}{} 0 0 0 0 0", i ? " " : "", i == 2 ? vx_top : 0.0);
+  }
+  return fmt::format(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody><geom name="floor" type="plane" size="2 2 0.1"/>{}</worldbody>
+  <keyframe><key qpos="{}" qvel="{}"/></keyframe>
+  <custom>{}</custom>
+</mujoco>)",
+                     bodies, qpos, qvel, tags);
+}
+
+class SettleTest : public testing::MujocoTest {};
+
+TEST_F(SettleTest, AStackStartsInItsStaticEquilibriumAndDoesNotDrop) {
+  SimulationOptions options;
+  options.settle = true;
+  Simulation& settled = MakeSimulation(Stack(0.0), options);
+  Simulation& placed = MakeSimulation(Stack(0.0));
+  ASSERT_TRUE(settled.settled());
+  EXPECT_EQ(settled.settled()->bodies, 3);
+  std::printf("%s\n", settled.settled()->Line().c_str());
+  // statics: each interface carries the weight above it on four corners,
+  // F = k W / 4 at d = (F / K)^(2/3); the cube k sits on k interfaces
+  double z = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double depth = std::pow((3 - i) * kGravity / 4 / kStiffness, 2.0 / 3.0);
+    z += 2 * kHalf - depth;
+    // what is left of the relaxation: below 1e-6 of the depth
+    EXPECT_NEAR(settled.data()->qpos[7 * i + 2], z - kHalf, 1e-6 * depth) << i;
+  }
+  // the first 0.1 s: no drop (measured: the placed stack's top cube sinks by
+  // 2.7e-4 m and rings; settled, it moves 4.5e-11 m, the relaxation's
+  // residual kSettleResidual ~1e-6 g acting for 0.1 s gives < 5e-8 m)
+  constexpr double kNoDrop = 1e-8;  // m
+  const double z_settled = settled.data()->qpos[16];
+  const double z_placed = placed.data()->qpos[16];
+  double drop_settled = 0, drop_placed = 0;
+  while (settled.time() < 0.1) {
+    settled.Step();
+    placed.Step();
+    drop_settled = std::max(drop_settled, std::abs(settled.data()->qpos[16] - z_settled));
+    drop_placed = std::max(drop_placed, std::abs(placed.data()->qpos[16] - z_placed));
+  }
+  std::printf("top cube's largest move in 0.1 s: settled %.3g m, placed %.3g m\n", drop_settled,
+              drop_placed);
+  EXPECT_LT(drop_settled, kNoDrop);
+  EXPECT_GT(drop_placed, 1e4 * kNoDrop);
+}
+
+TEST_F(SettleTest, OnlyPositionsMoveAndResetKeepsThem) {
+  SimulationOptions options;
+  options.settle = true;
+  Simulation& sim = MakeSimulation(Stack(0.3), options);
+  EXPECT_EQ(sim.time(), 0.0);
+  EXPECT_EQ(sim.data()->qvel[12], 0.3);  // the scene's velocity
+  const double z = sim.data()->qpos[16];
+  EXPECT_LT(z, 5 * kHalf);
+  sim.Step();
+  sim.Reset();
+  EXPECT_EQ(sim.data()->qpos[16], z);
+  EXPECT_EQ(sim.data()->qvel[12], 0.3);
+  EXPECT_TRUE(sim.contacts().impacts().empty());  // the relaxation's memory is gone
+}
+
+TEST_F(SettleTest, NothingInContactMovesNothing) {
+  SimulationOptions options;
+  options.settle = true;
+  Simulation& sim = MakeSimulation(testing::DropXml("law=hertz stiffness=1e7", 1.0), options);
+  ASSERT_TRUE(sim.settled());
+  EXPECT_EQ(sim.settled()->bodies, 0);
+  EXPECT_EQ(sim.settled()->Line(), "settle: no body touches another at t = 0: nothing moved");
+  EXPECT_EQ(sim.data()->qpos[2], 0.1001);
+}
+
+TEST_F(SettleTest, ABlockThatWouldSlideIsRefusedInOneLine) {
+  // tan 0.6 > mu 0.5: no friction holds it
+  const std::string xml = testing::Incline(false, 0.6, "mu=0.5");
+  SimulationOptions options;
+  options.settle = true;
+  try {
+    MakeSimulation(xml, options);
+    ADD_FAILURE() << "settled on a slope steeper than its friction";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    std::printf("%s\n", what.c_str());
+    EXPECT_NE(what.find("--settle: no static equilibrium"), std::string::npos) << what;
+    EXPECT_NE(what.find("slide"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  // tan 0.3 < mu 0.5: it holds, and settles
+  Simulation& held = MakeSimulation(testing::Incline(false, 0.3, "mu=0.5"), options);
+  EXPECT_EQ(held.settled()->bodies, 1);
+}
+
+}  // namespace
+}  // namespace contactlaws
