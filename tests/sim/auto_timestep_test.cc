@@ -318,6 +318,7 @@ TEST(AutoTimestepTest, AnUntaggedPairHoldsTheStepDownOnlyWhileNear) {
   EXPECT_EQ(first_step(-0.20001, 1.0, 1.0), kSceneStep);
   // b resting on the floor (within MuJoCo's contact): the scene's step
   EXPECT_EQ(first_step(2.0, 0.1, 0.0), kSceneStep);
+}
 
 // A 2 cm die (10 g) resting on a face of a table (issue 22, item 2:
 // lankarani-nikravesh e 0.6, K 2e8, coulomb mu 0.4, RK4), set spinning at
