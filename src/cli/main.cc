@@ -90,7 +90,7 @@ void AddSweep(CLI::App* cmd, SweepArgs* args, const char* restitution_help) {
 // Ctrl-C (or SIGTERM): the runs stop after their current step and the
 // finished ones are written. The handler resets itself, so a second Ctrl-C
 // ends the program at once.
-extern "C" void OnStopSignal(int) { RequestStop(); }
+extern "C" void OnStopSignal(int) { stop_signal.store(true, std::memory_order_relaxed); }
 
 void InstallStopHandler() {
   struct sigaction action = {};

@@ -95,6 +95,7 @@ int RenderCommand(const RenderArgs& args) {
   advance.duration = plan.common.duration;
   advance.sample_rate = plan.fps * plan.slowmo;
   advance.auto_timestep = plan.common.auto_timestep;
+  advance.stop = &stop_signal;
   const auto start = std::chrono::steady_clock::now();
   const AdvanceResult result = Advance(sim.get(), advance, [&](const std::vector<double>&) {
     const auto before = std::chrono::steady_clock::now();

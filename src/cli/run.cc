@@ -73,6 +73,7 @@ int RunCommand(const RunArgs& args) {
   advance.duration = common.duration;
   advance.sample_rate = trajectory ? common.sample_rate : 0.0;
   advance.auto_timestep = auto_timestep;
+  advance.stop = &stop_signal;
   const AdvanceResult result =
       Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
   if (result.status == AdvanceResult::Status::kInterrupted) {

@@ -235,7 +235,8 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
         deliver(k, out);
         progress.Finished(k, Describe(specs[k]));
       },
-      StopRequested, [&](int k) { return NotRun(specs[k]); });
+      [&] { return sweep.advance.stop && sweep.advance.stop->load(std::memory_order_relaxed); },
+      [&](int k) { return NotRun(specs[k]); });
   progress.Done();
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");

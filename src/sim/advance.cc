@@ -11,9 +11,7 @@
 namespace contactlaws {
 namespace {
 
-// Set by RequestStop (a signal handler among others): lock-free, so
-// async-signal-safe, and read once per step by every running Advance.
-std::atomic<bool> stop_requested{false};
+// AdvanceOptions::stop may be set from a signal handler
 static_assert(std::atomic<bool>::is_always_lock_free);
 
 // Watches the ledger's total of an undriven scene.
@@ -59,10 +57,6 @@ class EnergyWatch {
 
 }  // namespace
 
-void RequestStop() { stop_requested.store(true, std::memory_order_relaxed); }
-
-bool StopRequested() { return stop_requested.load(std::memory_order_relaxed); }
-
 AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
                       const std::function<void(const std::vector<double>&)>& on_row) {
   std::optional<AutoTimestep> stepper;
@@ -99,7 +93,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   }
   sample_if_due();
   while (sim->time() < options.duration - tolerance) {
-    if (StopRequested()) {
+    if (options.stop && options.stop->load(std::memory_order_relaxed)) {
       result.status = AdvanceResult::Status::kInterrupted;
       break;
     }
