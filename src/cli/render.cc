@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/programs.h"
 #include "cli/report.h"
@@ -74,7 +75,7 @@ int RenderCommand(const RenderArgs& args) {
                                  ? ""
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
-  UniqueModel model = LoadModelFile(args.scene);
+  UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
   render::FrameRenderer::Prepare(model.get(), plan.frame);
   if (plan.frame.camera) render::FindCamera(model.get(), args.scene, *plan.frame.camera);
   const Scene scene(args.scene, std::move(model));

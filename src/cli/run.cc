@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
@@ -53,7 +54,7 @@ int RunCommand(const RunArgs& args) {
   SimulationOptions options = common.simulation;
   const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
-  const Scene scene(args.scene);
+  const Scene scene(args.scene, LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);

@@ -121,7 +121,7 @@ void FrameRenderer::Draw(Simulation* sim, std::vector<unsigned char>* rgb) {
   const mjModel* m = sim->model();
   mjData* d = sim->data();
   const int ncon = d->ncon;
-  AppendVisibleContacts(sim->contacts(), &overflow_);
+  AppendVisibleContacts(sim->contacts(), d, &overflow_);
   mjv_updateScene(m, d, &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
   d->ncon = ncon;  // the points are drawn: the data as the step left it
   AddForceArrows(*sim);

@@ -100,7 +100,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     if (stepper) {
       double until = options.duration - sim->time();
       if (sampling) until = std::min(until, next * period - sim->time());
-      sim->Step(stepper->Next(until));
+      sim->Step(stepper->Next(sim->data(), until));
     } else {
       sim->Step();
     }

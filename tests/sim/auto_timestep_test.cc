@@ -86,7 +86,7 @@ TEST(AutoTimestepTest, TheStepShrinksOnApproachAndIsFineInContact) {
   double in_contact = 0;  // largest step taken while in contact
   double before_touch = 0;
   while (sim->contacts().impacts().empty() || sim->contacts().impacts()[0].open) {
-    const double h = stepper.Next(1.0);
+    const double h = stepper.Next(d, 1.0);
     largest = std::max(largest, h);
     const bool touching = !sim->contacts().latest().empty();
     if (touching) in_contact = std::max(in_contact, h);
@@ -130,7 +130,7 @@ TEST(AutoTimestepTest, APairInContactWithManyPointsDoesNotHideAnApproachingPair)
   AutoTimestep stepper(sim.contacts());
   double first_ball_depth = 0;
   while (sim.time() < 0.1 && first_ball_depth == 0) {
-    sim.Step(stepper.Next(1.0));
+    sim.Step(stepper.Next(sim.data(), 1.0));
     first_ball_depth = sim.contacts().Reading(1).depth;
   }
   ASSERT_GT(sim.contacts().Reading(0).depth, 0) << "the box rests in contact";
@@ -185,7 +185,8 @@ double InclineDrift(const std::string& friction, std::optional<double> fixed_ste
   *largest_step = 0;
   for (const double end : {2.0, 3.0}) {
     while (sim->time() < end - 1e-9 && !sim->contacts().divergence()) {
-      const double step = stepper ? stepper->Next(end - sim->time()) : *fixed_step;
+      const double step =
+          stepper ? stepper->Next(sim->data(), end - sim->time()) : *fixed_step;
       if (end > 2.0) *largest_step = std::max(*largest_step, step);
       sim->Step(step);
     }
@@ -236,7 +237,7 @@ double RestingForce(std::optional<double> fixed_step, long* steps = nullptr,
   mj_forward(sim->model(), sim->data());
   constexpr double kEnd = 0.5;  // s: settled either way by 0.1 s
   while (sim->time() < kEnd - 1e-9 && !sim->contacts().divergence()) {
-    sim->Step(stepper ? stepper->Next(kEnd - sim->time()) : *fixed_step);
+    sim->Step(stepper ? stepper->Next(sim->data(), kEnd - sim->time()) : *fixed_step);
   }
   if (steps && stepper) *steps = stepper->steps();
   double force = 0;
