@@ -22,8 +22,8 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/mujoco_warnings.h"
 #include "contactlaws/contactlaws.h"
-#include "scene/model_cache.h"
 #include "sim/allocator.h"
 
 namespace contactlaws::cli {
@@ -318,8 +318,6 @@ int Main(int argc, char** argv) {
   InstallMujocoAllocator();  // fewer page faults at start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
-  // compiled scenes kept between runs (after the warning handler: it wraps it)
-  UseModelCache(ModelCacheDirectoryFromEnvironment());
   InstallStopHandler();
   const int status = Dispatch(commands);
   ReportOtherMujocoWarnings();
