@@ -30,6 +30,7 @@ void SizeArena(mjModel* m, const ContactModel& cm);
 // The scene at path (LoadModelFile) with its arena sized to its tags as the
 // overrides leave them, before any run shares it. A scene whose tags are
 // refused is left as MuJoCo made it: the run that reads them refuses it.
+// With CONTACTLAWS_ARENA=mujoco in the environment, MuJoCo's sizes stay.
 UniqueModel LoadSizedModel(const std::string& path, const Overrides& overrides);
 
 }  // namespace contactlaws::cli

@@ -24,7 +24,6 @@
 #include "cli/commands.h"
 #include "cli/mujoco_warnings.h"
 #include "contactlaws/contactlaws.h"
-#include "sim/allocator.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -315,7 +314,6 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
-  InstallMujocoAllocator();  // fewer page faults at start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
   InstallStopHandler();
