@@ -2,16 +2,14 @@
 # The start-up of `contactlaws run SCENE --duration 1e-5` against a bare MuJoCo
 # program that loads the scene and makes its data with MuJoCo's defaults
 # (tests/bench/bare_start.c): whole-process wall times of alternating runs,
-# medians, and their ratio (issue 15's goal: <= 0.5). The run is timed with
-# the compiled scene in the model cache (a warm-up run puts it there, in a
-# cache of its own under BUILD_DIR); then, alternating with the bare program
-# again, without the cache (CONTACTLAWS_MODEL_CACHE=off: MuJoCo compiles the
-# scene, as a first run does). CPU time (user + system) beside each: on a
-# loaded machine the wall time also counts the waits for a core. Each process
-# is started with posix_spawn (a vfork, not a copy of this Python's page
-# tables: subprocess.Popen added ~0.3 ms to every process, both sides), and
-# the floor is printed: an empty main linked to the run's libraries
-# (tests/bench/empty_start.cc), what no start-up of ours can go below.
+# medians, and their ratio; then the run with MuJoCo's own arena
+# (CONTACTLAWS_ARENA=mujoco) against the bare program again. CPU time (user +
+# system) beside each: on a loaded machine the wall time also counts the
+# waits for a core. Each process is started with posix_spawn (a vfork, not a
+# copy of this Python's page tables: subprocess.Popen added ~0.3 ms to every
+# process, both sides), and the floor is printed: an empty main linked to the
+# run's libraries (tests/bench/empty_start.cc), what no start-up of ours can
+# go below.
 #   scripts/startup_bench.sh [BUILD_DIR] [RUNS] [SCENE]
 set -eu
 cd "$(dirname "$0")/.."
@@ -21,16 +19,14 @@ scene=${3:-mjcf/bouncing_ball.xml}
 for bin in "$build/contactlaws" "$build/tests/bench/bare_start" "$build/tests/bench/empty_start"; do
   [ -x "$bin" ] || { echo "startup_bench.sh: $bin missing: build first (scripts/build.sh)" >&2; exit 2; }
 done
-XDG_CACHE_HOME="$(cd "$build" && pwd)/startup-bench-cache"
-export XDG_CACHE_HOME
 exec /usr/bin/python3 - "$build" "$runs" "$scene" <<'PY'
 import os, statistics, subprocess, sys, time
 build, runs, scene = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 run = [f"{build}/contactlaws", "run", scene, "--duration", "1e-5"]
 bare = [f"{build}/tests/bench/bare_start", scene]
 empty = [f"{build}/tests/bench/empty_start"]
-cached = dict(os.environ)
-uncached = dict(os.environ, CONTACTLAWS_MODEL_CACHE="off")
+sized = dict(os.environ)
+unsized = dict(os.environ, CONTACTLAWS_ARENA="mujoco")
 devnull = os.open(os.devnull, os.O_WRONLY)
 
 def alternate(commands):
@@ -55,16 +51,16 @@ def alternate(commands):
     first, second = list(commands)[:2]
     return w[first] / w[second], c[first] / c[second], w, c
 
-subprocess.run(run, check=True, stdout=subprocess.DEVNULL, env=cached)  # fills the cache
+subprocess.run(run, check=True, stdout=subprocess.DEVNULL, env=sized)  # warms the page cache
 ratio, cpu_ratio, w, c = alternate({
-    "contactlaws run --duration 1e-5": (run, cached),
-    "bare MuJoCo load + make data": (bare, cached),
-    "empty main, the same libraries": (empty, cached)})
+    "contactlaws run --duration 1e-5": (run, sized),
+    "bare MuJoCo load + make data": (bare, sized),
+    "empty main, the same libraries": (empty, sized)})
 print(f"ratio run / bare: {ratio:.3f} (goal <= 0.5) (CPU {cpu_ratio:.3f})")
 floor, base = w["empty main, the same libraries"], w["bare MuJoCo load + make data"]
 print(f"floor: the libraries alone / bare: {floor / base:.3f}"
       f" (CPU {c['empty main, the same libraries'] / c['bare MuJoCo load + make data']:.3f})")
-ratio, cpu_ratio, _, _ = alternate({"run, no model cache (first run)": (run, uncached),
-                                   "bare MuJoCo load + make data": (bare, cached)})
-print(f"ratio run without the model cache / bare: {ratio:.3f} (CPU {cpu_ratio:.3f})")
+ratio, cpu_ratio, _, _ = alternate({"run, MuJoCo's arena": (run, unsized),
+                                   "bare MuJoCo load + make data": (bare, sized)})
+print(f"ratio run with MuJoCo's arena / bare: {ratio:.3f} (CPU {cpu_ratio:.3f})")
 PY

@@ -11,7 +11,8 @@
 #             corpus and regressions, no libFuzzer)
 #   asan      build-asan/: the whole suite again under AddressSanitizer +
 #             UndefinedBehaviorSanitizer
-#   tsan      build-tsan/: hooks_test (threads) under ThreadSanitizer
+#   tsan      build-tsan/: hooks_test and shared_model_test (threads) under
+#             ThreadSanitizer
 #   fuzz      build-fuzz/: the libFuzzer target tag_fuzzer for about 60 s on a
 #             scratch copy of its corpus (only where clang and libFuzzer are)
 # libmujoco itself is not instrumented: the sanitizers see this project's code
@@ -84,10 +85,13 @@ asan() {
 tsan() {
   local flags="-fsanitize=thread -fno-omit-frame-pointer"
   configure_sanitized build-tsan "$(sanitizer_cxx)" "$flags" "$flags"
-  cmake --build build-tsan -j"$jobs" --target hooks_test
+  cmake --build build-tsan -j"$jobs" --target hooks_test shared_model_test
   # a report makes the test exit non-zero (exitcode=66), whatever gtest says
-  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:exitcode=66 \
-    build-tsan/tests/hooks_test
+  local test
+  for test in hooks_test shared_model_test; do
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:exitcode=66 \
+      "build-tsan/tests/$test"
+  done
 }
 
 fuzz() {

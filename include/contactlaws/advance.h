@@ -1,13 +1,14 @@
 // Copyright contactlaws authors.
 //
 // The stepping loop of a Simulation with its monitors: divergence after every
-// step, the energy ledger of an undriven scene, a stop request (Ctrl-C), and
-// the trajectory sampled on a fixed grid. What the command line, the
+// step, the energy ledger of an undriven scene, the run's stop flag (a
+// program's Ctrl-C), and the trajectory sampled on a fixed grid. What the command line, the
 // benchmarks and a user's program step with.
 
 #ifndef CONTACTLAWS_ADVANCE_H_
 #define CONTACTLAWS_ADVANCE_H_
 
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,6 +33,11 @@ struct AdvanceOptions {
   // on_row is called with the simulation itself at the row's time (a
   // renderer draws the data, not the row).
   bool steps_end_at_rows = false;
+  // This run's stop flag, or none: once *stop is true, Advance returns
+  // (kInterrupted) before its next step. Set it from another thread or a
+  // signal handler (std::atomic<bool> is lock-free there); it stops the runs
+  // given it, and no other.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // How a call of Advance ended.
@@ -39,7 +45,7 @@ struct AdvanceResult {
   enum class Status {
     kComplete,     // reached the duration (or the first episode's end)
     kDiverged,     // stopped at divergence (see divergence)
-    kInterrupted,  // stopped because StopRequested()
+    kInterrupted,  // stopped by AdvanceOptions::stop
   };
   Status status = Status::kComplete;
   std::optional<Divergence> divergence;
@@ -54,15 +60,10 @@ struct AdvanceResult {
 // Steps sim from its current time until options.duration (or the first
 // episode's end), calling on_row with Simulation::Sample() at every time
 // k / sample_rate on the way, t = 0 included. Stops at divergence (the rows
-// given so far are finite) and when a stop is requested. Checks the energy
+// given so far are finite) and when options.stop is set. Checks the energy
 // ledger of undriven scenes at every row and at the end.
 AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
                       const std::function<void(const std::vector<double>&)>& on_row);
-
-// Asks every Advance in the process to stop after its current step (safe to
-// call from a signal handler), and whether that was asked.
-void RequestStop();
-bool StopRequested();
 
 }  // namespace contactlaws
 

@@ -86,8 +86,9 @@
 // approach speed. A step ends at Next's `until` (the run's end; Advance
 // interpolates the trajectory's rows inside the steps).
 //
-// The model's opt.timestep is what mj_step uses: Step() sets it, so the model
-// must belong to this one mjData (Simulation copies its model).
+// The step chosen is the data's: ContactData::Step(timestep) steps with it
+// and keeps it in the data's options (ContactData::options), never in the
+// model, which data on other threads may share.
 
 #ifndef CONTACTLAWS_AUTO_TIMESTEP_H_
 #define CONTACTLAWS_AUTO_TIMESTEP_H_
@@ -163,15 +164,11 @@ class AutoTimestep {
   ~AutoTimestep();
   AutoTimestep(AutoTimestep&&) noexcept;
 
-  // The step to take from the data's current state (after mj_step or
-  // mj_forward), at most until (s, > 0). Computes the kinematics of the
-  // current state (mj_kinematics, mj_comPos, mj_comVel) when no pair is in
-  // contact.
-  double Next(double until);
-
-  // Next(until) set as m's timestep (m: the model of contacts' data, owned by
-  // it alone), then contacts->Step().
-  void Step(mjModel* m, ContactData* contacts, double until);
+  // The step to take from the current state of d, the contacts' data (after
+  // mj_step or mj_forward), at most until (s, > 0). Computes d's kinematics
+  // (mj_kinematics, mj_comPos, mj_comVel) when no pair is in contact.
+  // ContactData::Step(Next(d, until)) takes it.
+  double Next(mjData* d, double until);
 
   // Forget the previous step (after a reset).
   void Reset() { previous_ = 0; }
@@ -200,8 +197,8 @@ class AutoTimestep {
   // Rule 5's bound from the friction dampers of the points latest()[first, end)
   // (one pair's); infinite without friction.
   double FrictionLag(size_t first, size_t end);
-  // The bound of the flight step: the scene's own timestep when it has
-  // dynamics of its own, the accuracy's under Euler or implicit.
+  // The bound of the flight step: the data's timestep (options()) when the
+  // scene has dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;
   // The step pair p (out of contact) allows, from the current state: the
   // time to close a fraction of its gap, or the fine step when it is near
@@ -235,7 +232,7 @@ class AutoTimestep {
 
   const ContactData& contacts_;
   AutoTimestepOptions options_;
-  double flight_step_;  // s, FlightStep() of the model as it was given
+  double flight_step_;  // s, FlightStep() of the data's options as they were given
   // per pair: effective mass (kg, inf when neither body moves) and the
   // elastic contact duration at 1 m/s with its exponent of v
   std::vector<double> effective_mass_;

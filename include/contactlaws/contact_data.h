@@ -28,6 +28,15 @@
 // mj_resetData (the time going back) is noticed by the next BeforeStep, which
 // then forgets the per-contact memory; after any other jump of the state, call
 // Reset(). After each step, divergence() says whether the run can go on.
+//
+// One model, many data: the model is only read (mj_step takes a const
+// mjModel*), so data of one model step on as many threads. MuJoCo reads the
+// timestep and the integrator from m->opt, so the options a data is stepped
+// with are its own (options()): Step() gives mj_step a view of the model, a
+// copy of its header whose arrays are the model's, never written, and whose
+// opt is this data's. A step of a length of its own, Step(timestep), sets the
+// data's options, never the model's. The model must not change while data
+// use it.
 
 #ifndef CONTACTLAWS_CONTACT_DATA_H_
 #define CONTACTLAWS_CONTACT_DATA_H_
@@ -78,10 +87,23 @@ class ContactData {
   ContactData(const ContactData&) = delete;
   ContactData& operator=(const ContactData&) = delete;
 
-  // One accepted step: BeforeStep(); mj_step(m, d); AfterStep(). An mjData
-  // stepped with plain mj_step gets one MuJoCo warning (mju_warning) after a
-  // few steps: its contacts then have no memory.
+  // One accepted step: BeforeStep(); mj_step(model_view(), d); AfterStep().
+  // An mjData stepped with plain mj_step gets one MuJoCo warning
+  // (mju_warning) after a few steps: its contacts then have no memory.
   void Step();
+  // One step of the given length, s (> 0): it becomes this data's timestep.
+  void Step(double timestep);
+
+  // The options this data is stepped with: the model's when this object was
+  // made, then this data's own (its timestep, integrator, ...).
+  const mjOption& options() const { return view_.opt; }
+  mjOption& options() { return view_.opt; }
+
+  // The model as this data is stepped: the model's header with options(),
+  // its arrays the model's. Give it, not the model, to MuJoCo's functions on
+  // this data for its options to hold (mj_forward reads the timestep too:
+  // MuJoCo's soft constraints are never stiffer than two timesteps).
+  const mjModel* model_view() const { return &view_; }
 
   // Moves driven (mocap) bodies to their prescribed pose at d->time and arms
   // the capture of the step's first hook evaluation.
@@ -102,7 +124,8 @@ class ContactData {
   const std::optional<Divergence>& divergence() const { return divergence_; }
 
   const ContactModel& model() const { return model_; }
-  mjData* data() const { return d_; }
+  const mjData* data() const { return d_; }
+  mjData* data() { return d_; }
 
   // Every collision so far, one per pair from its first point touching to
   // its last point leaving (CollisionLog), in order of first touch.
@@ -167,6 +190,7 @@ class ContactData {
   const ContactModel& model_;
   const mjModel* m_;
   mjData* d_;
+  mjModel view_;  // m_'s header with this data's options: model_view()
 
   std::unique_ptr<mjContact[]> contacts_;  // narrowphase output, mjMAXCONPAIR
 

@@ -18,7 +18,6 @@
 #include "contactlaws/kinematics.h"
 #include "contactlaws/law.h"
 #include "contactlaws/model_io.h"
-#include "contactlaws/mujoco_warnings.h"
 #include "contactlaws/run_report.h"
 #include "contactlaws/settle.h"
 #include "contactlaws/simulation.h"

@@ -87,7 +87,8 @@ std::optional<LawKind> ParseLawName(std::string_view name);
 inline constexpr double kDefaultMinImpactVelocity = 1e-3;
 
 // Parameters of one law for one pair of geoms, validated once where parsed
-// (ValidateLawParams). Fields a law does not use are ignored by it.
+// (ValidateLawParams), with what follows from them resolved there too
+// (ResolveLawParams). Fields a law does not use are ignored by it.
 struct LawParams {
   LawKind kind = LawKind::kHertz;
   double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for the 1/e laws
@@ -98,7 +99,15 @@ struct LawParams {
   std::optional<double> dissipation;  // c, s/m, >= 0 (constant-dissipation family)
   double min_impact_velocity = kDefaultMinImpactVelocity;  // m/s, > 0
   bool allow_tension = false;     // keep F < 0 instead of clamping to 0
+  // a(e) of the hysteresis family, dimensionless: HysteresisCoefficient(kind,
+  // restitution), set by ResolveLawParams; EvaluateLaw reads it.
+  double hysteresis = 0.0;
 };
+
+// Resolves what follows from the fields set by hand (hysteresis from kind and
+// restitution): call it after setting them and before EvaluateLaw.
+// ContactModel does it for every pair it makes.
+void ResolveLawParams(LawParams* params);
 
 // The kinematic state of one contact point, in the convention above.
 struct ContactState {
@@ -130,7 +139,8 @@ struct ParamError {
 // Checks the fields kind uses; nullopt when valid.
 std::optional<ParamError> ValidateLawParams(const LawParams& params);
 
-// The contact force of params.kind at state. Pure; params must be valid.
+// The contact force of params.kind at state. Pure; params must be valid and
+// resolved (ResolveLawParams).
 ContactForce EvaluateLaw(const LawParams& params, const ContactState& state);
 
 // Elastic energy stored at depth d (J): K d^(n+1)/(n+1), or k d^2/2.

@@ -76,26 +76,36 @@ struct SimulationOptions {
   bool settle = false;
 };
 
+// One run of a model: its data, its laws (the tags with the run's
+// overrides) and its options. The model is only read: many Simulations (a
+// Scene's) share one, on as many threads; the run's timestep and integrator
+// (SimulationOptions, the auto timestep's steps) are the data's options
+// (ContactData::options), never written into the model.
 class Simulation {
  public:
-  // Takes the model, reads its tags (throws Error naming source), makes the
+  // Shares the model, reads its tags (throws Error naming source), makes the
   // data and resets it to keyframe 0 when the scene has one.
+  Simulation(std::shared_ptr<const mjModel> model, std::string source,
+             const SimulationOptions& options = {});
+  // Takes the model, as above.
   Simulation(UniqueModel model, std::string source, const SimulationOptions& options = {});
 
   // One step with the laws active.
   void Step() { contacts_->Step(); }
-  // One step of the given length, s (> 0): it becomes the model's timestep.
-  void Step(double timestep) {
-    model_->opt.timestep = timestep;
-    contacts_->Step();
-  }
+  // One step of the given length, s (> 0): it becomes this run's timestep.
+  void Step(double timestep) { contacts_->Step(timestep); }
 
   // Back to the initial state (keyframe 0 or the model's qpos0).
   void Reset();
 
   double time() const { return data_->time; }
-  const mjModel* model() const { return model_.get(); }
-  mjData* data() const { return data_.get(); }
+  // The model as this run steps it: the shared model's arrays with this run's
+  // options (ContactData::model_view). Give it to MuJoCo with data().
+  const mjModel* model() const { return contacts_->model_view(); }
+  // The model itself, shared with the other runs of its scene.
+  const std::shared_ptr<const mjModel>& shared_model() const { return model_; }
+  const mjData* data() const { return data_.get(); }
+  mjData* data() { return data_.get(); }
   const ContactModel& contact_model() const { return *contact_model_; }
   const ContactData& contacts() const { return *contacts_; }
   const std::string& source() const { return source_; }
@@ -151,7 +161,7 @@ class Simulation {
   // The bodies and joints whose columns the trajectory has.
   void RecordBodiesAndJoints();
 
-  UniqueModel model_;
+  std::shared_ptr<const mjModel> model_;
   std::string source_;
   std::unique_ptr<ContactModel> contact_model_;
   UniqueData data_;
@@ -164,7 +174,8 @@ class Simulation {
   std::vector<mjtNum> settled_qpos_;  // the initial positions after settle
 };
 
-// An MJCF scene, parsed once; every simulation gets its own copy of the model.
+// An MJCF scene, parsed once; its simulations share its model, which nothing
+// writes.
 class Scene {
  public:
   explicit Scene(std::string path);  // throws Error "PATH: ..."
@@ -174,13 +185,13 @@ class Scene {
   const std::string& path() const { return path_; }
   const mjModel* model() const { return model_.get(); }
 
-  // A fresh simulation; throws Error when the tags (with the overrides) are
-  // refused.
+  // A fresh simulation of the shared model; throws Error when the tags (with
+  // the overrides) are refused.
   std::unique_ptr<Simulation> Make(const SimulationOptions& options) const;
 
  private:
   std::string path_;
-  UniqueModel model_;
+  std::shared_ptr<const mjModel> model_;
 };
 
 }  // namespace contactlaws

@@ -22,11 +22,12 @@
 namespace contactlaws {
 
 // Appends each contact point of contacts.latest() (the tagged points of the
-// latest hook evaluation, depth > 0) to contacts.data()->contact: geoms of
-// its pair, pos, dist = -depth, frame = the normal from geom1 to geom2 and
-// two tangents, dim 1, exclude 1, efc_address -1. Returns how many were
-// appended. Never writes beyond m->nconmax. Allocates nothing.
-int AppendVisibleContacts(const ContactData& contacts, VisibleContactsOverflow* overflow);
+// latest hook evaluation, depth > 0) to d->contact, d being contacts' data:
+// geoms of its pair, pos, dist = -depth, frame = the normal from geom1 to
+// geom2 and two tangents, dim 1, exclude 1, efc_address -1. Returns how many
+// were appended. Never writes beyond m->nconmax. Allocates nothing.
+int AppendVisibleContacts(const ContactData& contacts, mjData* d,
+                          VisibleContactsOverflow* overflow);
 
 }  // namespace contactlaws
 

@@ -6,6 +6,7 @@
 #ifndef CONTACTLAWS_CLI_COMMANDS_H_
 #define CONTACTLAWS_CLI_COMMANDS_H_
 
+#include <atomic>
 #include <optional>
 #include <string>
 
@@ -18,6 +19,11 @@ namespace contactlaws::cli {
 inline constexpr int kExitRefused = 2;     // bad input: nothing was run
 inline constexpr int kExitIncomplete = 3;  // a run did not give what was asked
 inline constexpr int kExitInterrupted = 130;  // Ctrl-C (128 + SIGINT), as shells do
+
+// The program's stop flag: set by Ctrl-C or SIGTERM (main.cc), given to every
+// run the commands start (AdvanceOptions::stop), which then stop after their
+// current step; a sweep starts no more runs.
+inline std::atomic<bool> stop_signal{false};
 
 struct RunArgs : CommonArgs {
   std::optional<std::string> law;

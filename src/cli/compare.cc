@@ -178,6 +178,7 @@ int CompareCommand(const SweepArgs& args) {
   sweep.advance.duration = in.common.duration;
   sweep.advance.sample_rate = in.common.sample_rate;
   sweep.advance.auto_timestep = in.common.auto_timestep;
+  sweep.advance.stop = &stop_signal;
   sweep.record = true;
   sweep.impact_rows = args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions;
   sweep.jobs = in.jobs;

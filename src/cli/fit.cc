@@ -138,7 +138,7 @@ int FitCommand(const FitArgs& args) {
         read_by_any[i] = true;
       }
       CheckFit(scene, o, f.parameters);
-      o.should_stop = StopRequested;
+      o.should_stop = [] { return stop_signal.load(); };
       f.law = law;
       f.friction = friction;
       f.label = CombinationName(scene, o.simulation.overrides);

@@ -24,9 +24,8 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/mujoco_warnings.h"
 #include "contactlaws/contactlaws.h"
-#include "scene/model_cache.h"
-#include "sim/allocator.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -95,7 +94,7 @@ void AddSweep(CLI::App* cmd, SweepArgs* args, const char* restitution_help) {
 // Ctrl-C (or SIGTERM): the runs stop after their current step and the
 // finished ones are written. The handler resets itself, so a second Ctrl-C
 // ends the program at once.
-extern "C" void OnStopSignal(int) { RequestStop(); }
+extern "C" void OnStopSignal(int) { stop_signal.store(true, std::memory_order_relaxed); }
 
 void InstallStopHandler() {
   struct sigaction action = {};
@@ -402,11 +401,8 @@ int Main(int argc, char** argv) {
     return kExitRefused;
   }
 
-  InstallMujocoAllocator();  // fewer page faults at start-up (issue 15)
   // MuJoCo would print its warnings to stdout (and MUJOCO_LOG.TXT)
   mju_user_warning = RecordMujocoWarning;
-  // compiled scenes kept between runs (after the warning handler: it wraps it)
-  UseModelCache(ModelCacheDirectoryFromEnvironment());
   InstallStopHandler();
   const int status = Dispatch(commands);
   ReportOtherMujocoWarnings();

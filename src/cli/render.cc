@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/programs.h"
 #include "cli/report.h"
@@ -91,7 +92,7 @@ int RenderCommand(const RenderArgs& args) {
                                  ? ""
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
-  UniqueModel model = LoadModelFile(args.scene);
+  UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
   render::FrameRenderer::Prepare(model.get(), plan.frame);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
   const Scene scene(args.scene, std::move(model));
@@ -107,6 +108,7 @@ int RenderCommand(const RenderArgs& args) {
   advance.sample_rate = plan.fps * plan.slowmo;
   advance.auto_timestep = plan.common.auto_timestep;
   advance.steps_end_at_rows = true;  // each frame draws the data at its time
+  advance.stop = &stop_signal;
   const auto start = std::chrono::steady_clock::now();
   // the tracking camera's first pass over the run, on a simulation of its own
   render::TrackedRun tracked;

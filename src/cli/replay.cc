@@ -15,7 +15,7 @@ int ReplayCommand(const ReplayArgs& args) {
   Metric metric = Metric::kEq;
   ReplayOptions options = ParseReplayOptions(args, scene, &metric);
   options.keep_trajectories = args.output.has_value();
-  options.should_stop = StopRequested;
+  options.should_stop = [] { return stop_signal.load(); };
 
   // the outputs opened before the runs: an unwritable folder fails now
   std::optional<CsvFile> scores, simulated;

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "cli/mujoco_warnings.h"
+
 namespace contactlaws::cli {
 
 void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {

@@ -88,6 +88,7 @@ int RestitutionCommand(const SweepArgs& args) {
   sweep.advance.duration = in.common.duration;
   sweep.advance.until_first_episode = true;
   sweep.advance.auto_timestep = in.common.auto_timestep;
+  sweep.advance.stop = &stop_signal;
   sweep.jobs = in.jobs;
   sweep.quiet = args.quiet;
   int status = Sweep(

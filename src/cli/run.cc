@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
@@ -53,7 +54,7 @@ int RunCommand(const RunArgs& args) {
   SimulationOptions options = common.simulation;
   const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
-  const Scene scene(args.scene);
+  const Scene scene(args.scene, LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   ReportSettle(*sim);
   std::set<std::string> warned;
@@ -74,6 +75,7 @@ int RunCommand(const RunArgs& args) {
   advance.duration = common.duration;
   advance.sample_rate = trajectory ? common.sample_rate : 0.0;
   advance.auto_timestep = auto_timestep;
+  advance.stop = &stop_signal;
   const AdvanceResult result =
       Advance(sim.get(), advance, [&](const std::vector<double>& row) { trajectory->Row(row); });
   if (result.status == AdvanceResult::Status::kInterrupted) {

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
@@ -156,7 +157,8 @@ SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restituti
     in.restitutions =
         ParseRestitutionList("--restitution", args.restitution.value_or(default_restitutions));
   }
-  in.scene = std::make_unique<Scene>(args.scene);
+  in.scene = std::make_unique<Scene>(args.scene,
+                                     LoadSizedModel(args.scene, in.common.simulation.overrides));
   if (args.laws == "all") LeaveOutLawsMissingADissipation(&in);
   return in;
 }
@@ -235,7 +237,8 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
         deliver(k, out);
         progress.Finished(k, Describe(specs[k]));
       },
-      StopRequested, [&](int k) { return NotRun(specs[k]); });
+      [&] { return sweep.advance.stop && sweep.advance.stop->load(std::memory_order_relaxed); },
+      [&](int k) { return NotRun(specs[k]); });
   progress.Done();
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");

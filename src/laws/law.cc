@@ -49,6 +49,10 @@ double HysteresisCoefficient(LawKind kind, double restitution) {
   return law.hysteresis ? law.hysteresis(restitution) : 0.0;
 }
 
+void ResolveLawParams(LawParams* params) {
+  params->hysteresis = HysteresisCoefficient(params->kind, params->restitution);
+}
+
 namespace {
 
 // A finite value in [lo, hi] (open ends where asked).
@@ -138,9 +142,8 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
       break;
     }
     case LawFamily::kHysteresis: {
-      const double a = HysteresisCoefficient(p.kind, p.restitution);
       f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
-      f.total = HysteresisForce(p.stiffness, p.exponent, a, s.depth, s.depth_rate,
+      f.total = HysteresisForce(p.stiffness, p.exponent, p.hysteresis, s.depth, s.depth_rate,
                                 s.impact_velocity);
       break;
     }

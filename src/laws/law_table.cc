@@ -56,19 +56,11 @@ double HuGuo(double e) { return 3.0 * (1.0 - e) / (2.0 * e); }
 // at 0.1); slope 1 at e = 1 under-damps (0.9310 at 0.9).
 double GharibHurmuzlu(double e) { return (1.0 - e) / e; }
 
-// The root of a (1 + e) = ln((1 + a) / (1 - a e)): first rebound e itself,
-// neglecting gravity during the contact (hysteresis.h, docs/laws.md). The hook
-// asks for a(e) at every evaluation, with the same e: the last root is kept per
-// thread, so the bisection (about 60 halvings) runs once per e and thread.
-double Exact(double e) {
-  thread_local double last_e = NAN;
-  thread_local double last_a = NAN;
-  if (e != last_e) {
-    last_a = ExactCoefficient(e);
-    last_e = e;
-  }
-  return last_a;
-}
+// The law `exact`: a(e) is the root of a (1 + e) = ln((1 + a) / (1 - a e)),
+// first rebound e itself, neglecting gravity during the contact
+// (ExactCoefficient, hysteresis.h, docs/laws.md). Its bisection (about 60
+// halvings) runs once per pair, where the parameters are made
+// (ResolveLawParams), not at each evaluation.
 
 constexpr char kHertzFamilyKeys[] =
     "stiffness K (N/m^n) > 0, exponent n in [1, 3], restitution e in [0, 1]";
@@ -135,7 +127,7 @@ const std::vector<LawInfo>& Laws() {
        "F = K d^n (1 + a d'/v0), a (1 + e) = ln((1 + a)/(1 - a e))", kHertzFamilyKeysNoZero,
        "the rebound relation solved for a (docs/laws.md); its phase-plane solution: "
        "D. W. Marhefka, D. E. Orin, IEEE Trans. Syst. Man Cybern. A 29:566-572 (1999)",
-       Exact, kRefusesZero},
+       ExactCoefficient, kRefusesZero},
       {"hunt-crossley-constant", LawFamily::kConstantDissipation, "F = K d^n (1 + c d')",
        "stiffness K (N/m^n) > 0, exponent n in [1, 3], dissipation c (s/m) >= 0",
        "K. H. Hunt, F. R. E. Crossley, J. Appl. Mech. 42:440-445 (1975), c a material "

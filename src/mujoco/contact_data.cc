@@ -40,6 +40,7 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
     : model_(model),
       m_(model.model()),
       d_(d),
+      view_(*m_),
       episodes_(PointsPerPair(model), static_cast<int>(model.tags().size())),
       collisions_(static_cast<int>(model.pairs().size()), static_cast<int>(model.tags().size())) {
   contacts_ = MakeContactBuffer();
@@ -57,8 +58,13 @@ ContactData::~ContactData() { UnregisterContactData(d_); }
 
 void ContactData::Step() {
   BeforeStep();
-  mj_step(m_, d_);
+  mj_step(&view_, d_);
   AfterStep();
+}
+
+void ContactData::Step(double timestep) {
+  view_.opt.timestep = timestep;
+  Step();
 }
 
 void ContactData::BeforeStep() {
@@ -294,7 +300,7 @@ void ContactData::CheckDivergence() {
 
 void ContactData::AfterStep() {
   capture_armed_ = false;
-  AppendVisibleContacts(*this, &visible_overflow_);
+  AppendVisibleContacts(*this, d_, &visible_overflow_);
   CheckDivergence();
   const bool commit = has_capture_ && !divergence_;
   has_capture_ = false;

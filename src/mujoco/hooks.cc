@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "contactlaws/contact_data.h"
+#include "contactlaws/contact_model.h"
 #include "contactlaws/error.h"
 
 namespace contactlaws {
@@ -51,8 +52,9 @@ ContactData* Lookup(const mjModel* m, const mjData* d) {
     lookup_cache.contact_data = found == registry.data.end() ? nullptr : found->second;
     lookup_cache.generation = registry.generation.load(std::memory_order_acquire);
   }
+  // d's ContactData when m is its model, or the view it steps with
   ContactData* cd = lookup_cache.contact_data;
-  return cd && cd->model().model() == m ? cd : nullptr;
+  return cd && (cd->model().model() == m || cd->model_view() == m) ? cd : nullptr;
 }
 
 // Gives back the callbacks found before ours, unless somebody replaced ours
@@ -137,6 +139,17 @@ int DefaultContactFilter(const mjModel* m, int g1, int g2) {
       !(m->opt.disableflags & mjDSBL_FILTERPARENT) && weld1 && weld2;
   if (filter_parent && (weld1 == parent2 || weld2 == parent1)) return 1;
   return 0;
+}
+
+bool HasUntaggedContacts(const ContactModel& cm) {
+  const mjModel* m = cm.model();
+  if (m->npair > 0) return true;
+  for (int g1 = 0; g1 < m->ngeom; ++g1) {
+    for (int g2 = g1 + 1; g2 < m->ngeom; ++g2) {
+      if (!DefaultContactFilter(m, g1, g2) && cm.FindPair(g1, g2) < 0) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace contactlaws

@@ -45,9 +45,9 @@ void FillContact(const GeomPair& pair, const PointEvaluation& point, mjContact* 
 
 }  // namespace
 
-int AppendVisibleContacts(const ContactData& contacts, VisibleContactsOverflow* overflow) {
+int AppendVisibleContacts(const ContactData& contacts, mjData* d,
+                          VisibleContactsOverflow* overflow) {
   const mjModel* m = contacts.model().model();
-  mjData* d = contacts.data();
   const std::vector<GeomPair>& pairs = contacts.model().pairs();
   int appended = 0;
   for (const PointEvaluation& point : contacts.latest()) {

@@ -38,9 +38,10 @@ inline constexpr const char* kRestitutionVariable = "CONTACTLAWS_RESTITUTION";
 inline constexpr const char* kFrictionVariable = "CONTACTLAWS_FRICTION";
 inline constexpr const char* kMuVariable = "CONTACTLAWS_MU";
 // `--accuracy TOL` of run: each managed mjData steps with the contact-aware
-// timestep (AutoTimestep), which the plugin writes into the model's
-// opt.timestep before each of that data's steps. Without it the model's own
-// timestep is left alone.
+// timestep (AutoTimestep): MuJoCo is given the data's view of the model
+// (ContactData::model_view), the program's options with the step chosen, and
+// the program's model is not written. Without it the program's model steps
+// as given.
 inline constexpr const char* kAccuracyVariable = "CONTACTLAWS_ACCURACY";
 
 // The longest step the plugin's auto timestep takes, s: a frame of a 60 Hz

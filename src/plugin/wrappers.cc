@@ -65,14 +65,21 @@ ManagedData* Managed(const Nesting& nesting, const mjData* d) {
   return nesting.outermost() ? Plugin::Get().Find(d) : nullptr;
 }
 
-// Before a step of managed: with CONTACTLAWS_ACCURACY, the auto timestep
-// written into the model (the data's own model: MuJoCo made it writable; the
-// program passes it as const).
-void Begin(const mjModel* m, ManagedData* managed) {
+// Before a step of managed (d's): with CONTACTLAWS_ACCURACY, the program's
+// options (m's) with the auto timestep as the data's own.
+void Begin(const mjModel* m, mjData* d, ManagedData* managed) {
   if (managed->auto_step) {
-    const_cast<mjModel*>(m)->opt.timestep = managed->auto_step->Next(kPluginMaxStep);
+    mjOption& options = managed->contacts.options();
+    options = m->opt;
+    options.timestep = managed->auto_step->Next(d, kPluginMaxStep);
   }
   managed->contacts.BeforeStep();
+}
+
+// What MuJoCo steps d with: the data's view of m with the auto timestep, else
+// the program's m as given.
+const mjModel* Stepped(const mjModel* m, const ManagedData* managed) {
+  return managed && managed->auto_step ? managed->contacts.model_view() : m;
 }
 
 void Finish(ManagedData* managed) {
@@ -90,6 +97,7 @@ using contactlaws::plugin::ManagedData;
 using contactlaws::plugin::Nesting;
 using contactlaws::plugin::Plugin;
 using contactlaws::plugin::Real;
+using contactlaws::plugin::Stepped;
 
 extern "C" {
 
@@ -135,8 +143,8 @@ void mj_step(const mjModel* m, mjData* d) {
   CONTACTLAWS_REAL(mj_step);
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
-  if (managed) Begin(m, managed);
-  real(m, d);
+  if (managed) Begin(m, d, managed);
+  real(Stepped(m, managed), d);
   if (managed) Finish(managed);
 }
 
@@ -144,15 +152,15 @@ void mj_step1(const mjModel* m, mjData* d) {
   CONTACTLAWS_REAL(mj_step1);
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
-  if (managed) Begin(m, managed);
-  real(m, d);
+  if (managed) Begin(m, d, managed);
+  real(Stepped(m, managed), d);
 }
 
 void mj_step2(const mjModel* m, mjData* d) {
   CONTACTLAWS_REAL(mj_step2);
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
-  real(m, d);
+  real(Stepped(m, managed), d);
   if (managed) Finish(managed);
 }
 
@@ -161,7 +169,7 @@ void mj_forward(const mjModel* m, mjData* d) {
   Nesting nesting;
   ManagedData* managed = Managed(nesting, d);
   real(m, d);
-  if (managed) AppendVisibleContacts(managed->contacts, &managed->overflow);
+  if (managed) AppendVisibleContacts(managed->contacts, d, &managed->overflow);
 }
 
 }  // extern "C"

@@ -296,6 +296,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       if (const std::optional<ParamError> e = ValidateLawParams(pair.params)) {
         resolve.Fail(fmt::format("{}={} {}", e->key, e->value, e->requirement));
       }
+      ResolveLawParams(&pair.params);
       AddFriction(g1, g2, spec, pair_name, resolve, &pair);
 
       slot_count_ += pair.slots;

@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "scene/model_cache.h"
 
 namespace contactlaws {
 
@@ -27,18 +26,6 @@ std::string OneLine(const char* text) {
   return s;
 }
 
-// MuJoCo's compile of path; *clean: without an error message or warning.
-UniqueModel Compile(const std::string& path, bool* clean) {
-  const long warnings = model_cache::WarningsSeen();
-  char error[1000] = "";
-  UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
-  if (!m) {
-    throw Error(fmt::format("{}: {}", path, error[0] ? OneLine(error) : "MuJoCo could not load it"));
-  }
-  *clean = error[0] == 0 && model_cache::WarningsSeen() == warnings;
-  return m;
-}
-
 }  // namespace
 
 UniqueModel LoadModelFile(const std::string& path) {
@@ -48,26 +35,12 @@ UniqueModel LoadModelFile(const std::string& path) {
   if (S_ISDIR(st.st_mode)) throw Error(fmt::format("{}: is a directory, not an MJCF file", path));
   const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw Error(fmt::format("{}: cannot be read", path));
-  // the compiled scene (scene/model_cache.h), else MuJoCo's compile, saved
-  // when clean and made from the bytes of the key
-  std::string xml;
-  const bool cacheable = model_cache::On() && model_cache::ReadAll(fd, &xml);
   close(fd);
-  bool clean = false;
-  if (!cacheable) {
-    model_cache::SetOutcome(model_cache::On() ? ModelCacheOutcome::kNotCached
-                                              : ModelCacheOutcome::kOff);
-    return Compile(path, &clean);
+  char error[1000] = "";
+  UniqueModel m(mj_loadXML(path.c_str(), nullptr, error, sizeof(error)));
+  if (!m) {
+    throw Error(fmt::format("{}: {}", path, error[0] ? OneLine(error) : "MuJoCo could not load it"));
   }
-  if (UniqueModel cached = model_cache::Load(xml)) {
-    model_cache::SetOutcome(ModelCacheOutcome::kLoaded);
-    return cached;
-  }
-  UniqueModel m = Compile(path, &clean);
-  std::string again;
-  const bool saved = clean && model_cache::ReadFile(path, &again) && again == xml &&
-                     model_cache::Save(xml, m.get());
-  model_cache::SetOutcome(saved ? ModelCacheOutcome::kSaved : ModelCacheOutcome::kNotCached);
   return m;
 }
 

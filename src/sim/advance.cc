@@ -13,9 +13,7 @@
 namespace contactlaws {
 namespace {
 
-// Set by RequestStop (a signal handler among others): lock-free, so
-// async-signal-safe, and read once per step by every running Advance.
-std::atomic<bool> stop_requested{false};
+// AdvanceOptions::stop may be set from a signal handler
 static_assert(std::atomic<bool>::is_always_lock_free);
 
 // Watches the ledger's total of an undriven scene.
@@ -60,10 +58,6 @@ class EnergyWatch {
 };
 
 }  // namespace
-
-void RequestStop() { stop_requested.store(true, std::memory_order_relaxed); }
-
-bool StopRequested() { return stop_requested.load(std::memory_order_relaxed); }
 
 AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
                       const std::function<void(const std::vector<double>&)>& on_row) {
@@ -114,14 +108,14 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   }
   sample_if_due();
   while (sim->time() < options.duration - tolerance) {
-    if (StopRequested()) {
+    if (options.stop && options.stop->load(std::memory_order_relaxed)) {
       result.status = AdvanceResult::Status::kInterrupted;
       break;
     }
     if (stepper) {
       double until = options.duration - sim->time();
       if (sampling && !dense) until = std::min(until, next * period - sim->time());
-      const double step = stepper->Next(until);
+      const double step = stepper->Next(sim->data(), until);
       if (dense && sim->time() + step >= next * period - 2 * tolerance) dense->Start();
       sim->Step(step);
     } else {

@@ -11,7 +11,7 @@
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
 #include "mujoco/damper_rate.h"
-#include "sim/arena.h"
+#include "mujoco/hooks.h"
 #include "sim/reach_sweep.h"
 
 namespace contactlaws {
@@ -133,7 +133,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
   reach_.assign(cm.model()->ngeom, kInfinity);
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
-  settled_rule_ = cm.model()->opt.integrator == mjINT_RK4;
+  settled_rule_ = contacts.options().integrator == mjINT_RK4;
 }
 
 AutoTimestep::~AutoTimestep() = default;
@@ -163,8 +163,10 @@ double AutoTimestep::SettledStep(int pair) const {
 double AutoTimestep::FlightStep() const {
   const ContactModel& cm = contacts_.model();
   double step = options_.max_step;
-  if (HasOwnDynamics(cm)) step = std::min(step, cm.model()->opt.timestep);
-  if (cm.model()->opt.integrator != mjINT_RK4) {
+  // the data's options: a step of its own, or the scene's
+  const mjOption& opt = contacts_.options();
+  if (HasOwnDynamics(cm)) step = std::min(step, opt.timestep);
+  if (opt.integrator != mjINT_RK4) {
     step = std::min(step, kFirstOrderFlightStep * options_.accuracy / kDefaultAccuracy);
   }
   return step;
@@ -359,10 +361,9 @@ void AutoTimestep::SetReach(double bound) {
   }
 }
 
-double AutoTimestep::Next(double until) {
+double AutoTimestep::Next(mjData* d, double until) {
   const ContactModel& cm = contacts_.model();
   const mjModel* m = cm.model();
-  mjData* d = contacts_.data();
   const int npair = static_cast<int>(cm.pairs().size());
   double step = flight_step_;
   bool fine = false;
@@ -426,11 +427,6 @@ double AutoTimestep::Next(double until) {
   ++steps_;
   fine_steps_ += fine;
   return step;
-}
-
-void AutoTimestep::Step(mjModel* m, ContactData* contacts, double until) {
-  m->opt.timestep = Next(until);
-  contacts->Step();
 }
 
 }  // namespace contactlaws

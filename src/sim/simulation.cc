@@ -10,20 +10,19 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "sim/arena.h"
 
 namespace contactlaws {
 
-Simulation::Simulation(UniqueModel model, std::string source,
+Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
                        const SimulationOptions& options)
     : model_(std::move(model)), source_(std::move(source)) {
-  if (options.timestep) model_->opt.timestep = *options.timestep;
-  if (options.integrator) model_->opt.integrator = *options.integrator;
   contact_model_ = std::make_unique<ContactModel>(model_.get(), source_, options.overrides);
-  SizeArena(model_.get(), *contact_model_);
   data_.reset(mj_makeData(model_.get()));
   if (!data_) throw Error(fmt::format("{}: MuJoCo could not allocate mjData", source_));
   contacts_ = std::make_unique<ContactData>(*contact_model_, data_.get());
+  // the run's own options, on its data's side
+  if (options.timestep) contacts_->options().timestep = *options.timestep;
+  if (options.integrator) contacts_->options().integrator = *options.integrator;
 
   columns_ = options.columns;
   RecordBodiesAndJoints();
@@ -34,6 +33,9 @@ Simulation::Simulation(UniqueModel model, std::string source,
     Reset();
   }
 }
+
+Simulation::Simulation(UniqueModel model, std::string source, const SimulationOptions& options)
+    : Simulation(std::shared_ptr<const mjModel>(std::move(model)), std::move(source), options) {}
 
 void Simulation::Reset() { Reset(/*fresh=*/false); }
 
@@ -146,13 +148,13 @@ std::vector<TagReading> Simulation::Readings() const {
 }
 
 void Simulation::Sample(std::vector<double>* row) {
-  mj_forward(model_.get(), data_.get());
+  mj_forward(model(), data_.get());  // the run's options: mj_forward reads its timestep
   Row(data_.get(), Readings(), contacts_->ElasticEnergy(), contacts_->DissipatedEnergy(), row);
 }
 
 void Simulation::Row(mjData* d, const std::vector<TagReading>& readings, double elastic,
                      double dissipated, std::vector<double>* row) const {
-  const mjModel* m = model_.get();
+  const mjModel* m = model();
   row->clear();
   // d->time accumulates timesteps: show it to the nanosecond
   row->push_back(std::round(d->time * 1e9) / 1e9);
@@ -231,9 +233,7 @@ Scene::Scene(std::string name, UniqueModel model)
     : path_(std::move(name)), model_(std::move(model)) {}
 
 std::unique_ptr<Simulation> Scene::Make(const SimulationOptions& options) const {
-  UniqueModel copy(mj_copyModel(nullptr, model_.get()));
-  if (!copy) throw Error(fmt::format("{}: MuJoCo could not copy the model", path_));
-  return std::make_unique<Simulation>(std::move(copy), path_, options);
+  return std::make_unique<Simulation>(model_, path_, options);
 }
 
 }  // namespace contactlaws

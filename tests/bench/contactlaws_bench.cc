@@ -93,6 +93,7 @@ LawParams PaperParams(LawKind kind) {
   params.exponent = 1.5;
   params.linear_stiffness = 5e6;
   params.dissipation = 0.1;  // s/m, read by hunt-crossley-constant only
+  ResolveLawParams(&params);
   return params;
 }
 

@@ -148,6 +148,7 @@ double Force(std::string_view name, double e) {
   p.exponent = 1.5;
   p.dissipation = 0.5;
   EXPECT_FALSE(ValidateLawParams(p).has_value()) << name;
+  ResolveLawParams(&p);
   return EvaluateLaw(p, ContactState{1e-3, 2.0, 4.0, 1.0}).total;
 }
 

@@ -26,6 +26,7 @@ LawParams Hertzian(LawKind kind, double e) {
   p.stiffness = 1.4e8;
   p.exponent = 1.5;
   p.dissipation = 0.2;  // s/m, read by the constant-dissipation family only
+  ResolveLawParams(&p);
   return p;
 }
 
@@ -200,6 +201,7 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   p.kind = LawKind::kHuntCrossley;
   p.restitution = 0.5;
   p.stiffness = 1e7;
+  ResolveLawParams(&p);
   const double a = HysteresisCoefficient(p.kind, p.restitution);  // 0.75
   const double m = 2, load = 19.62;
   const double expected = m * p.min_impact_velocity / (a * load);
@@ -211,8 +213,10 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   EXPECT_NEAR(RestingDamperLag(p, load, m), 10 * expected, 10 * kRelativeTolerance * expected);
   // elastic, or no load: no damper
   p.kind = LawKind::kHertz;
+  ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, load, m)));
   p.kind = LawKind::kHuntCrossley;
+  ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, 0, m)));
 }
 

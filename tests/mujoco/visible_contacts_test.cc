@@ -68,7 +68,7 @@ TEST_F(VisibleContactsTest, AppendsEachTaggedPointOutsideTheSolver) {
   mj_forward(sim.model(), d);
   ASSERT_EQ(d->ncon, 0);
   VisibleContactsOverflow overflow;
-  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), &overflow), 1);
+  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), sim.data(), &overflow), 1);
   ASSERT_EQ(d->ncon, 1);
   const mjContact& con = d->contact[0];
   EXPECT_EQ(con.exclude, 1);
@@ -95,7 +95,7 @@ TEST_F(VisibleContactsTest, MujocoDrawsThePointsAndTheNextCollisionClearsThem) {
   EXPECT_EQ(d->ncon, 0);
   EXPECT_EQ(ContactPointGeoms(sim.model(), d), 0);
   VisibleContactsOverflow overflow;
-  AppendVisibleContacts(sim.contacts(), &overflow);
+  AppendVisibleContacts(sim.contacts(), sim.data(), &overflow);
   EXPECT_EQ(ContactPointGeoms(sim.model(), d), 1);
 }
 
@@ -104,8 +104,8 @@ TEST_F(VisibleContactsTest, NeverBeyondNconmaxCountsWhatDidNotFitAndWarnsOnce) {
   mjData* d = sim.data();
   d->ncon = sim.model()->nconmax;  // a full list
   VisibleContactsOverflow overflow;
-  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), &overflow), 0);
-  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), &overflow), 0);
+  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), sim.data(), &overflow), 0);
+  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), sim.data(), &overflow), 0);
   EXPECT_EQ(d->ncon, sim.model()->nconmax);
   EXPECT_EQ(overflow.dropped, 2);
   EXPECT_EQ(ExpectMujocoWarning("nconmax"), 1u);
@@ -118,7 +118,7 @@ TEST_F(VisibleContactsTest, NothingOutOfContact) {
                        false, 1.0, 0.5));
   sim.Step();
   VisibleContactsOverflow overflow;
-  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), &overflow), 0);
+  EXPECT_EQ(AppendVisibleContacts(sim.contacts(), sim.data(), &overflow), 0);
   EXPECT_EQ(sim.data()->ncon, 0);
 }
 

@@ -251,6 +251,23 @@ TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   }
 }
 
+// a(e) is resolved once per pair, where its parameters are made, from the
+// restitution with the overrides applied: the bisection of `exact` runs
+// there, not at each evaluation.
+TEST_F(SceneTest, TheHysteresisCoefficientIsResolvedWithThePairsParameters) {
+  SimulationOptions options;
+  options.overrides.law = *ParseLawName("exact");
+  options.overrides.restitution = 0.7;
+  const LawParams& exact =
+      LoadScene("bouncing_ball.xml", options).contact_model().pairs()[0].params;
+  EXPECT_EQ(exact.hysteresis, ExactCoefficient(0.7));
+  options.overrides = {};  // the tag's flores at e = 0.9: a = 8 (1 - e) / (5 e)
+  const LawParams& flores =
+      LoadScene("bouncing_ball.xml", options).contact_model().pairs()[0].params;
+  EXPECT_EQ(flores.hysteresis, HysteresisCoefficient(LawKind::kFlores, 0.9));
+  EXPECT_NEAR(flores.hysteresis, 8 * 0.1 / (5 * 0.9), 1e-15);
+}
+
 // The dissipation override is read by the laws that read it (the tag's is
 // refused on the others), and a law that needs it without it is refused.
 TEST_F(SceneTest, DissipationOverrideGoesToTheLawsThatReadIt) {

@@ -6,6 +6,7 @@
 #include "contactlaws/advance.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -195,6 +196,41 @@ TEST(AdvanceTest, AutoStepsAreNotCutByRowsAndRowsInsideThemAreInterpolated) {
               worst, contact[0][total], peak);
   EXPECT_GT(peak, 0);
   EXPECT_LT(worst, kDefaultAccuracy * std::abs(contact[0][total]));
+}
+
+// Stopping belongs to a run: a run whose flag is set stops before its next
+// step, and a run of the same scene with its own flag, clear, goes on to its
+// end. A flag set on the way (here by a row) stops the run at that row.
+TEST(AdvanceStopTest, AStopFlagStopsItsOwnRunAndNoOther) {
+  constexpr double kDuration = 1e-3;  // s: 100 steps of 1e-5 s
+  const Scene scene("drop.xml", LoadModelString(testing::DropXml(
+                                    "law=flores restitution=0.5 stiffness=1.4e8", 1.0),
+                                    "drop.xml"));
+  std::atomic<bool> stopped{true};
+  std::atomic<bool> running{false};
+  AdvanceOptions options;
+  options.duration = kDuration;
+  options.stop = &stopped;
+  std::unique_ptr<Simulation> first = scene.Make({});
+  EXPECT_EQ(Advance(first.get(), options, nullptr).status, AdvanceResult::Status::kInterrupted);
+  EXPECT_EQ(first->time(), 0.0);
+
+  options.stop = &running;
+  std::unique_ptr<Simulation> second = scene.Make({});
+  EXPECT_EQ(Advance(second.get(), options, nullptr).status, AdvanceResult::Status::kComplete);
+  EXPECT_NEAR(second->time(), kDuration, 0.5 * second->model()->opt.timestep);
+
+  // set by the row at 5e-4 s (rows every 1e-4 s): no step after it
+  options.sample_rate = 1e4;
+  std::unique_ptr<Simulation> third = scene.Make({});
+  double last_row = -1;
+  const AdvanceResult result = Advance(third.get(), options, [&](const std::vector<double>& row) {
+    last_row = row[0];
+    if (row[0] >= 5e-4) running.store(true);
+  });
+  EXPECT_EQ(result.status, AdvanceResult::Status::kInterrupted);
+  EXPECT_EQ(last_row, 5e-4);
+  EXPECT_NEAR(third->time(), 5e-4, 1e-9);  // rows show the time to the nanosecond
 }
 
 }  // namespace

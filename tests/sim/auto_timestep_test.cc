@@ -89,7 +89,7 @@ TEST(AutoTimestepTest, TheStepShrinksOnApproachAndIsFineInContact) {
   double in_contact = 0;  // largest step taken while in contact
   double before_touch = 0;
   while (sim->contacts().impacts().empty() || sim->contacts().impacts()[0].open) {
-    const double h = stepper.Next(1.0);
+    const double h = stepper.Next(d, 1.0);
     largest = std::max(largest, h);
     const bool touching = !sim->contacts().latest().empty();
     if (touching) in_contact = std::max(in_contact, h);
@@ -133,7 +133,7 @@ TEST(AutoTimestepTest, APairInContactWithManyPointsDoesNotHideAnApproachingPair)
   AutoTimestep stepper(sim.contacts());
   double first_ball_depth = 0;
   while (sim.time() < 0.1 && first_ball_depth == 0) {
-    sim.Step(stepper.Next(1.0));
+    sim.Step(stepper.Next(sim.data(), 1.0));
     first_ball_depth = sim.contacts().Reading(1).depth;
   }
   ASSERT_GT(sim.contacts().Reading(0).depth, 0) << "the box rests in contact";
@@ -173,7 +173,7 @@ double StepUntil(Simulation* sim, AutoTimestep* stepper, std::optional<double> f
                  double end) {
   double largest = 0;
   while (sim->time() < end - 1e-9 && !sim->contacts().divergence()) {
-    const double step = stepper ? stepper->Next(end - sim->time()) : *fixed_step;
+    const double step = stepper ? stepper->Next(sim->data(), end - sim->time()) : *fixed_step;
     largest = std::max(largest, step);
     sim->Step(step);
   }
@@ -307,7 +307,7 @@ TEST(AutoTimestepTest, AnUntaggedPairHoldsTheStepDownOnlyWhileNear) {
   auto first_step = [&](double bx, double bz, double bvx) {
     Simulation sim(LoadModelString(xml(bx, bz, bvx), "untagged.xml"), "untagged.xml");
     AutoTimestep stepper(sim.contacts());
-    return stepper.Next(1.0);
+    return stepper.Next(sim.data(), 1.0);
   };
   // far: the tagged drop's first step, the time to close half the gaps
   // from rest: sqrt(0.9 m / g) for a (b's 0.9 m to the floor likewise)

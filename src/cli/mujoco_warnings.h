@@ -1,16 +1,16 @@
 // Copyright contactlaws authors.
 //
-// MuJoCo's messages, kept instead of printed.
+// The program's sink for MuJoCo's messages: kept instead of printed.
 
-#ifndef CONTACTLAWS_MUJOCO_WARNINGS_H_
-#define CONTACTLAWS_MUJOCO_WARNINGS_H_
+#ifndef CONTACTLAWS_CLI_MUJOCO_WARNINGS_H_
+#define CONTACTLAWS_CLI_MUJOCO_WARNINGS_H_
 
 #include <string>
 #include <vector>
 
 #include "contactlaws/simulation.h"
 
-namespace contactlaws {
+namespace contactlaws::cli {
 
 // MuJoCo's messages to mju_user_warning. The program installs
 // RecordMujocoWarning, which keeps them (thread-safe) instead of letting
@@ -21,6 +21,6 @@ void RecordMujocoWarning(const char* text);
 void NoteReportedMujocoWarning(const std::string& text);
 std::vector<MujocoWarning> UnreportedMujocoWarnings();
 
-}  // namespace contactlaws
+}  // namespace contactlaws::cli
 
-#endif  // CONTACTLAWS_MUJOCO_WARNINGS_H_
+#endif  // CONTACTLAWS_CLI_MUJOCO_WARNINGS_H_

@@ -1,13 +1,13 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/mujoco_warnings.h"
+#include "cli/mujoco_warnings.h"
 
 #include <algorithm>
 #include <map>
 #include <mutex>
 #include <set>
 
-namespace contactlaws {
+namespace contactlaws::cli {
 namespace {
 
 struct MujocoMessages {
@@ -49,4 +49,4 @@ std::vector<MujocoWarning> UnreportedMujocoWarnings() {
   return unreported;
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::cli

@@ -1,12 +1,15 @@
 // Copyright contactlaws authors.
 
-#include "sim/arena.h"
+#include "cli/arena.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string_view>
 
-#include "contactlaws/contact_data.h"
+#include "contactlaws/error.h"
+#include "mujoco/hooks.h"
 
-namespace contactlaws {
+namespace contactlaws::cli {
 namespace {
 
 // MuJoCo 2.2.2's compiler (user_model.cc): njmax when the scene gives none.
@@ -43,17 +46,6 @@ long RowsWithoutContacts(const mjModel* m) {
 
 }  // namespace
 
-bool HasUntaggedContacts(const ContactModel& cm) {
-  const mjModel* m = cm.model();
-  if (m->npair > 0) return true;
-  for (int g1 = 0; g1 < m->ngeom; ++g1) {
-    for (int g2 = g1 + 1; g2 < m->ngeom; ++g2) {
-      if (!DefaultContactFilter(m, g1, g2) && cm.FindPair(g1, g2) < 0) return true;
-    }
-  }
-  return false;
-}
-
 void SizeArena(mjModel* m, const ContactModel& cm) {
   const bool defaults = m->njmax == kMujocoDefaultNjmax &&
                         m->nstack == MujocoStackHeuristic(m, kMujocoDefaultNjmax);
@@ -62,4 +54,17 @@ void SizeArena(mjModel* m, const ContactModel& cm) {
   m->nstack = static_cast<int>(MujocoStackHeuristic(m, m->njmax) + HookStack(m));
 }
 
-}  // namespace contactlaws
+UniqueModel LoadSizedModel(const std::string& path, const Overrides& overrides) {
+  UniqueModel model = LoadModelFile(path);
+  const char* option = std::getenv("CONTACTLAWS_ARENA");
+  if (option && std::string_view(option) == "mujoco") return model;
+  try {
+    const ContactModel tags(model.get(), path, overrides);
+    SizeArena(model.get(), tags);
+  } catch (const Error&) {
+    // refused by the run that reads the tags, with this message
+  }
+  return model;
+}
+
+}  // namespace contactlaws::cli
