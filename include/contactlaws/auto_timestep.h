@@ -195,8 +195,8 @@ class AutoTimestep {
   // without friction.
   double TangentialStep(const ContactData::Evaluation& e) const;
   // Rule 5's bound from the friction dampers of the points latest()[first, end)
-  // (one pair's); infinite without friction.
-  double FrictionLag(size_t first, size_t end);
+  // (one pair's) in d; infinite without friction.
+  double FrictionLag(mjData* d, size_t first, size_t end);
   // The bound of the flight step: the data's timestep (options()) when the
   // scene has dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;

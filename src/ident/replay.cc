@@ -69,11 +69,15 @@ class Replay::Rollout {
  public:
   Rollout(const Replay& replay, const ReplayOptions& options)
       : replay_(replay), options_(options), width_(static_cast<int>(replay.data_.columns.size())) {
-    UniqueModel model(mj_copyModel(nullptr, replay.scene_.model()));
-    ApplyEdits(model.get(), options.edits);
     SimulationOptions simulation = options.simulation;
     simulation.columns = ColumnGroups{true, true, false, false, false};
-    sim_ = std::make_unique<Simulation>(std::move(model), replay.scene_.path(), simulation);
+    if (options.edits.empty()) {
+      sim_ = replay.scene_.Make(simulation);  // the scene's model, shared
+    } else {
+      UniqueModel model(mj_copyModel(nullptr, replay.scene_.model()));
+      ApplyEdits(model.get(), options.edits);
+      sim_ = std::make_unique<Simulation>(std::move(model), replay.scene_.path(), simulation);
+    }
     // each measured column's place in the run's rows (Simulation::Columns)
     const std::vector<std::string> columns = sim_->Columns();
     for (const std::string& name : replay.data_.columns) {
@@ -106,7 +110,7 @@ class Replay::Rollout {
       const double target = t.time[k] - t.time[result.start];
       while (!diverged && sim_->time() < target - tolerance) {
         if (stepper) {
-          sim_->Step(stepper->Next(target - sim_->time()));
+          sim_->Step(stepper->Next(sim_->data(), target - sim_->time()));
         } else {
           sim_->Step();
         }

@@ -119,8 +119,6 @@ void FrameRenderer::Draw(Simulation* sim, std::vector<unsigned char>* rgb) {
     AimTrackingCamera(m, run_, moving_->Extent(d),
                       static_cast<double>(options_.width) / options_.height, top, &camera_);
   }
-  const int ncon = d->ncon;
-  AppendVisibleContacts(sim->contacts(), d, &overflow_);
   mjv_updateScene(m, d, &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
   SeeThrough(m);
   AddContactMarks(*sim, *moving_, options_.force_scale, &scene_);

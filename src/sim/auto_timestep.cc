@@ -196,7 +196,7 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
   return 2 * duration / options_.steps_per_contact;
 }
 
-double AutoTimestep::FrictionLag(size_t first, size_t end) {
+double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   if (pair.friction.kind == FrictionKind::kNone) return kInfinity;
@@ -213,7 +213,7 @@ double AutoTimestep::FrictionLag(size_t first, size_t end) {
         TangentialDynamics(pair.friction, k, c, pair.friction_mass, e.force).damping);
   }
   const double rate =
-      damper_rate_->Rate(contacts_.model().model(), contacts_.data(), pair,
+      damper_rate_->Rate(contacts_.model().model(), d, pair,
                          static_cast<int>(end - first), point_pos_.data(), point_normal_.data(),
                          point_damping_.data());
   return rate > 0 ? kFrictionDamperLags / rate : kInfinity;
@@ -393,7 +393,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   const size_t points = contacts_.latest().size();
   for (size_t first = 0, end = 0; first < points; first = end) {
     while (end < points && contacts_.latest()[end].pair == contacts_.latest()[first].pair) ++end;
-    step = std::min(step, FrictionLag(first, end));
+    step = std::min(step, FrictionLag(d, first, end));
   }
 
   // the other pairs: the time to close a fraction of their gap, from the

@@ -294,7 +294,7 @@ TEST(ReliabilityTest, CtrlCDuringCompareLeavesTheFinishedRunsIntact) {
   const std::string dir = ::testing::TempDir() + "/interrupted";
   std::filesystem::remove_all(dir);
   const std::string log = ::testing::TempDir() + "/interrupted.log";
-  const pid_t pid = SpawnCli({"compare", kBall, "--laws", "hertz,flores", "--restitution",
+  const pid_t pid = testing::SpawnCli({"compare", kBall, "--laws", "hertz,flores", "--restitution",
                               "0.3,0.6,0.9", "--duration", "2", "--jobs", "1", "--output-dir", dir},
                              log);
   ASSERT_GE(pid, 0);
