@@ -26,7 +26,10 @@ int Replay::StartSample(int i, const ReplayOptions& options) const {
 }
 
 void ApplyEdits(mjModel* m, const std::vector<ModelEdit>& edits) {
+  bool inertia = false;
   for (const ModelEdit& e : edits) {
+    inertia = inertia || e.kind == ModelEdit::Kind::kMassScale ||
+              e.kind == ModelEdit::Kind::kInertiaScale;
     switch (e.kind) {
       case ModelEdit::Kind::kMassScale:
         m->body_mass[e.id] *= e.value;
@@ -40,6 +43,9 @@ void ApplyEdits(mjModel* m, const std::vector<ModelEdit>& edits) {
         double axis[3];
         mju_rotVecQuat(axis, z, m->geom_quat + 4 * e.id);
         for (int i = 0; i < 3; ++i) m->geom_pos[3 * e.id + i] += e.value * axis[i];
+        // a geom compiled in its body's frame is placed with the body's pose,
+        // its own pos unread (mj_kinematics): it has a frame of its own now
+        m->geom_sameframe[e.id] = 0;
         break;
       }
       case ModelEdit::Kind::kMujocoTimeconst:
@@ -61,6 +67,12 @@ void ApplyEdits(mjModel* m, const std::vector<ModelEdit>& edits) {
         for (int g = 0; g < m->ngeom; ++g) m->geom_friction[3 * g] = e.value;
         break;
     }
+  }
+  if (inertia) {
+    // what MuJoCo derives from the masses at compile time (subtree masses,
+    // the armature-free dof_M0 ...), derived again
+    UniqueData d(mj_makeData(m));
+    mj_setConst(m, d.get());
   }
 }
 

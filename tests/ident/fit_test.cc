@@ -83,6 +83,28 @@ TEST(FitTest, ParametersMapToTagKeysAndModelEdits) {
   EXPECT_DOUBLE_EQ(m->geom_pos[2], -0.002);  // the board, along its normal
 }
 
+// The edits act on a simulation: the cube placed on the board rests 2 mm
+// lower on a board moved down 2 mm, and twice as heavy it sinks deeper.
+TEST(FitTest, ModelEditsMoveTheBoardAndWeighTheCube) {
+  const Scene scene = CubeScene("law=hunt-crossley restitution=0.3 stiffness=1e6");
+  auto rest_z = [&](const std::vector<ModelEdit>& edits) {
+    UniqueModel m(mj_copyModel(nullptr, scene.model()));
+    ApplyEdits(m.get(), edits);
+    Simulation sim(std::move(m), "cube.xml");
+    sim.data()->qpos[2] = 0.0524;  // placed on the board's nominal plane
+    while (sim.time() < 1.0) sim.Step(1e-4);
+    return sim.data()->qpos[2];
+  };
+  const int board = 0, cube = 1;
+  const double nominal = rest_z({});
+  // the static depth of 4 corners, K d^1.5 = m g / 4: 0.16 mm, and 2^(2/3) deeper
+  const double depth = std::pow(0.37 * 9.81 / 4 / 1e6, 1 / 1.5);
+  EXPECT_NEAR(nominal, 0.0524 - depth, 1e-7);
+  EXPECT_NEAR(rest_z({{ModelEdit::Kind::kOffset, board, -0.002}}), nominal - 0.002, 1e-9);
+  EXPECT_NEAR(rest_z({{ModelEdit::Kind::kMassScale, cube, 2.0}}),
+              0.0524 - depth * std::pow(2.0, 1 / 1.5), 1e-7);
+}
+
 // Tosses simulated with a known tag, their positions and orientations
 // blurred as a camera tracker's, fitted back.
 TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
