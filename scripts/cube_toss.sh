@@ -101,4 +101,5 @@ echo "cube_toss: B. ${law} with every friction model"
   { echo "cube_toss: fit frictions failed:"; cat "$out/frictions.log"; exit 1; }
 
 echo "cube_toss: $(($(date +%s) - start)) s of fitting (budget ${budget}, ${parallel} fits x ${jobs} threads)"
-/usr/bin/python3 scripts/cube_toss_report.py "$out" docs
+CUBE_TOSS_PARAMS="${shared},restitution=0.01:0.95,dissipation=0.01:10:log" \
+  /usr/bin/python3 scripts/cube_toss_report.py "$out" docs

@@ -32,7 +32,7 @@ def read_csv(path):
 def fits(out):
     """Every fitted combination: (stage, row of ranking.csv, the fit's folder)."""
     rows = []
-    for folder in sorted(glob.glob(os.path.join(out, "law-*"))):
+    for folder in sorted(f for f in glob.glob(os.path.join(out, "law-*")) if os.path.isdir(f)):
         for row in read_csv(os.path.join(folder, "ranking.csv")):
             rows.append(("A", row, folder))
     for stage, name in (("B", "frictions"), ("C", "mujoco")):
@@ -70,15 +70,18 @@ def meaning(row):
     k, e, mu = value(row, "stiffness"), value(row, "restitution"), value(row, "mu")
     offset = value(row, "board.offset")
     if k:
-        # a face resting on 4 corners: each carries m g / 4 at K d^1.5
-        depth = (CUBE_MASS * GRAVITY / 4 / k) ** (1 / 1.5)
-        lines.append(f"K = {k:.3g} N/m^1.5: a cube resting flat sinks {depth * 1e3:.2f} mm at "
-                     f"each corner (K d^1.5 = m g / 4), a soft contact: the board and the "
-                     f"tracking's corner are compliant together, and a stiffer K buys nothing "
-                     f"at 148 Hz")
+        # a face resting on 4 corners: each carries m g / 4 at K d^n (kelvin-voigt: k d)
+        linear = row["law"] == "kelvin-voigt"
+        n, unit = (1.0, "N/m") if linear else (1.5, "N/m^1.5")
+        depth = (CUBE_MASS * GRAVITY / 4 / k) ** (1 / n)
+        lines.append(f"K = {k:.3g} {unit}: a cube resting flat sinks {depth * 1e3:.3g} mm at "
+                     f"each corner ({'k d' if linear else 'K d^1.5'} = m g / 4); a contact "
+                     f"that lasts {math.pi * math.sqrt(CUBE_MASS / 4 / k) * 1e3:.2g} ms "
+                     f"(pi sqrt(m / 4k), a corner's share of the mass, linearised) is about one "
+                     f"148 Hz sample: the data see the bounce, not the spring")
     if e is not None:
-        lines.append(f"e = {e:.3g}: the laws' restitution of a corner's impact; the cube's "
-                     f"tumble turns much of the rest into rotation, so the tosses bounce little")
+        lines.append(f"e = {e:.3g}: the restitution the law gives a corner's impact along its "
+                     f"normal; the tosses' corners bounce little")
     if mu is not None:
         lines.append(f"mu = {mu:.3g}: the cube slides {1.1 ** 2 / (2 * mu * GRAVITY):.2f} m from "
                      f"1.1 m/s on a face (v^2 / (2 mu g)), the tosses' sideways speed")
@@ -86,6 +89,28 @@ def meaning(row):
         lines.append(f"board offset {offset * 1e3:.2f} mm: the data's README puts the resting cube "
                      f"~1.9 mm below the board's nominal plane")
     return lines
+
+
+def at_bounds(row, bounds):
+    """The fitted values within 1% of their range from a bound: the search range was too narrow."""
+    out = []
+    for key, (lo, hi, log) in bounds.items():
+        v = value(row, key)
+        if v is None:
+            continue
+        a, b, x = (math.log(lo), math.log(hi), math.log(v)) if log else (lo, hi, v)
+        if min(x - a, b - x) < 0.01 * (b - a):
+            out.append(f"{key} = {v:.4g} (range {lo:g}:{hi:g})")
+    return out
+
+
+def parse_bounds(text):
+    bounds = {}
+    for item in text.split(","):
+        key, spec = item.split("=")
+        parts = spec.split(":")
+        bounds[key] = (float(parts[0]), float(parts[1]), len(parts) == 3)
+    return bounds
 
 
 def main():
@@ -194,6 +219,19 @@ def main():
                      f" | {fmt(value(row, 'validate_p90'))} | {row['evaluations']} |")
     lines += ["", "## What the fitted values mean", ""]
     lines += [f"- {m}." for m in meaning(w)]
+    bounds = parse_bounds(os.environ.get("CUBE_TOSS_PARAMS", ""))if os.environ.get("CUBE_TOSS_PARAMS") else {}
+    edge = at_bounds(w, bounds)
+    if edge:
+        lines += ["", "At a bound of its range (the search stopped there; a wider range may "
+                  "score better): " + ", ".join(edge) + "."]
+    budget = w["evaluations"]
+    lines += ["", f"Each fit had {budget} evaluations (`BUDGET`): with four parameters that is "
+              "a screening, not a converged search. Several laws stop at the same point of the "
+              "seeded search's first population (the same values in their rows), and the "
+              "ranking of the laws within a few hundredths of e_q is not settled at this "
+              "budget; `BUDGET=200 scripts/cube_toss.sh` refines it. With `mu` setting both "
+              "coefficients, stribeck at its default Stribeck velocity is coulomb: their rows "
+              "agree."]
     with open(os.path.join(winner[2], "best_tag.txt")) as f:
         tag = f.read().strip()
     lines += ["", "The winner's tag, as `mjcf/cube_toss.xml` carries it:", "", "```xml", tag, "```",
