@@ -188,6 +188,7 @@ TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
   law.kind = LawKind::kHuntCrossley;
   law.stiffness = 1e9;
   law.restitution = 0.9;
+  ResolveLawParams(&law);
   ContactState state;
   state.depth = 1e-5;
   state.impact_velocity = 2;

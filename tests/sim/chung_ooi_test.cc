@@ -84,6 +84,7 @@ LawParams NormalLaw(const ImpactCase& c) {
   law.stiffness = HertzSphereStiffness(c.ra, kRadius,
                                        MaterialCompliance(youngs_a, c.material.poisson),
                                        MaterialCompliance(c.material.youngs, c.material.poisson));
+  ResolveLawParams(&law);  // a(e), as ContactModel resolves every pair's
   return law;
 }
 
