@@ -54,4 +54,17 @@ for f in errors.csv best_trajectories.csv best_tag.txt; do same "$tmp/fit1/$f" "
 # ranking.csv but its wall_seconds column (the 11th), a time that differs run to run
 for n in 1 2; do cut -d, -f1-10,12- "$tmp/fit$n/ranking.csv" > "$tmp/ranking$n.csv"; done
 same "$tmp/ranking1.csv" "$tmp/ranking2.csv"
+# a rank killed mid-run: the job ends non-zero, mpirun names the rank, and no
+# output file appears (rank 0 writes only by renaming a finished PATH.tmp)
+awk -F, 'NR == 1 || $1 < 40' "$tmp/all.csv" > "$tmp/forty.csv"
+status=0
+mpirun --oversubscribe -np 2 "$cli" "${replay[@]}" --data "$tmp/forty.csv" --jobs 1 --output "$tmp/killed" \
+  > /dev/null 2> "$tmp/killed.err" &
+launcher=$!
+sleep 1
+kill -9 "$(pgrep -P "$launcher" | tail -1)"
+wait "$launcher" || status=$?
+[ "$status" -ne 0 ] || fail "a killed rank left exit status 0"
+grep -q "rank 1" "$tmp/killed.err" || fail "no line names rank 1: $(cat "$tmp/killed.err")"
+[ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
 echo "mpi_test: ok"
