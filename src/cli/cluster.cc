@@ -3,8 +3,6 @@
 // cluster.h without MPI: the only process. A launch by mpirun or srun (its
 // rank in the environment) is refused rather than run N times over.
 
-#include <cstdlib>
-
 #include <fmt/format.h>
 
 #include "cli/cluster.h"
@@ -12,13 +10,11 @@
 namespace contactlaws::cli {
 
 bool JoinCluster(int*, char***) {
-  for (const char* rank : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
-    if (std::getenv(rank)) {
-      fmt::print(stderr,
-                 "contactlaws: launched by mpirun ({} is set) but built without MPI: "
-                 "rebuild with -DCONTACTLAWS_MPI=ON (docs/cluster.md)\n", rank);
-      return false;
-    }
+  if (const char* rank = LauncherRankVariable()) {
+    fmt::print(stderr,
+               "contactlaws: launched by mpirun ({} is set) but built without MPI: "
+               "rebuild with -DCONTACTLAWS_MPI=ON (docs/cluster.md)\n", rank);
+    return false;
   }
   return true;
 }

@@ -10,7 +10,18 @@
 
 #include "contactlaws/work_spread.h"
 
+#include <cstdlib>
+
 namespace contactlaws::cli {
+
+// The variable by which mpirun or srun gives a process its rank, when set
+// (the program was launched as a rank of a job); null otherwise.
+inline const char* LauncherRankVariable() {
+  for (const char* rank : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
+    if (std::getenv(rank)) return rank;
+  }
+  return nullptr;
+}
 
 // Joins the job (MPI_Init) and, on ranks other than 0, sends standard output
 // to /dev/null. Returns false, having printed one line, when the program was

@@ -71,6 +71,8 @@ bool joined = false;
 }  // namespace
 
 bool JoinCluster(int* argc, char*** argv) {
+  // launched alone: the only process, without MPI's start-up
+  if (!LauncherRankVariable()) return true;
   int provided = 0;
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
   joined = true;
@@ -90,9 +92,9 @@ void LeaveCluster(int exit_code) {
 
 const WorkSpread* ClusterSpread() {
   static const MpiSpread spread;
-  return Size() > 1 ? &spread : nullptr;
+  return joined && Size() > 1 ? &spread : nullptr;
 }
 
-bool WritesOutputs() { return Rank() == 0; }
+bool WritesOutputs() { return !joined || Rank() == 0; }
 
 }  // namespace contactlaws::cli
