@@ -61,8 +61,10 @@ status=0
 mpirun --oversubscribe -np 2 "$cli" "${replay[@]}" --data "$tmp/forty.csv" --jobs 1 --output "$tmp/killed" \
   > /dev/null 2> "$tmp/killed.err" &
 launcher=$!
-sleep 1
-kill -9 "$(pgrep -P "$launcher" | tail -1)"
+# once both ranks run: the one started last
+for _ in $(seq 50); do [ "$(pgrep -P "$launcher" -f "$cli" | wc -l)" -ge 2 ] && break; sleep 0.1; done
+pgrep -a -P "$launcher" >&2
+kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
 wait "$launcher" || status=$?
 [ "$status" -ne 0 ] || fail "a killed rank left exit status 0"
 grep -q "rank 1" "$tmp/killed.err" || fail "no line names rank 1: $(cat "$tmp/killed.err")"
