@@ -26,6 +26,7 @@
 #include "contactlaws/measured.h"
 #include "contactlaws/score.h"
 #include "contactlaws/simulation.h"
+#include "contactlaws/work_spread.h"
 
 namespace contactlaws {
 
@@ -88,6 +89,9 @@ struct ReplayOptions {
   // e_q's length L_b, m; default: each body's GeomSize (a box's half side)
   std::optional<double> length;
   int jobs = 1;
+  // Trajectories spread over processes too (each computes its share, every
+  // process gets every result); null: this process replays them all.
+  const WorkSpread* spread = nullptr;
   // Called between steps: true stops the replay (the trajectories not
   // finished are marked so).
   std::function<bool()> should_stop;

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/cluster.h"
 #include "contactlaws/error.h"
 
 namespace contactlaws::cli {
@@ -67,6 +68,7 @@ CsvFile::CsvFile(std::string path) : path_(std::move(path)) {
     is_stdout_ = true;
     return;
   }
+  if (!WritesOutputs()) return;  // another rank of the job writes it
   temp_ = path_ + ".tmp";
   file_ = std::fopen(temp_.c_str(), "w");
   if (!file_) {
@@ -96,16 +98,20 @@ void CsvFile::Row(const std::vector<std::string>& prefix, const std::vector<doub
 }
 
 void CsvFile::Write(std::string_view lines) {
+  if (!file_) return;
   std::fwrite(lines.data(), 1, lines.size(), file_);
 }
 
-void CsvFile::Flush() { std::fflush(file_); }
+void CsvFile::Flush() {
+  if (file_) std::fflush(file_);
+}
 
 void CsvFile::Commit() {
   if (is_stdout_) {
     std::fflush(stdout);
     return;
   }
+  if (!file_) return;
   const bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
   std::fclose(file_);
   file_ = nullptr;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/cluster.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
 #include "cli/impact_csv.h"
@@ -245,6 +246,7 @@ int FitCommand(const FitArgs& args) {
     best.keep_trajectories = true;
     const Replay& scored = validate ? *validate : train;
     WriteSimulated(scored.data(), scored.Run(best), &best_trajectories);
+    if (!WritesOutputs()) return 0;  // rank 0 of the job writes and prints
     std::FILE* file = std::fopen((dir + "/best_tag.txt").c_str(), "w");
     if (!file) throw Error(fmt::format("{}/best_tag.txt: cannot write", dir));
     std::fputs(tag.c_str(), file);

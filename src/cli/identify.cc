@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/cluster.h"
 #include "cli/impact_csv.h"
 #include "cli/sweep.h"
 #include "scene/number.h"
@@ -75,6 +76,7 @@ ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Met
   options.refit.lead = ParseCount("--refit-lead", args.refit_lead, 0);
   options.refit.min_samples = ParseCount("--refit-min-samples", args.refit_min_samples, 2);
   options.jobs = Jobs(args.jobs);
+  options.spread = ClusterSpread();
   return options;
 }
 

@@ -23,6 +23,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/cluster.h"
 #include "cli/commands.h"
 #include "cli/mujoco_warnings.h"
 #include "contactlaws/contactlaws.h"
@@ -412,4 +413,10 @@ int Main(int argc, char** argv) {
 }  // namespace
 }  // namespace contactlaws::cli
 
-int main(int argc, char** argv) { return contactlaws::cli::Main(argc, argv); }
+int main(int argc, char** argv) {
+  using namespace contactlaws::cli;
+  if (!JoinCluster(&argc, &argv)) return kExitRefused;
+  const int status = Main(argc, argv);
+  LeaveCluster(status);
+  return status;
+}

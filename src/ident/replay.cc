@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <string_view>
 #include <thread>
@@ -24,6 +25,44 @@ Replay::~Replay() = default;
 int Replay::StartSample(int i, const ReplayOptions& options) const {
   return binding_->StartSample(i, options);
 }
+
+namespace {
+
+// Every process's trajectories to every process: each result as bytes (its
+// fields, then the simulated samples), exchanged through spread.
+void Share(const WorkSpread& spread, std::vector<ReplayedTrajectory>* results) {
+  struct Fixed {
+    ReplayedTrajectory::Status status;
+    int start;
+    Score score;
+    double diverged_at;
+  };
+  std::vector<std::string> items(results->size());
+  const int count = static_cast<int>(results->size());
+  for (int i = 0; i < count; ++i) {
+    if (!spread.Mine(i, count)) continue;
+    const ReplayedTrajectory& r = (*results)[i];
+    const Fixed fixed{r.status, r.start, r.score, r.diverged_at};
+    items[i].assign(reinterpret_cast<const char*>(&fixed), sizeof fixed);
+    items[i].append(reinterpret_cast<const char*>(r.simulated.data()),
+                    r.simulated.size() * sizeof(double));
+  }
+  spread.Share(&items);
+  for (int i = 0; i < count; ++i) {
+    ReplayedTrajectory& r = (*results)[i];
+    Fixed fixed;
+    std::memcpy(&fixed, items[i].data(), sizeof fixed);
+    r.status = fixed.status;
+    r.start = fixed.start;
+    r.score = fixed.score;
+    r.diverged_at = fixed.diverged_at;
+    r.simulated.resize((items[i].size() - sizeof fixed) / sizeof(double));
+    std::memcpy(r.simulated.data(), items[i].data() + sizeof fixed,
+                r.simulated.size() * sizeof(double));
+  }
+}
+
+}  // namespace
 
 void ApplyEdits(mjModel* m, const std::vector<ModelEdit>& edits) {
   bool inertia = false;
@@ -206,6 +245,7 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
       std::unique_ptr<Rollout> own;
       if (!rollout) rollout = (own = std::make_unique<Rollout>(*this, options)).get();
       for (int i = next++; i < count; i = next++) {
+        if (options.spread && !options.spread->Mine(i, count)) continue;
         if (options.should_stop && options.should_stop()) {
           results[i].status = ReplayedTrajectory::Status::kInterrupted;
           continue;
@@ -224,6 +264,7 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   for (const std::exception_ptr& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+  if (options.spread) Share(*options.spread, &results);
   return results;
 }
 

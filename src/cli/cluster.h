@@ -1,0 +1,40 @@
+// Copyright contactlaws authors.
+//
+// The program's place in a cluster job. Built with MPI (CONTACTLAWS_MPI),
+// the program launched by mpirun or srun is one rank of the job: the ranks
+// share the trajectories of replay and fit (ClusterSpread) and rank 0 alone
+// writes. Built without it, or launched alone, it is the only process.
+
+#ifndef CONTACTLAWS_CLI_CLUSTER_H_
+#define CONTACTLAWS_CLI_CLUSTER_H_
+
+#include "contactlaws/work_spread.h"
+
+#include <cstdlib>
+
+namespace contactlaws::cli {
+
+// The variable by which mpirun or srun gives a process its rank, when set
+// (the program was launched as a rank of a job); null otherwise.
+inline const char* LauncherRankVariable() {
+  for (const char* rank : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
+    if (std::getenv(rank)) return rank;
+  }
+  return nullptr;
+}
+
+// Joins the job (MPI_Init) and, on ranks other than 0, sends standard output
+// to /dev/null. Returns false, having printed one line, when the program was
+// launched by mpirun but built without MPI.
+bool JoinCluster(int* argc, char*** argv);
+// Leaves the job (MPI_Finalize); exit_code != 0 on this rank ends every rank.
+void LeaveCluster(int exit_code);
+
+// The spread over the job's ranks; null when the program is the only process.
+const WorkSpread* ClusterSpread();
+// Whether this process writes the outputs (rank 0, or the only process).
+bool WritesOutputs();
+
+}  // namespace contactlaws::cli
+
+#endif  // CONTACTLAWS_CLI_CLUSTER_H_
