@@ -26,6 +26,11 @@ packages=(
   libegl-mesa0        # Mesa's EGL: the surfaceless platform, software rendering (llvmpipe)
   libpng-dev          # contactlaws render DIR/: the PNG files, and the render test reads them
   ffmpeg              # contactlaws render FILE.mp4|FILE.gif, and ffprobe for its test
+  python3-dev         # the Python module (python/): its headers
+  pybind11-dev        # the Python module's bindings
+  python3-pandas      # the Python module's DataFrames
+  python3-pytest      # python_test: pytest on the module
+  python3-venv        # pip install . into a venv (README, Python)
 )
 
 missing=()
