@@ -3,7 +3,7 @@ through Python (its trajectory as a DataFrame) against the command line
 writing the same trajectory as CSV. Prints both wall times and their ratio,
 from one run each (a loaded machine makes one run noisy).
 
-PYTHONPATH=build/python python3 python/goal_timing.py build/contactlaws mjcf/bouncing_ball.xml
+PYTHONPATH=build/python python3 scripts/python_goal_timing.py build/contactlaws mjcf/bouncing_ball.xml
 """
 
 import os
