@@ -28,6 +28,11 @@ packages=(
   ffmpeg              # contactlaws render FILE.mp4|FILE.gif, and ffprobe for its test
   libopenmpi-dev      # CONTACTLAWS_MPI: replay and fit over the ranks of a job (docs/cluster.md)
   openmpi-bin         # mpirun, for mpi_test
+  python3-dev         # the Python module (python/): its headers
+  pybind11-dev        # the Python module's bindings
+  python3-pandas      # the Python module's DataFrames
+  python3-pytest      # python_test: pytest on the module
+  python3-venv        # pip install . into a venv (README, Python)
 )
 
 missing=()

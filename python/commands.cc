@@ -1,0 +1,127 @@
+// Copyright contactlaws authors.
+//
+// The commands as functions: the command line's option parsing (so its
+// messages, word for word) and the library's Advance, with the results kept
+// in memory instead of written as CSV.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bindings.h"
+#include "cli/commands.h"
+#include "cli/impact_csv.h"
+#include "cli/report.h"
+
+namespace contactlaws::python {
+namespace {
+
+namespace py = pybind11;
+
+// Thrown out of Advance's row callback when Ctrl-C arrived (Python's error
+// indicator is set: KeyboardInterrupt follows).
+struct Interrupted {};
+
+cli::RunArgs RunArgsOf(const std::string& scene, const py::dict& kwargs) {
+  cli::RunArgs args;
+  args.scene = scene;
+  if (auto v = OptionalText(kwargs, "duration")) args.duration = *v;
+  if (auto v = OptionalText(kwargs, "sample_rate")) args.sample_rate = *v;
+  args.timestep = OptionalText(kwargs, "timestep");
+  args.max_timestep = OptionalText(kwargs, "max_timestep");
+  args.accuracy = OptionalText(kwargs, "accuracy");
+  args.integrator = OptionalText(kwargs, "integrator");
+  args.columns = OptionalText(kwargs, "columns");
+  args.dissipation = OptionalText(kwargs, "dissipation");
+  args.friction = OptionalText(kwargs, "friction");
+  args.mu = OptionalText(kwargs, "mu");
+  args.law = OptionalText(kwargs, "law");
+  args.restitution = OptionalText(kwargs, "restitution");
+  return args;
+}
+
+// The table run prints: one row per tag.
+py::list SummaryRows(const Simulation& sim, double end_time) {
+  const ContactModel& cm = sim.contact_model();
+  py::list rows;
+  for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
+    const PairTag& tag = cm.tags()[t];
+    std::vector<Impact> impacts;
+    for (const Impact& impact : sim.contacts().impacts()) {
+      if (impact.tag == t) impacts.push_back(impact);
+    }
+    const RunSummary s = Summarize(impacts, end_time);
+    py::object restitution = py::none();
+    if (ReadsRestitution(tag.law)) restitution = py::float_(tag.restitution);
+    rows.append(py::make_tuple(tag.label, std::string(LawName(tag.law)), restitution, s.impacts,
+                               s.restitution_post ? py::object(py::float_(*s.restitution_post))
+                                                  : py::object(py::none()),
+                               s.max_force));
+  }
+  return rows;
+}
+
+// contactlaws run: (columns, rows as an n x columns array, impact columns,
+// impact rows as text fields, summary rows, warnings, divergence message).
+py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
+  const cli::RunArgs args = RunArgsOf(scene_path, kwargs);
+  const cli::CommonOptions common = cli::ParseCommon(args);
+  SimulationOptions options = common.simulation;
+  cli::ParseLawOverrides(args.law, args.restitution, &options.overrides);
+  const Scene scene(args.scene);
+  std::unique_ptr<Simulation> sim = scene.Make(options);
+  std::vector<std::string> warnings;
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  if (!common.auto_timestep) warnings = TimestepWarnings(*sim, advice);
+
+  const std::vector<std::string> columns = sim->Columns();
+  auto values = std::make_unique<std::vector<double>>();
+  AdvanceOptions advance;
+  advance.duration = common.duration;
+  advance.sample_rate = common.sample_rate;
+  advance.auto_timestep = common.auto_timestep;
+  AdvanceResult result;
+  {
+    // stepping without the GIL; every kRowsPerSignalCheck rows, Ctrl-C?
+    constexpr long kRowsPerSignalCheck = 256;
+    long rows = 0;
+    py::gil_scoped_release release;
+    try {
+      result = Advance(sim.get(), advance, [&](const std::vector<double>& row) {
+        values->insert(values->end(), row.begin(), row.end());
+        if (++rows % kRowsPerSignalCheck != 0) return;
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) throw Interrupted{};
+      });
+    } catch (const Interrupted&) {
+      py::gil_scoped_acquire acquire;
+      throw py::error_already_set();
+    }
+  }
+  for (const std::string& w : cli::RunWarnings(*sim, result)) warnings.push_back(w);
+  const double end_time = result.divergence ? result.divergence->time : sim->time();
+  std::string divergence;
+  if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice);
+
+  // the rows as an array that owns the vector
+  const py::ssize_t width = static_cast<py::ssize_t>(columns.size());
+  const py::ssize_t n = static_cast<py::ssize_t>(values->size()) / width;
+  std::vector<double>* owned = values.release();
+  py::capsule free_rows(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  py::array_t<double> trajectory({n, width}, owned->data(), free_rows);
+
+  py::list impact_rows;
+  for (const Impact& impact : cli::ImpactsOf(sim->contacts(), cli::ImpactRows::kCollisions)) {
+    impact_rows.append(cli::ImpactFields(*sim, impact));
+  }
+  return py::make_tuple(columns, trajectory, cli::ImpactColumns(), impact_rows,
+                        SummaryRows(*sim, end_time), warnings, divergence);
+}
+
+}  // namespace
+
+void BindCommands(py::module_& m) {
+  m.def("_run", &Run, py::arg("scene"), py::arg("options"));
+}
+
+}  // namespace contactlaws::python

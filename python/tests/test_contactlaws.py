@@ -1,0 +1,145 @@
+"""contactlaws from Python against the command line on the same scenes."""
+
+import _thread
+import os
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import contactlaws
+
+CLI = os.environ["CONTACTLAWS_CLI"]
+BALL = os.path.join(os.environ["CONTACTLAWS_MJCF"], "bouncing_ball.xml")
+INCLINE = os.path.join(os.environ["CONTACTLAWS_MJCF"], "friction_incline.xml")
+
+
+def cli(*args, check=True):
+    return subprocess.run([CLI, *args], capture_output=True, text=True, check=check)
+
+
+@pytest.mark.parametrize("scene, options", [
+    (BALL, {"law": "hunt-crossley", "restitution": 0.7, "duration": 1}),
+    (INCLINE, {"friction": "coulomb", "mu": 0.3, "duration": 0.5}),
+])
+def test_run_gives_the_command_lines_files(tmp_path, scene, options):
+    out, impacts = tmp_path / "t.csv", tmp_path / "i.csv"
+    flags = [f"--{k}={v}" for k, v in options.items()]
+    printed = cli("run", scene, *flags, "--output", str(out), "--impacts", str(impacts)).stdout
+    result = contactlaws.run(scene, **options)
+    # the CSV's numbers are in their shortest exact form: equal doubles (read
+    # exactly; a column of whole numbers reads as integers)
+    def read(path):
+        return pd.read_csv(path, float_precision="round_trip")
+    pd.testing.assert_frame_equal(result.trajectory, read(out), check_exact=True,
+                                  check_dtype=False)
+    pd.testing.assert_frame_equal(result.impacts, read(impacts), check_exact=True,
+                                  check_dtype=False)
+    # the printed table: one line per pair, its collisions and max force
+    for row, line in zip(result.summary.itertuples(), printed.splitlines()[1:]):
+        fields = line.split()
+        assert fields[0] == row.pair and fields[1] == row.law
+        assert int(fields[3]) == row.collisions
+        # printed with {:.6g}: to half a unit of its sixth digit
+        assert float(fields[5]) == pytest.approx(row[6], rel=5e-6)
+
+
+def test_refused_values_raise_the_command_lines_message():
+    refused = cli("run", BALL, "--restitution=1.5", check=False)
+    assert refused.returncode == 2
+    with pytest.raises(contactlaws.Error) as error:
+        contactlaws.run(BALL, restitution=1.5)
+    assert str(error.value) in refused.stderr
+    assert isinstance(error.value, ValueError)
+    with pytest.raises(contactlaws.Error, match="no_such.xml"):
+        contactlaws.Simulation("no_such.xml")
+    with pytest.raises(contactlaws.Error, match="--law=nope"):
+        contactlaws.Simulation(BALL, law="nope")
+
+
+def test_a_wrong_keyword_is_a_type_error_naming_it():
+    with pytest.raises(TypeError, match="restitutoin"):
+        contactlaws.run(BALL, restitutoin=0.5)
+    with pytest.raises(TypeError, match="restitutoin"):
+        contactlaws.Simulation(BALL, restitutoin=0.5)
+
+
+def test_writing_qpos_moves_the_body():
+    sim = contactlaws.Simulation(BALL)
+    ball = sim.body_names.index("ball")
+    sim.qpos[2] = 3.0  # the free joint's z, m
+    sim.step()
+    assert sim.xpos[ball, 2] == pytest.approx(3.0, abs=1e-6)  # one step of a fall from rest
+    # the views are MuJoCo's memory: the state survives a new view
+    assert sim.qpos[2] == pytest.approx(3.0, abs=1e-6)
+    with pytest.raises(ValueError, match="read-only"):
+        sim.body_mass[ball] = 2.0
+    with pytest.raises(ValueError, match="read-only"):
+        sim.xpos[ball, 2] = 0.0
+
+
+def test_a_simulation_bounces_as_run_does():
+    sim = contactlaws.Simulation(BALL, restitution=0.5)
+    sim.advance(1.0)
+    first = contactlaws.run(BALL, restitution=0.5, duration=1).impacts
+    pd.testing.assert_frame_equal(sim.impacts(), first)
+    # energy: dissipated by the one bounce, the total kept to RK4's error
+    energy = sim.energy()
+    assert energy["dissipated"] > 0
+    # m g h of the 1 kg ball at 1 m, to the ledger's error over one bounce
+    # (measured 1.6e-5 relative)
+    assert energy["total"] == pytest.approx(9.81, rel=1e-4)
+    sim.reset()
+    assert sim.time == 0 and sim.impacts().empty
+
+
+def test_contacts_are_the_points_in_contact():
+    sim = contactlaws.Simulation(BALL)
+    sim.advance(0.42)  # the ball touches at 0.428 s (the impact log)
+    while sim.contacts().empty:
+        sim.step()
+    points = sim.contacts()
+    assert list(points["pair"]) == ["ball-floor"]
+    assert points["depth"][0] > 0 and points["force"][0] > 0
+    assert points["normal_z"][0] == pytest.approx(1.0, abs=1e-9)
+
+
+def test_stepping_releases_the_gil_and_two_simulations_run_in_parallel():
+    sims = [contactlaws.Simulation(BALL) for _ in range(2)]
+    spans = []
+    inside = threading.Event()
+
+    def advance(sim):
+        inside.set()
+        start = time.perf_counter()
+        sim.advance(0.2)
+        spans.append((start, time.perf_counter()))
+
+    threads = [threading.Thread(target=advance, args=(s,)) for s in sims]
+    for t in threads:
+        t.start()
+    inside.wait()
+    spins = 0
+    while any(t.is_alive() for t in threads):
+        spins += 1  # Python running while both threads step
+    for t in threads:
+        t.join()
+    assert spins > 1000
+    # both stepped at once (their spans overlap), and both as one alone does
+    assert max(s for s, _ in spans) < min(e for _, e in spans)
+    alone = contactlaws.Simulation(BALL)
+    alone.advance(0.2)
+    for sim in sims:
+        np.testing.assert_array_equal(sim.qpos, alone.qpos)
+
+
+def test_ctrl_c_interrupts_a_run_and_the_next_runs():
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        contactlaws.run(BALL, duration=1000, timestep=1e-5)
+    timer.join()
+    assert len(contactlaws.run(BALL, duration=0.01).trajectory) == 11
