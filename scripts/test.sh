@@ -75,11 +75,14 @@ asan() {
   # render: Mesa's driver, loaded into the process, is not ours to check for
   # leaks). AppendVisibleContacts, which both use, is checked here. And the
   # stacks standing 10 s (label slow: three minutes under the sanitizers, for
-  # code that box_box_test and the friction tests run here too).
+  # code that box_box_test and the friction tests run here too). And the
+  # Python module's pytest (label python: an instrumented module cannot load
+  # into Debian's python3) and mpi_test (label mpi: Open MPI's own
+  # never-freed allocations are leaks to LeakSanitizer).
   ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-      -LE 'benchmark|consumer|preload|render|slow'
+      -LE 'benchmark|consumer|preload|render|slow|python|mpi'
 }
 
 tsan() {
