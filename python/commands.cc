@@ -46,11 +46,7 @@ py::list SummaryRows(const Simulation& sim, double end_time) {
   py::list rows;
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
     const PairTag& tag = cm.tags()[t];
-    std::vector<Impact> impacts;
-    for (const Impact& impact : sim.contacts().impacts()) {
-      if (impact.tag == t) impacts.push_back(impact);
-    }
-    const RunSummary s = Summarize(impacts, end_time);
+    const RunSummary s = SummarizeTag(sim.contacts(), t, end_time);
     py::object restitution = py::none();
     if (ReadsRestitution(tag.law)) restitution = py::float_(tag.restitution);
     rows.append(py::make_tuple(tag.label, std::string(LawName(tag.law)), restitution, s.impacts,

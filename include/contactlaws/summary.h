@@ -35,6 +35,10 @@ struct RunSummary {
 // pairs; empty when a pair is not at rest, or there was no contact at all.
 RunSummary Summarize(const std::vector<Impact>& impacts, double end_time);
 
+// Summarize of the collisions of one tag (ContactData::impacts() whose tag
+// is tag): the row per tag of `run`'s table and of the Python run().
+RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time);
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_SUMMARY_H_

@@ -46,4 +46,12 @@ RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
   return s;
 }
 
+RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time) {
+  std::vector<Impact> impacts;
+  for (const Impact& impact : contacts.impacts()) {
+    if (impact.tag == tag) impacts.push_back(impact);
+  }
+  return Summarize(impacts, end_time);
+}
+
 }  // namespace contactlaws
