@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/cluster.h"
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
 #include "cli/impact_csv.h"
@@ -95,7 +96,8 @@ void PrintRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
 }  // namespace
 
 int FitCommand(const FitArgs& args) {
-  const Scene scene(args.scene);
+  // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
+  const Scene scene(args.scene, LoadSizedModel(args.scene, Overrides{}));
   const MeasuredData train_data = ReadData("--data", args.data);
   const Replay train(scene, train_data);
   std::optional<MeasuredData> validate_data;

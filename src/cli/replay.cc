@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
 #include "cli/sweep.h"
@@ -9,7 +10,8 @@
 namespace contactlaws::cli {
 
 int ReplayCommand(const ReplayArgs& args) {
-  const Scene scene(args.scene);
+  // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
+  const Scene scene(args.scene, LoadSizedModel(args.scene, Overrides{}));
   const MeasuredData data = ReadData("--data", args.data);
   const Replay replay(scene, data);
   Metric metric = Metric::kEq;
