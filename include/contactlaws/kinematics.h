@@ -31,8 +31,8 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
                    mjtNum vel[3]);
 
 // jn = (J1 - J0)^T n at point (nv entries): the normal relative velocity of
-// pair's bodies per dof. Uses d's stack for scratch.
-void NormalJacobian(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+// pair's bodies per dof (AddPointForce's map of a unit force).
+void NormalJacobian(const mjModel* m, const mjData* d, const GeomPair& pair, const mjtNum point[3],
                     const mjtNum normal[3], mjtNum* jn);
 
 // 1 / (n^T J M^-1 J^T n) at a point, for the two bodies of pair (infinite

@@ -7,6 +7,28 @@
 #include <Eigen/Core>
 
 namespace contactlaws {
+namespace {
+
+// mju_dot3, mju_cross and mju_sub3 in the same order of operations (the
+// same bits), inlined: these run for every point of every RK4 stage, where
+// the calls into libmujoco cost more than the arithmetic.
+inline mjtNum Dot3(const mjtNum a[3], const mjtNum b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline void Cross(mjtNum res[3], const mjtNum a[3], const mjtNum b[3]) {
+  res[0] = a[1] * b[2] - a[2] * b[1];
+  res[1] = a[2] * b[0] - a[0] * b[2];
+  res[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+inline void Sub3(mjtNum res[3], const mjtNum a[3], const mjtNum b[3]) {
+  res[0] = a[0] - b[0];
+  res[1] = a[1] - b[1];
+  res[2] = a[2] - b[2];
+}
+
+}  // namespace
 
 void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
                    const mjtNum force[3], mjtNum* qfrc) {
@@ -17,11 +39,11 @@ void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum poi
   // qfrc_j += f . (lin_j + ang_j x r) = f . lin_j + ang_j . (r x f), with
   // cdof_j = (ang_j, lin_j) at the subtree com of the body's root
   mjtNum r[3], moment[3];
-  mju_sub3(r, point, d->subtree_com + 3 * m->body_rootid[body]);
-  mju_cross(moment, r, force);
+  Sub3(r, point, d->subtree_com + 3 * m->body_rootid[body]);
+  Cross(moment, r, force);
   for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
     const mjtNum* cdof = d->cdof + 6 * j;
-    qfrc[j] += mju_dot3(cdof, moment) + mju_dot3(cdof + 3, force);
+    qfrc[j] += Dot3(cdof, moment) + Dot3(cdof + 3, force);
   }
 }
 
@@ -31,7 +53,7 @@ void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[
   if (b <= 0) return;  // welded to the world: no dofs
   // qfrc_j += ang_j . torque, cdof_j = (ang_j, lin_j)
   for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
-    qfrc[j] += mju_dot3(d->cdof + 6 * j, torque);
+    qfrc[j] += Dot3(d->cdof + 6 * j, torque);
   }
 }
 
@@ -49,23 +71,21 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
   // cvel: (angular, linear) velocity at the subtree com of the body's root
   const mjtNum* cvel = d->cvel + 6 * body;
   mjtNum offset[3], turn[3];
-  mju_sub3(offset, point, d->subtree_com + 3 * m->body_rootid[body]);
-  mju_cross(turn, cvel, offset);
-  mju_add3(vel, cvel + 3, turn);
+  Sub3(offset, point, d->subtree_com + 3 * m->body_rootid[body]);
+  Cross(turn, cvel, offset);
+  for (int i = 0; i < 3; ++i) vel[i] = cvel[3 + i] + turn[i];
 }
 
-void NormalJacobian(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
+void NormalJacobian(const mjModel* m, const mjData* d, const GeomPair& pair, const mjtNum point[3],
                     const mjtNum normal[3], mjtNum* jn) {
-  using RowJacobian = Eigen::Matrix<mjtNum, 3, Eigen::Dynamic, Eigen::RowMajor>;
-  const int nv = m->nv;
-  const int mark = d->pstack;
-  Eigen::Map<RowJacobian> jac0(mj_stackAlloc(d, 3 * nv), 3, nv);
-  Eigen::Map<RowJacobian> jac1(mj_stackAlloc(d, 3 * nv), 3, nv);
-  mj_jac(m, d, jac0.data(), nullptr, point, pair.body[0]);
-  mj_jac(m, d, jac1.data(), nullptr, point, pair.body[1]);
-  Eigen::Map<Eigen::VectorX<mjtNum>>(jn, nv).noalias() =
-      (jac1 - jac0).transpose() * Eigen::Map<const Eigen::Vector3<mjtNum>>(normal);
-  d->pstack = mark;
+  // (J1 - J0)^T n is the generalized force of a unit force n at point on
+  // body[1] and -n on body[0]: each body's chain alone, not two 3 x nv
+  // Jacobians (this runs for every point of every stage)
+  mju_zero(jn, m->nv);
+  mjtNum opposite[3];
+  mju_scl3(opposite, normal, -1);
+  AddPointForce(m, d, pair.body[0], point, opposite, jn);
+  AddPointForce(m, d, pair.body[1], point, normal, jn);
 }
 
 double EffectiveMass(const mjModel* m, mjData* d, const GeomPair& pair, const mjtNum point[3],
