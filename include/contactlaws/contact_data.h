@@ -191,6 +191,9 @@ class ContactData {
   const mjModel* m_;
   mjData* d_;
   mjModel view_;  // m_'s header with this data's options: model_view()
+  // ApplyForces tests every tagged pair, MuJoCo's collision pass is off in
+  // view_ (OwnBroadphase in contact_data.cc)
+  bool own_broadphase_;
 
   std::unique_ptr<mjContact[]> contacts_;  // narrowphase output, mjMAXCONPAIR
 
