@@ -386,4 +386,51 @@ TEST_F(HooksTest, AResetAtTheStartOfAStepIsDatedThereNotAtZero) {
 }
 
 }  // namespace
+// A scene whose every pair is tagged finds its contacts without MuJoCo's
+// broadphase (its collision pass off in the data's options): the same
+// contacts, in the same order, as through the broadphase's proposals, which a
+// fixed box out of every ball's reach forces (an untagged pair that never
+// touches). Three balls dropped on a tumbling box on the floor: multi-point
+// pairs, ball-ball and ball-box contacts.
+TEST_F(HooksTest, OwnBroadphaseFindsTheContactsTheBroadphaseProposes) {
+  auto scene = [](bool untagged) {
+    return fmt::format(R"(<mujoco>
+  <option timestep="2e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1" group="2"/>
+    {}
+    <body pos="0 0 0.15" euler="10 20 0"><freejoint/>
+      <geom type="box" size="0.1 0.1 0.1" mass="1" group="3"/></body>
+    <body pos="0.02 0 0.45"><freejoint/><geom type="sphere" size="0.05" mass="0.2" group="3"/></body>
+    <body pos="-0.03 0.01 0.6"><freejoint/><geom type="sphere" size="0.05" mass="0.2" group="3"/></body>
+    <body pos="0.2 0.01 0.3"><freejoint/><geom type="sphere" size="0.05" mass="0.2" group="3"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:bodies" data="geom1=group:3 geom2=group:3 law=hunt-crossley
+      restitution=0.5 stiffness=1e6 friction=coulomb mu=0.4"/>
+    <text name="contactlaw:floor" data="geom1=group:3 geom2=group:2 law=hunt-crossley
+      restitution=0.5 stiffness=1e6 friction=coulomb mu=0.4"/>
+  </custom>
+</mujoco>)",
+                       untagged ? R"(<geom name="far" type="box" size="0.1 0.1 0.1" pos="50 0 5"/>)"
+                                : "");
+  };
+  std::vector<mjtNum> qpos[2];
+  int points = 0;
+  for (bool untagged : {false, true}) {
+    UniqueModel m = Load(scene(untagged));
+    ContactModel cm(m.get(), "scene");
+    mjData* d = MakeData(m.get());
+    ContactData contacts(cm, d);
+    EXPECT_EQ((contacts.options().disableflags & mjDSBL_CONTACT) != 0, !untagged);
+    for (int i = 0; i < 3000; ++i) {
+      contacts.Step();
+      points = std::max(points, static_cast<int>(contacts.latest().size()));
+    }
+    qpos[untagged].assign(d->qpos, d->qpos + m->nq);
+  }
+  EXPECT_GE(points, 5) << "the box's corners and the balls must be in contact at once";
+  EXPECT_EQ(std::memcmp(qpos[0].data(), qpos[1].data(), sizeof(mjtNum) * qpos[0].size()), 0);
+}
+
 }  // namespace contactlaws
