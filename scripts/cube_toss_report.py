@@ -3,7 +3,7 @@
 
     scripts/cube_toss_report.py results/cube_toss docs
 
-Reads OUT/law-*/ (stage A), OUT/frictions/ (stage B) and OUT/mujoco/ (stage C): each fit's
+Reads OUT/law-*/ (stage A), OUT/refine-*/ (stage B) and OUT/mujoco/ (stage C): each fit's
 ranking.csv, errors.csv and best_trajectories.csv, and OUT/validate.csv; writes
 DOCS/validation.md, DOCS/cube_toss_errors.png and DOCS/cube_toss_trajectory.png.
 """
@@ -32,12 +32,8 @@ def read_csv(path):
 def fits(out):
     """Every fitted combination: (stage, row of ranking.csv, the fit's folder)."""
     rows = []
-    for folder in sorted(f for f in glob.glob(os.path.join(out, "law-*")) if os.path.isdir(f)):
-        for row in read_csv(os.path.join(folder, "ranking.csv")):
-            rows.append(("A", row, folder))
-    for stage, name in (("B", "frictions"), ("C", "mujoco")):
-        folder = os.path.join(out, name)
-        if os.path.isdir(folder):
+    for stage, pattern in (("A", "law-*"), ("B", "refine-*"), ("C", "mujoco")):
+        for folder in sorted(f for f in glob.glob(os.path.join(out, pattern)) if os.path.isdir(f)):
             for row in read_csv(os.path.join(folder, "ranking.csv")):
                 rows.append((stage, row, folder))
     return rows
@@ -203,10 +199,11 @@ def main():
         "",
         "## Every fit",
         "",
-        "Stage A fits every law with coulomb friction, stage B the winner of A with every "
-        "friction model, stage C MuJoCo's own contact (solref's time constant and damping "
-        "ratio, friction) through the same `contactlaws fit`. A '-' is a key the law or model "
-        "does not read.",
+        "Stage A fits every law with every friction model, stage B fits the combinations that A "
+        "ranks best by their training score again with a larger budget, stage C fits MuJoCo's "
+        "own contact (solref's time constant and damping ratio, friction) through the same "
+        "`contactlaws fit` with that larger budget. Rows are sorted by training mean. A '-' is "
+        "a key the law or model does not read.",
         "",
         "| stage | law/friction | " + " | ".join(keys) + " | train mean | train median | "
         "held-out mean | held-out median | held-out p90 | evaluations |",
@@ -224,14 +221,13 @@ def main():
     if edge:
         lines += ["", "At a bound of its range (the search stopped there; a wider range may "
                   "score better): " + ", ".join(edge) + "."]
-    budget = w["evaluations"]
-    lines += ["", f"Each fit had {budget} evaluations (`BUDGET`): with four parameters that is "
-              "a screening, not a converged search. Several laws stop at the same point of the "
-              "seeded search's first population (the same values in their rows), and the "
-              "ranking of the laws within a few hundredths of e_q is not settled at this "
-              "budget; `BUDGET=200 scripts/cube_toss.sh` refines it. With `mu` setting both "
-              "coefficients, stribeck at its default Stribeck velocity is coulomb: their rows "
-              "agree."]
+    budgets = sorted({int(row["evaluations"]) for _, row, _ in rows})
+    lines += ["", f"Evaluations per fit: {', '.join(map(str, budgets))} (`BUDGET`, `REFINE_BUDGET`). "
+              "With four parameters, stage A is a screening: the seeded search's first population "
+              "and a short local search; the ranking of combinations within a few hundredths of "
+              "e_q is not settled by it, which is why stage B refits the best. With `mu` setting "
+              "both coefficients, stribeck at its default Stribeck velocity is coulomb, and "
+              "their rows agree."]
     with open(os.path.join(winner[2], "best_tag.txt")) as f:
         tag = f.read().strip()
     lines += ["", "The winner's tag, as `mjcf/cube_toss.xml` carries it:", "", "```xml", tag, "```",
