@@ -32,7 +32,7 @@ packages=(
   pybind11-dev        # the Python module's bindings
   python3-pandas      # the Python module's DataFrames
   python3-pytest      # python_test: pytest on the module
-  python3-venv        # pip install . into a venv (README, Python)
+  python3-venv        # pip install . into a venv (docs/python.md)
 )
 
 missing=()

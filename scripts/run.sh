@@ -17,7 +17,7 @@
 #                      (scripts/figures_friction.py, docs/friction.md)
 # Each directory holds trajectories.csv (the columns the figures read), impacts.csv and
 # summary.csv. After the build: 25 s of CPU, 16.6 s of wall time on 2 cores at load 1.7
-# (150 s of CPU at the fixed 1e-5 s: docs/performance.md, "Issue 15").
+# (150 s of CPU at the fixed 1e-5 s: docs/performance.md, "scripts/run.sh").
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -32,7 +32,7 @@ table=mjcf/ball_table.xml
 out=results
 mkdir -p "$out"
 
-# Every run steps with --timestep auto (README, "The contact-aware timestep"): the step
+# Every run steps with --timestep auto (docs/timestep.md): the step
 # resolves each contact for the stated --accuracy and grows in flight. The accuracy of each
 # stage is stated beside it, and docs/paper-reproduction.md ("Timestep") compares its
 # numbers with the fixed 1e-5 s answer.
@@ -64,7 +64,7 @@ echo
 echo "== Fig. 7 and its companion: post- against pre-impact restitution, every law =="
 # hunt-crossley-constant reads no e: c = 0.1 s/m (c v0 = 0.42 at the ball's 4.2 m/s)
 # --timestep auto at its default accuracy (1e-3; measured within 1e-5 of the reference in
-# e_post, closer than the fixed 1e-5 s: README, "The contact-aware timestep"): 0.2 s, not 27
+# e_post, closer than the fixed 1e-5 s: docs/timestep.md): 0.2 s, not 27
 "$cl" restitution "$ball" --laws all --dissipation 0.1 --restitution 0.05:1.0:0.05 \
   --timestep auto --output "$out/fig7.csv"
 # the closed-form rebound of each law, from the program's own formulas

@@ -108,7 +108,7 @@ namespace contactlaws {
 // duration.
 inline constexpr double kDefaultAccuracy = 1e-3;
 
-// How the accuracy sets the steps (README, "The contact-aware timestep"):
+// How the accuracy sets the steps (docs/timestep.md):
 // for the Hertz family, steps per contact = 50 (tol0 / tol)^0.45, tol0 =
 // kDefaultAccuracy: with its steps cut at touch and separation, RK4's errors
 // in the rebound, the duration (each end extrapolated to d = 0) and the peak

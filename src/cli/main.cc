@@ -58,7 +58,7 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
   cmd->add_option("--timestep", args->timestep,
                   "s (default: the scene's), or auto: long steps while the tagged pairs are "
-                  "apart, steps that resolve the contact near and in it (README)");
+                  "apart, steps that resolve the contact near and in it (docs/timestep.md)");
   AddNumber(cmd, "--max-timestep", &args->max_timestep,
                   "s, with --timestep auto: an optional cap on every step (default: none)");
   AddNumber(cmd, "--accuracy", &args->accuracy,
@@ -223,7 +223,7 @@ void AddSimulate(CLI::App* app, Commands* c) {
   AddOverrides(c->simulate_cmd, &c->simulate.law, &c->simulate.restitution);
   AddFriction(c->simulate_cmd, &c->simulate.friction, &c->simulate.mu);
   AddNumber(c->simulate_cmd, "--accuracy", &c->simulate.accuracy,
-            "step with the contact-aware timestep (README) at this relative error in a "
+            "step with the contact-aware timestep (docs/timestep.md) at this relative error in a "
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
 }

@@ -12,7 +12,7 @@ void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {
   if (model.tags().empty() && warned->insert("no tags").second) {
     fmt::print(stderr,
                "contactlaws: warning: {}: no contactlaw: tags: MuJoCo's own contact acts on "
-               "every pair (README, Tagging a scene)\n",
+               "every pair (docs/tags.md)\n",
                model.source());
   }
   for (const std::string& w : model.warnings()) {

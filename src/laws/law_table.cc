@@ -3,7 +3,7 @@
 // The table of laws: one row per law. A law of the hysteresis family
 // (F = K d^n (1 + a(e) d'/v0)) is one row here: its name, formula, the keys
 // it reads, its citation, a(e), and whether e = 0 is refused. Nothing else in
-// the library, the command line or the figure scripts names it (README,
+// the library, the command line or the figure scripts names it (docs/laws.md,
 // "Adding a law"). docs/laws.md sets the laws side by side.
 //
 // Citations marked (*) are as the reviews list them (Machado et al., Mech.

@@ -50,7 +50,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
         "{}{}: {} collision{} touched slowly and then compressed far faster (the first at "
         "t = {:.6g} s: touched at {:.4g} m/s, compressed at {:.4g} m/s): pushed while in "
         "contact (a pulse through touching bodies, or a body tipping onto the point); the "
-        "law's v0 was the largest approach rate, and e_post is taken against it (README, "
+        "law's v0 was the largest approach rate, and e_post is taken against it (docs/laws.md, "
         "Touching chains)",
         PairName(sim, first->pair), others, count, count == 1 ? "" : "s", point->time_contact,
         point->impact_velocity, point->max_approach_velocity));

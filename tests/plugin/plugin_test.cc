@@ -29,7 +29,7 @@ using testing::ProgramResult;
 using testing::RunProgram;
 
 // The rebound of the Hertz-family laws against ExactRebound at 1e-5 s, 4.2
-// m/s, RK4: within 2e-5 (README, Verified); the law tests hold it to 2e-4.
+// m/s, RK4: within 2e-5 (docs/testing.md); the law tests hold it to 2e-4.
 constexpr double kReboundTolerance = 2e-4;
 // MuJoCo's own soft contact is no Flores contact at e = 0.9: its rebound is
 // farther than this from the law's (measured: 0.135 against 0.894).
@@ -37,7 +37,7 @@ constexpr double kMujocoDifference = 0.05;
 // The paper's impact speed, sqrt(2 g 0.9), m/s.
 constexpr double kImpactSpeed = 4.2;
 // CONTACTLAWS_ACCURACY: the relative error the auto timestep accepts in the
-// rebound (README: delivered within 1.0e-5 at this accuracy).
+// rebound (docs/timestep.md: delivered within 1.0e-5 at this accuracy).
 constexpr double kAccuracy = 1e-3;
 // The fixed 1e-5 s takes ~630 steps from 2 cm above the floor until the ball
 // is 1 mm clear of it again (4.8 ms of approach, the 1.3 ms contact); the auto
