@@ -17,6 +17,10 @@
 
 #include "contactlaws/contactlaws.h"
 
+namespace contactlaws::cli {
+struct CommonArgs;
+}  // namespace contactlaws::cli
+
 namespace contactlaws::python {
 
 // A Simulation's data, to write its state and to run mj_forward.
@@ -35,12 +39,17 @@ inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, con
   return pybind11::str(kwargs[key]).cast<std::string>();
 }
 
+// The keywords of the options run, compare and restitution share (duration,
+// sample_rate, timestep, ..., settle) into args.
+void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
+
 // A scene with the overrides the keywords give (law, restitution, friction,
 // mu, timestep).
 std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const pybind11::dict& kwargs);
 
 void BindSimulation(pybind11::module_& m);
 void BindCommands(pybind11::module_& m);
+void BindFileCommands(pybind11::module_& m);
 
 }  // namespace contactlaws::python
 

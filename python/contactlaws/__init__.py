@@ -11,8 +11,11 @@ import numpy as _np
 import pandas as _pd
 
 from ._contactlaws import Error, _run, _Simulation
+from .commands import (CompareResult, FitResult, LawTables, ReplayResult, check, compare, fit,
+                       laws, replay, restitution)
 
-__all__ = ["Error", "Simulation", "RunResult", "run"]
+__all__ = ["Error", "Simulation", "RunResult", "run", "compare", "restitution", "replay", "fit",
+           "laws", "check", "CompareResult", "ReplayResult", "FitResult", "LawTables"]
 
 
 class RunResult:
@@ -39,7 +42,7 @@ def _impact_frame(columns, rows):
 
 def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipation=None,
         duration=2, timestep=None, max_timestep=None, accuracy=None, integrator=None,
-        sample_rate=1000, columns=None):
+        sample_rate=1000, columns=None, settle=False):
     """Run a scene as `contactlaws run` does.
 
     scene: an MJCF file with contactlaw tags. law, restitution (e in [0, 1]),
@@ -47,13 +50,14 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     duration: s of simulated time. timestep: s, or "auto" (then accuracy, the
     relative error, and max_timestep, s). sample_rate: trajectory rows per
     simulated second. columns: "bodies,joints,pairs,friction,energy" or a part.
+    settle: the bodies in contact at t = 0 moved into their static equilibrium.
     Returns a RunResult; a diverged run keeps its rows up to the divergence,
     and warns.
     """
     options = dict(law=law, restitution=restitution, friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
-                   sample_rate=sample_rate, columns=columns)
+                   sample_rate=sample_rate, columns=columns, settle=settle)
     names, rows, impact_columns, impact_rows, summary, messages, divergence = _run(
         str(scene), options)
     for message in messages:
