@@ -1,8 +1,6 @@
 // Copyright contactlaws authors.
 //
-// What the pieces of the extension module share. The calls of the library
-// API that are being reworked (a Simulation's mutable data, its timestep)
-// live here only, so that adapting to the new API is this file.
+// What the pieces of the extension module share.
 
 #ifndef CONTACTLAWS_PYTHON_BINDINGS_H_
 #define CONTACTLAWS_PYTHON_BINDINGS_H_
@@ -25,11 +23,6 @@ namespace contactlaws::python {
 
 // A Simulation's data, to write its state and to run mj_forward.
 inline mjData* MutableData(Simulation* sim) { return sim->data(); }
-
-// The length of the following steps, s (> 0; the scene keeps it per model).
-inline void SetTimestep(Simulation* sim, double timestep) {
-  const_cast<mjModel*>(sim->model())->opt.timestep = timestep;
-}
 
 // A keyword argument as the command line's text: absent or None -> nullopt,
 // a str as is, anything else as Python's str() of it (a float's shortest

@@ -10,7 +10,7 @@ import warnings as _warnings
 import numpy as _np
 import pandas as _pd
 
-from ._contactlaws import Error, _run, _Simulation
+from ._contactlaws import Error, _parse_timestep, _run, _Simulation
 from .commands import (CompareResult, FitResult, LawTables, ReplayResult, check, compare, fit,
                        laws, replay, restitution)
 
@@ -88,6 +88,25 @@ class Simulation(_Simulation):
             if key not in self._KEYWORDS:
                 raise TypeError(f"Simulation() got an unexpected keyword argument '{key}'")
         super().__init__(str(scene), overrides)
+        self._timestep = self._initial_timestep
+
+    @property
+    def timestep(self):
+        """The length of the following steps, s (> 0)."""
+        return self._timestep
+
+    @timestep.setter
+    def timestep(self, value):
+        self._timestep = _parse_timestep(value)
+
+    def step(self):
+        """One step of timestep s, the laws active (GIL released)."""
+        self._step(self._timestep)
+
+    def advance(self, t):
+        """Steps of timestep s until the time reaches t, s (GIL released;
+        Ctrl-C stops it at a step's end and raises KeyboardInterrupt)."""
+        self._advance(t, self._timestep)
 
     def contacts(self):
         """The tagged contact points of the last step, one row each: pair,
