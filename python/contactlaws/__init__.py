@@ -51,8 +51,9 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     relative error, and max_timestep, s). sample_rate: trajectory rows per
     simulated second. columns: "bodies,joints,pairs,friction,energy" or a part.
     settle: the bodies in contact at t = 0 moved into their static equilibrium.
-    Returns a RunResult; a diverged run keeps its rows up to the divergence,
-    and warns.
+    Returns a RunResult: .trajectory (time s, positions m, velocities m/s,
+    forces N, energies J), .impacts, .summary; a diverged run keeps its rows
+    up to the divergence, and warns.
     """
     options = dict(law=law, restitution=restitution, friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
