@@ -1,8 +1,6 @@
 // Copyright contactlaws authors.
 //
-// What the pieces of the extension module share. The calls of the library
-// API that are being reworked (a Simulation's mutable data, its timestep)
-// live here only, so that adapting to the new API is this file.
+// What the pieces of the extension module share.
 
 #ifndef CONTACTLAWS_PYTHON_BINDINGS_H_
 #define CONTACTLAWS_PYTHON_BINDINGS_H_
@@ -17,15 +15,14 @@
 
 #include "contactlaws/contactlaws.h"
 
+namespace contactlaws::cli {
+struct CommonArgs;
+}  // namespace contactlaws::cli
+
 namespace contactlaws::python {
 
 // A Simulation's data, to write its state and to run mj_forward.
 inline mjData* MutableData(Simulation* sim) { return sim->data(); }
-
-// The length of the following steps, s (> 0; the scene keeps it per model).
-inline void SetTimestep(Simulation* sim, double timestep) {
-  const_cast<mjModel*>(sim->model())->opt.timestep = timestep;
-}
 
 // A keyword argument as the command line's text: absent or None -> nullopt,
 // a str as is, anything else as Python's str() of it (a float's shortest
@@ -35,12 +32,17 @@ inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, con
   return pybind11::str(kwargs[key]).cast<std::string>();
 }
 
+// The keywords of the options run, compare and restitution share (duration,
+// sample_rate, timestep, ..., settle) into args.
+void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
+
 // A scene with the overrides the keywords give (law, restitution, friction,
 // mu, timestep).
 std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const pybind11::dict& kwargs);
 
 void BindSimulation(pybind11::module_& m);
 void BindCommands(pybind11::module_& m);
+void BindFileCommands(pybind11::module_& m);
 
 }  // namespace contactlaws::python
 

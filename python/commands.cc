@@ -25,16 +25,7 @@ struct Interrupted {};
 cli::RunArgs RunArgsOf(const std::string& scene, const py::dict& kwargs) {
   cli::RunArgs args;
   args.scene = scene;
-  if (auto v = OptionalText(kwargs, "duration")) args.duration = *v;
-  if (auto v = OptionalText(kwargs, "sample_rate")) args.sample_rate = *v;
-  args.timestep = OptionalText(kwargs, "timestep");
-  args.max_timestep = OptionalText(kwargs, "max_timestep");
-  args.accuracy = OptionalText(kwargs, "accuracy");
-  args.integrator = OptionalText(kwargs, "integrator");
-  args.columns = OptionalText(kwargs, "columns");
-  args.dissipation = OptionalText(kwargs, "dissipation");
-  args.friction = OptionalText(kwargs, "friction");
-  args.mu = OptionalText(kwargs, "mu");
+  TakeCommon(kwargs, &args);
   args.law = OptionalText(kwargs, "law");
   args.restitution = OptionalText(kwargs, "restitution");
   return args;

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_contactlaws, m) {
   pybind11::register_exception<contactlaws::Error>(m, "Error", PyExc_ValueError);
   contactlaws::python::BindSimulation(m);
   contactlaws::python::BindCommands(m);
+  contactlaws::python::BindFileCommands(m);
 }

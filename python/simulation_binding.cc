@@ -39,14 +39,15 @@ std::vector<std::string> Names(const mjModel* m, int count, mjtObj type) {
   return names;
 }
 
-// Steps sim to time t (s), GIL released, in slices between which Ctrl-C is
-// checked (it raises KeyboardInterrupt, the state stays at a step's end).
-void AdvanceTo(Simulation* sim, double t) {
+// Steps sim to time t (s) in steps of timestep (s), GIL released, in slices
+// between which Ctrl-C is checked (it raises KeyboardInterrupt, the state
+// stays at a step's end).
+void AdvanceTo(Simulation* sim, double t, double timestep) {
   constexpr int kStepsPerSignalCheck = 1000;  // ~1 ms of stepping a ball
   while (sim->time() < t) {
     {
       py::gil_scoped_release release;
-      for (int i = 0; i < kStepsPerSignalCheck && sim->time() < t; ++i) sim->Step();
+      for (int i = 0; i < kStepsPerSignalCheck && sim->time() < t; ++i) sim->Step(timestep);
     }
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   }
@@ -68,58 +69,76 @@ std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const py::d
 }
 
 void BindSimulation(py::module_& m) {
+  // a step length as the command line reads --timestep (its message)
+  m.def("_parse_timestep", [](const py::object& value) {
+    return cli::ParsePositive("--timestep", std::string(py::str(value)), "s");
+  });
   py::class_<Simulation>(m, "_Simulation")
       .def(py::init([](const std::string& scene, const py::dict& overrides) {
              return MakeSimulation(scene, overrides);
            }),
            py::arg("scene"), py::arg("overrides"))
-      .def("step", [](Simulation& sim) {
+      // steps of the length the package keeps (Simulation.timestep)
+      .def("_step", [](Simulation& sim, double timestep) {
              py::gil_scoped_release release;
-             sim.Step();
+             sim.Step(timestep);
            })
-      .def("advance", &AdvanceTo, py::arg("t"))
-      .def("reset", [](Simulation& sim) { sim.Reset(); })
-      .def_property_readonly("time", &Simulation::time)
-      .def_property("timestep",
-                    [](const Simulation& sim) { return sim.model()->opt.timestep; },
-                    [](Simulation& sim, double dt) { SetTimestep(&sim, dt); })
+      .def("_advance", &AdvanceTo, py::arg("t"), py::arg("timestep"))
+      .def("reset", [](Simulation& sim) { sim.Reset(); },
+           "back to the initial state (keyframe 0 or qpos0), time 0, no impacts")
+      .def_property_readonly("time", &Simulation::time, "the simulated time, s")
+      // the scene's timestep, or the one given (SimulationOptions::timestep)
+      .def_property_readonly("_initial_timestep",
+                             [](const Simulation& sim) { return sim.model()->opt.timestep; })
       .def_property_readonly("qpos", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(MutableData(&sim)->qpos, sim.model()->nq, 1, self, true);
-           })
+           },
+           "mjData.qpos, writable: the joints' positions (m, rad; a free joint: m and "
+           "a unit quaternion)")
       .def_property_readonly("qvel", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(MutableData(&sim)->qvel, sim.model()->nv, 1, self, true);
-           })
+           },
+           "mjData.qvel, writable: the joints' velocities (m/s, rad/s)")
       .def_property_readonly("ctrl", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(MutableData(&sim)->ctrl, sim.model()->nu, 1, self, true);
-           })
+           },
+           "mjData.ctrl, writable: the actuators' controls (their units)")
       .def_property_readonly("xfrc_applied", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(MutableData(&sim)->xfrc_applied, sim.model()->nbody, 6, self, true);
-           })
+           },
+           "mjData.xfrc_applied, writable (nbody x 6): force N and torque N m on each "
+           "body, world frame")
       .def_property_readonly("xpos", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(MutableData(&sim)->xpos, sim.model()->nbody, 3, self, false);
-           })
+           },
+           "mjData.xpos, read-only (nbody x 3): the bodies' positions, m, world frame")
       .def_property_readonly("body_mass", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(sim.model()->body_mass, sim.model()->nbody, 1, self, false);
-           })
+           },
+           "mjModel.body_mass, read-only: kg")
       .def_property_readonly("geom_size", [](py::object self) {
              Simulation& sim = self.cast<Simulation&>();
              return View(sim.model()->geom_size, sim.model()->ngeom, 3, self, false);
-           })
+           },
+           "mjModel.geom_size, read-only (ngeom x 3): m")
       .def_property_readonly("body_names", [](const Simulation& sim) {
              return Names(sim.model(), sim.model()->nbody, mjOBJ_BODY);
-           })
+           },
+           "the bodies' names, in MuJoCo's order")
       .def_property_readonly("joint_names", [](const Simulation& sim) {
              return Names(sim.model(), sim.model()->njnt, mjOBJ_JOINT);
-           })
+           },
+           "the joints' names, in MuJoCo's order")
       .def_property_readonly("geom_names", [](const Simulation& sim) {
              return Names(sim.model(), sim.model()->ngeom, mjOBJ_GEOM);
-           })
+           },
+           "the geoms' names, in MuJoCo's order")
       .def("_contacts", [](const Simulation& sim) {
              // the points evaluated at the last step, as columns
              const auto& latest = sim.contacts().latest();
@@ -166,7 +185,9 @@ void BindSimulation(py::module_& m) {
              ledger["dissipated"] = e.dissipated;
              ledger["total"] = e.total();
              return ledger;
-           });
+           },
+           "the energy ledger, J: kinetic, potential, elastic (stored in the contacts), "
+           "dissipated (by the laws and friction), total");
 }
 
 }  // namespace contactlaws::python

@@ -33,6 +33,8 @@ packages=(
   python3-pandas      # the Python module's DataFrames
   python3-pytest      # python_test: pytest on the module
   python3-venv        # pip install . into a venv (docs/python.md)
+  jupyter-nbconvert   # python_notebook: jupyter nbconvert --execute examples/quickstart.ipynb
+  python3-ipykernel   # the notebook's kernel (Debian's python3, its numpy, pandas, matplotlib)
 )
 
 missing=()

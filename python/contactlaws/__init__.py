@@ -10,9 +10,12 @@ import warnings as _warnings
 import numpy as _np
 import pandas as _pd
 
-from ._contactlaws import Error, _run, _Simulation
+from ._contactlaws import Error, _parse_timestep, _run, _Simulation
+from .commands import (CompareResult, FitResult, LawTables, ReplayResult, check, compare, fit,
+                       laws, replay, restitution)
 
-__all__ = ["Error", "Simulation", "RunResult", "run"]
+__all__ = ["Error", "Simulation", "RunResult", "run", "compare", "restitution", "replay", "fit",
+           "laws", "check", "CompareResult", "ReplayResult", "FitResult", "LawTables"]
 
 
 class RunResult:
@@ -39,7 +42,7 @@ def _impact_frame(columns, rows):
 
 def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipation=None,
         duration=2, timestep=None, max_timestep=None, accuracy=None, integrator=None,
-        sample_rate=1000, columns=None):
+        sample_rate=1000, columns=None, settle=False):
     """Run a scene as `contactlaws run` does.
 
     scene: an MJCF file with contactlaw tags. law, restitution (e in [0, 1]),
@@ -47,13 +50,15 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     duration: s of simulated time. timestep: s, or "auto" (then accuracy, the
     relative error, and max_timestep, s). sample_rate: trajectory rows per
     simulated second. columns: "bodies,joints,pairs,friction,energy" or a part.
-    Returns a RunResult; a diverged run keeps its rows up to the divergence,
-    and warns.
+    settle: the bodies in contact at t = 0 moved into their static equilibrium.
+    Returns a RunResult: .trajectory (time s, positions m, velocities m/s,
+    forces N, energies J), .impacts, .summary; a diverged run keeps its rows
+    up to the divergence, and warns.
     """
     options = dict(law=law, restitution=restitution, friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
-                   sample_rate=sample_rate, columns=columns)
+                   sample_rate=sample_rate, columns=columns, settle=settle)
     names, rows, impact_columns, impact_rows, summary, messages, divergence = _run(
         str(scene), options)
     for message in messages:
@@ -84,6 +89,25 @@ class Simulation(_Simulation):
             if key not in self._KEYWORDS:
                 raise TypeError(f"Simulation() got an unexpected keyword argument '{key}'")
         super().__init__(str(scene), overrides)
+        self._timestep = self._initial_timestep
+
+    @property
+    def timestep(self):
+        """The length of the following steps, s (> 0)."""
+        return self._timestep
+
+    @timestep.setter
+    def timestep(self, value):
+        self._timestep = _parse_timestep(value)
+
+    def step(self):
+        """One step of timestep s, the laws active (GIL released)."""
+        self._step(self._timestep)
+
+    def advance(self, t):
+        """Steps of timestep s until the time reaches t, s (GIL released;
+        Ctrl-C stops it at a step's end and raises KeyboardInterrupt)."""
+        self._advance(t, self._timestep)
 
     def contacts(self):
         """The tagged contact points of the last step, one row each: pair,

@@ -143,3 +143,21 @@ def test_ctrl_c_interrupts_a_run_and_the_next_runs():
         contactlaws.run(BALL, duration=1000, timestep=1e-5)
     timer.join()
     assert len(contactlaws.run(BALL, duration=0.01).trajectory) == 11
+
+
+def test_the_timestep_set_is_the_length_of_the_following_steps():
+    sim = contactlaws.Simulation(BALL, timestep=1e-3)
+    assert sim.timestep == 1e-3
+    sim.step()
+    sim.timestep = 2.5e-4
+    sim.step()
+    assert sim.time == pytest.approx(1.25e-3, abs=1e-15)  # 1e-3 + 2.5e-4, s
+    sim.advance(2e-3)  # three more steps of 2.5e-4 s
+    assert sim.time == pytest.approx(2e-3, abs=1e-15)
+    # a second simulation of the scene keeps the scene's own timestep
+    assert contactlaws.Simulation(BALL).timestep == 1e-5
+    refused = cli("run", BALL, "--timestep=-1", check=False)
+    with pytest.raises(contactlaws.Error) as error:
+        sim.timestep = -1
+    assert refused.stderr == f"contactlaws: {error.value}\n"
+    assert sim.timestep == 2.5e-4

@@ -17,17 +17,16 @@ namespace contactlaws::cli {
 namespace {
 
 // The scene's MuJoCo settings, and the rule the estimates are held to.
-void PrintSettings(const Simulation& sim) {
+void PrintSettings(const Simulation& sim, std::FILE* out) {
   const mjModel* m = sim.model();
   const char* integrators[] = {"euler", "rk4", "implicit"};
 
-  fmt::print("{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
-             sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10,
-             MujocoVersion() % 10, m->opt.timestep,
-             m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator]
-                                                              : "?",
+  fmt::print(out, "{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
+             sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10, MujocoVersion() % 10,
+             m->opt.timestep,
+             m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator] : "?",
              m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
-  fmt::print("rule: a contact is resolved by >= {} steps of its estimated duration\n",
+  fmt::print(out, "rule: a contact is resolved by >= {} steps of its estimated duration\n",
              kStepsPerContact);
 }
 
@@ -35,27 +34,28 @@ void PrintSettings(const Simulation& sim) {
 // (EstimateTangential: kStepsPerContact steps per period); true when the
 // timestep is too coarse.
 bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                   double dt, std::optional<double> accuracy) {
+                   double dt, std::optional<double> accuracy, std::FILE* out) {
   const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   if (f.kind == FrictionKind::kNone) {
-    fmt::print("  friction none{}\n", pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
+    fmt::print(out, "  friction none{}\n",
+               pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
     return false;
   }
-  fmt::print("  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n", FrictionName(f.kind),
-             f.mu_static, f.mu_kinetic, pair.condim,
+  fmt::print(out, "  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n",
+             FrictionName(f.kind), f.mu_static, f.mu_kinetic, pair.condim,
              f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
              f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
   const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
-    fmt::print("  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n", t.what,
-               t.Span(), 2 * t.duration / StepsPerContact(*accuracy));
+    fmt::print(out, "  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n",
+               t.what, t.Span(), 2 * t.duration / StepsPerContact(*accuracy));
     return false;
   }
   const double step = t.timestep();
   const bool ok = !(std::isfinite(step)) || dt <= step;
-  fmt::print("  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
+  fmt::print(out, "  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
              ok ? "ok" : "TOO COARSE", step);
   return !ok;
 }
@@ -64,31 +64,34 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
 // settling at the v0 floor: EstimateResting); true when the timestep is too
 // coarse for it.
 bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                  double dt, bool automatic) {
+                  double dt, bool automatic, std::FILE* out) {
   const RestingEstimate r = EstimateResting(cm, pair_index, estimate);
   if (!std::isfinite(r.lag)) return false;
   const bool ok = automatic || dt <= r.timestep();
-  fmt::print("  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
+  fmt::print(out,
+             "  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
              "{} (needs timestep <= {:.3g} s{})\n",
              r.lag, r.load, cm.pairs()[pair_index].params.min_impact_velocity,
-             automatic ? "--timestep auto keeps to it" : ok ? "ok" : "TOO COARSE", r.timestep(),
-             ok ? "" : ", or a larger min_impact_velocity");
+             automatic ? "--timestep auto keeps to it"
+             : ok      ? "ok"
+                       : "TOO COARSE",
+             r.timestep(), ok ? "" : ", or a larger min_impact_velocity");
   return !ok;
 }
 
 // Tag t resolved, its estimated contact and the timestep it needs; true when
 // the timestep is too coarse for the estimate.
 bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
-              std::optional<double> accuracy) {
+              std::optional<double> accuracy, std::FILE* out) {
   const mjModel* m = sim->model();
   const ContactModel& cm = sim->contact_model();
   const double dt = m->opt.timestep;
   const PairTag& tag = cm.tags()[t];
   const LawParams& law = cm.pairs()[tag.pairs.front()].params;
-  fmt::print("\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
+  fmt::print(out, "\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
              tag.geom2, tag.pairs.size(), LawName(law.kind));
   if (Law(law.kind).family == LawFamily::kLinear) {
-    fmt::print("  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
+    fmt::print(out, "  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
                law.linear_stiffness,
                law.damping ? fmt::format("{} N s/m", *law.damping)
                            : std::string("from e and the effective mass at each contact"));
@@ -98,10 +101,10 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
             ? fmt::format("dissipation c {} s/m (a = c v0)", *law.dissipation)
             : fmt::format("restitution {}{}", Field(ReportedRestitution(law.kind, law.restitution)),
                           IsElastic(law.kind) ? " (elastic)" : "");
-    fmt::print("  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
+    fmt::print(out, "  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
                law.exponent, law.exponent);
   }
-  fmt::print("  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
+  fmt::print(out, "  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
              law.allow_tension ? ", allow_tension" : "");
 
   // the pair of this tag whose contact is shortest decides the timestep
@@ -109,7 +112,7 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
   const int worst = shortest.pair;
   const ContactEstimate& estimate = shortest.estimate;
   const GeomPair& pair = cm.pairs()[worst];
-  fmt::print("  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
+  fmt::print(out, "  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
              tag.pairs.size() > 1 ? "shortest contact: " : "",
              ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
              estimate.effective_mass,
@@ -122,17 +125,18 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
                         *estimate.looked_ahead)
           : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
                         "speed");
-  fmt::print("  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
+  fmt::print(out, "  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
   // both lines are printed, whatever the first says
-  const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy);
-  const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value());
+  const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy, out);
+  const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value(), out);
   const bool side_coarse = friction_coarse || resting_coarse;  // beside the duration
   if (!std::isfinite(estimate.contact_duration)) {
-    fmt::print("  contact duration: not estimated (nothing brings the geoms together, or "
+    fmt::print(out,
+               "  contact duration: not estimated (nothing brings the geoms together, or "
                "neither can move); give --impact-velocity\n");
     return side_coarse;  // nothing to hold the normal's timestep to
   }
-  fmt::print("  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
+  fmt::print(out, "  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
              Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
              estimate.contact_duration);
   if (accuracy) {
@@ -140,30 +144,32 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
     const double per_contact = Law(law.kind).family == LawFamily::kLinear
                                    ? KelvinVoigtStepsPerContact(*accuracy)
                                    : StepsPerContact(*accuracy);
-    fmt::print("  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
+    fmt::print(out,
+               "  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
                "contact, accuracy {})\n",
                estimate.contact_duration / per_contact, per_contact, *accuracy);
     return side_coarse;
   }
   const double steps = estimate.contact_duration / dt;
   const bool ok = steps >= kStepsPerContact;
-  fmt::print("  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
-             ok ? "ok" : "TOO COARSE", estimate.timestep());
+  fmt::print(out, "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps,
+             dt, ok ? "ok" : "TOO COARSE", estimate.timestep());
   return !ok || side_coarse;
 }
 
-void PrintDrives(const Simulation& sim) {
+void PrintDrives(const Simulation& sim, std::FILE* out) {
   const mjModel* m = sim.model();
   const ContactModel& cm = sim.contact_model();
-  fmt::print("\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
+  fmt::print(out, "\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
   for (const Drive& drive : cm.drives()) {
     if (drive.motion == Drive::Motion::kLinear) {
-      fmt::print("contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
+      fmt::print(out, "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
                  drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
                  drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.speed);
       continue;
     }
-    fmt::print("contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
+    fmt::print(out,
+               "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
                "* t + {} rad), top speed {:.6g} m/s\n",
                drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
                drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.amplitude,
@@ -195,14 +201,15 @@ int CheckCommand(const CheckArgs& args) {
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
   mj_forward(sim->model(), sim->data());
-  PrintSettings(*sim);
+  std::FILE* out = args.report;
+  PrintSettings(*sim, out);
   int coarse = 0;
   const int tags = static_cast<int>(sim->contact_model().tags().size());
-  fmt::print("\n{} contactlaw tag(s)\n", tags);
-  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, accuracy);
-  PrintDrives(*sim);
+  fmt::print(out, "\n{} contactlaw tag(s)\n", tags);
+  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, accuracy, out);
+  PrintDrives(*sim, out);
   if (coarse) {
-    fmt::print("\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);
+    fmt::print(out, "\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);
   }
   return 0;
 }

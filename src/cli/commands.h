@@ -7,6 +7,7 @@
 #define CONTACTLAWS_CLI_COMMANDS_H_
 
 #include <atomic>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -43,6 +44,7 @@ struct CheckArgs {
   std::optional<std::string> timestep;
   std::optional<std::string> accuracy;  // auto's accuracy; implies --timestep auto
   std::optional<std::string> impact_velocity;
+  std::FILE* report = stdout;  // where the report is printed
 };
 
 // contactlaws simulate: mujoco-simulate with the plugin preloaded.
@@ -77,6 +79,8 @@ int CheckCommand(const CheckArgs& args);
 struct LawsArgs {
   std::string format = "text";             // text or csv
   std::optional<std::string> restitution;  // csv: E1,E2,... or start:stop:step
+  std::string output = "-";                // csv: the file, "-" for stdout
+  std::FILE* report = stdout;              // text: where the tables are printed
 };
 
 int LawsCommand(const LawsArgs& args);

@@ -139,19 +139,19 @@ std::string RunCells(const RunSpec& spec, const std::string& restitution, bool f
   return cells;
 }
 
-void PrintTable(const std::vector<TableRow>& rows, bool frictions) {
-  fmt::print("{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
+void PrintTable(const std::vector<TableRow>& rows, bool frictions, std::FILE* out) {
+  fmt::print(out, "{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
              "restitution", frictions ? fmt::format(" {:<11}", "friction") : "", "collisions",
              "first e_post", "max depth (m)", "max force (N)", "duration (s)", "at rest (s)",
              "dissipated (J)");
   for (const TableRow& r : rows) {
     const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
     if (r.status != RunOutput::Status::kOk) {
-      fmt::print("{} {}\n", cells, StatusName(r.status));
+      fmt::print(out, "{} {}\n", cells, StatusName(r.status));
       continue;
     }
-    fmt::print("{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells, r.s.impacts,
-               Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
+    fmt::print(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
+               r.s.impacts, Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
                Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
                r.dissipated);
   }
@@ -191,8 +191,9 @@ int CompareCommand(const SweepArgs& args) {
                            });
   files.Commit();
 
-  PrintTable(rows, frictions);
-  fmt::print("wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n", args.output_dir);
+  PrintTable(rows, frictions, args.report);
+  fmt::print(args.report, "wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n",
+             args.output_dir);
   return status;
 }
 

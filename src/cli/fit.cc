@@ -257,9 +257,10 @@ int FitCommand(const FitArgs& args) {
   ranking.Commit();
   errors.Commit();
   best_trajectories.Commit();
-  PrintRanking(fitted, parameters, metric, validate.has_value(), stdout);
-  fmt::print("best ({}):\n{}", winner.label, tag);
-  fmt::print("wrote {0}/ranking.csv, {0}/errors.csv, {0}/best_trajectories.csv, {0}/best_tag.txt\n",
+  PrintRanking(fitted, parameters, metric, validate.has_value(), args.report);
+  fmt::print(args.report, "best ({}):\n{}", winner.label, tag);
+  fmt::print(args.report,
+             "wrote {0}/ranking.csv, {0}/errors.csv, {0}/best_trajectories.csv, {0}/best_tag.txt\n",
              dir);
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the best result so far is written\n");

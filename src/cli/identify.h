@@ -6,6 +6,7 @@
 #ifndef CONTACTLAWS_CLI_IDENTIFY_H_
 #define CONTACTLAWS_CLI_IDENTIFY_H_
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct ReplayArgs : CommonArgs {
   std::optional<std::string> restitution;
   std::vector<std::string> set;        // KEY=VALUE on every tag
   bool quiet = false;
+  std::FILE* report = stdout;  // where the scores are printed
 };
 
 struct FitArgs : ReplayArgs {

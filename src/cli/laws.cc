@@ -38,21 +38,22 @@ std::string EffectiveLine(const LawInfo& law, const std::vector<double>& restitu
   return line;
 }
 
-void PrintText() {
+void PrintText(std::FILE* out) {
   const std::vector<double> restitutions =
       ParseRestitutionList("--restitution", kDefaultRestitutions);
-  fmt::print("Convention: depth d > 0 in contact (m), depth rate d' > 0 approaching (m/s),\n"
+  fmt::print(out,
+             "Convention: depth d > 0 in contact (m), depth rate d' > 0 approaching (m/s),\n"
              "v0 = d' at first touch (m/s, floored by min_impact_velocity, default {} m/s),\n"
              "force F >= 0 pushes apart (N); F = 0 for d <= 0; clamped to F >= 0 unless\n"
              "allow_tension=true. effective e: the first rebound, gravity neglected, of a\n"
              "first impact at e (a (1 + e_post) = ln((1 + a)/(1 - a e_post))).\n",
              kDefaultMinImpactVelocity);
   for (const LawInfo& law : Laws()) {
-    fmt::print("\n{}\n  {}\n  parameters: {}\n  effective e: {}\n  reference:  {}\n",
-               law.name, law.formula, law.parameters, EffectiveLine(law, restitutions),
-               law.reference);
+    fmt::print(out, "\n{}\n  {}\n  parameters: {}\n  effective e: {}\n  reference:  {}\n", law.name,
+               law.formula, law.parameters, EffectiveLine(law, restitutions), law.reference);
   }
-  fmt::print("\nFriction models (tag key friction=, --friction; docs/friction.md). Convention:\n"
+  fmt::print(out,
+             "\nFriction models (tag key friction=, --friction; docs/friction.md). Convention:\n"
              "slip v of geom2's body relative to geom1's at the contact point, force F on it\n"
              "opposing the slip, normal force F_n from the law; default coulomb when the pair\n"
              "has friction (condim > 1), mu from the geoms' friction (the larger, as MuJoCo).\n"
@@ -61,16 +62,16 @@ void PrintText() {
              "rolling_friction x F_n (condim 6): tag keys, m >= 0 (default: the geoms' second\n"
              "and third friction coefficients, the larger), sticking as sliding does.\n");
   for (const FrictionInfo& model : FrictionModels()) {
-    fmt::print("\n{}\n  {}\n  state:      {}\n  parameters: {}\n  reference:  {}\n", model.name,
-               model.formula, model.state, model.parameters, model.reference);
+    fmt::print(out, "\n{}\n  {}\n  state:      {}\n  parameters: {}\n  reference:  {}\n",
+               model.name, model.formula, model.state, model.parameters, model.reference);
   }
 }
 
 // One row per law and restitution: a(e) and the rebound it gives (empty
 // where the law has none, or e is outside its range; empty for the
 // constant-dissipation family too, whose rebound depends on the impact speed).
-void PrintCsv(const std::vector<double>& restitutions) {
-  CsvFile out("-");
+void PrintCsv(const std::vector<double>& restitutions, const std::string& output) {
+  CsvFile out(output);
   out.Header({"law", "family", "restitution", "hysteresis_coefficient",
               "effective_restitution"});
   for (const LawInfo& law : Laws()) {
@@ -89,9 +90,10 @@ void PrintCsv(const std::vector<double>& restitutions) {
 int LawsCommand(const LawsArgs& args) {
   if (args.format == "text") {
     if (args.restitution) Refuse("--restitution", *args.restitution, "goes with --format csv");
-    PrintText();
+    PrintText(args.report);
   } else if (args.format == "csv") {
-    PrintCsv(ParseRestitutionList("--restitution", args.restitution.value_or(kDefaultRestitutions)));
+    PrintCsv(ParseRestitutionList("--restitution", args.restitution.value_or(kDefaultRestitutions)),
+             args.output);
   } else {
     Refuse("--format", args.format, "must be text or csv");
   }

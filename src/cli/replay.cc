@@ -42,15 +42,17 @@ int ReplayCommand(const ReplayArgs& args) {
     scores->Commit();
     simulated->Commit();
   }
-  fmt::print("{}: {} trajectories of {} (start {}): {}\n", scene.path(), replayed.size(),
-             data.source, args.start, DistributionText(replayed, metric));
-  if (metric != Metric::kEq) fmt::print("  {}\n", DistributionText(replayed, Metric::kEq));
-  fmt::print("  {}\n  {}\n", DistributionText(replayed, Metric::kPositionRms),
+  fmt::print(args.report, "{}: {} trajectories of {} (start {}): {}\n", scene.path(),
+             replayed.size(), data.source, args.start, DistributionText(replayed, metric));
+  if (metric != Metric::kEq)
+    fmt::print(args.report, "  {}\n", DistributionText(replayed, Metric::kEq));
+  fmt::print(args.report, "  {}\n  {}\n", DistributionText(replayed, Metric::kPositionRms),
              DistributionText(replayed, Metric::kAngleRms));
   if (const std::string diverged = DivergedText(replayed); !diverged.empty()) {
     fmt::print(stderr, "contactlaws: {}: warning: {}\n", scene.path(), diverged);
   }
-  if (args.output) fmt::print("wrote {0}/replay.csv, {0}/trajectories.csv\n", *args.output);
+  if (args.output)
+    fmt::print(args.report, "wrote {0}/replay.csv, {0}/trajectories.csv\n", *args.output);
   return 0;
 }
 

@@ -46,8 +46,8 @@ std::vector<std::string> CsvFields(const FirstEpisode& e) {
           first ? if_closed(first->time_separation - first->time_contact) : ""};
 }
 
-void PrintTable(const std::vector<FirstEpisode>& rows, const std::string& output) {
-  fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", "law", "restitution",
+void PrintTable(const std::vector<FirstEpisode>& rows, const std::string& output, std::FILE* out) {
+  fmt::print(out, "{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", "law", "restitution",
              "e_post", "exact e_post", "max depth (m)", "max force (N)", "duration (s)");
   for (const FirstEpisode& r : rows) {
     std::optional<double> post, duration;
@@ -56,14 +56,15 @@ void PrintTable(const std::vector<FirstEpisode>& rows, const std::string& output
       duration = r.first->time_separation - r.first->time_contact;
     }
     const std::optional<double> exact = EffectiveRestitution(r.spec.law, *r.spec.restitution);
-    fmt::print("{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", LawName(r.spec.law),
+    fmt::print(out, "{:<20} {:>11} {:>12} {:>12} {:>14} {:>14} {:>13}\n", LawName(r.spec.law),
                Field(*r.spec.restitution), Cell(post, "{:.6f}"), Cell(exact, "{:.6f}"),
                r.first ? fmt::format("{:.6g}", r.first->max_depth) : "-",
-               r.first ? fmt::format("{:.6g}", r.first->max_force) : "-",
-               Cell(duration, "{:.6g}"));
+               r.first ? fmt::format("{:.6g}", r.first->max_force) : "-", Cell(duration, "{:.6g}"));
   }
-  fmt::print("exact e_post: the closed form a (1 + e) = ln((1 + a) / (1 - a e)), "
-             "gravity neglected\nwrote {}\n", output);
+  fmt::print(out,
+             "exact e_post: the closed form a (1 + e) = ln((1 + a) / (1 - a e)), "
+             "gravity neglected\nwrote {}\n",
+             output);
 }
 
 }  // namespace
@@ -110,7 +111,7 @@ int RestitutionCommand(const SweepArgs& args) {
       });
   out.Commit();
   if (status == 0 && incomplete) status = kExitIncomplete;
-  if (args.output != "-") PrintTable(rows, args.output);
+  if (args.output != "-") PrintTable(rows, args.output, args.report);
   return status;
 }
 

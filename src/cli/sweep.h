@@ -7,6 +7,7 @@
 #ifndef CONTACTLAWS_CLI_SWEEP_H_
 #define CONTACTLAWS_CLI_SWEEP_H_
 
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -36,6 +37,7 @@ struct SweepArgs : CommonArgs {
   bool quiet = false;
   std::optional<std::string> jobs;         // default: the number of cores
   bool impacts_per_point = false;          // compare
+  std::FILE* report = stdout;              // where the table is printed
 };
 
 // What compare and restitution read the same way, in this order (so that the

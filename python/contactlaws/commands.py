@@ -1,0 +1,244 @@
+"""compare, restitution, replay, fit, laws and check: the command line's own
+commands, their CSV files read back as DataFrames with the files' columns.
+
+Each runs the command as `contactlaws COMMAND` does (the same options, the
+same checks and messages, the same numbers), writing its files into a
+temporary folder that is removed once read. Ctrl-C stops the runs after
+their current step and raises KeyboardInterrupt.
+"""
+
+import os as _os
+import tempfile as _tempfile
+import warnings as _warnings
+
+import pandas as _pd
+
+from . import _contactlaws
+
+_INCOMPLETE = 3  # the command line's exit status when a run did not give what was asked
+
+
+def _text_list(value):
+    """A list or tuple as the command line's comma-separated text."""
+    if isinstance(value, (list, tuple)):
+        return ",".join(str(v) for v in value)
+    return value
+
+
+def _read(path):
+    """A CSV the command wrote, its numbers the very doubles it computed
+    (they are written in their shortest exact form)."""
+    return _pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
+                        na_values=[""])
+
+
+def _warn_incomplete(status, scene, what):
+    if status == _INCOMPLETE:
+        _warnings.warn(f"{scene}: {what}", stacklevel=3)
+
+
+class CompareResult:
+    """compare's three files: .trajectories (law, restitution[, friction],
+    then run's trajectory columns: s, m, m/s, N, J), .impacts (one row per
+    collision, as run's --impacts), .summary (one row per run: impacts,
+    restitution_post, max_depth m, max_force N, contact_duration s,
+    time_to_rest s, dissipated_energy J, status, reason); .report, the
+    printed table."""
+
+    def __init__(self, trajectories, impacts, summary, report):
+        self.trajectories = trajectories
+        self.impacts = impacts
+        self.summary = summary
+        self.report = report
+
+
+def compare(scene, *, laws="all", restitution=None, frictions=None, friction=None, mu=None,
+            dissipation=None, duration=2, timestep=None, max_timestep=None, accuracy=None,
+            integrator=None, sample_rate=1000, columns=None, settle=False, jobs=None,
+            impacts_per_point=False):
+    """Every law x restitution on a scene, as `contactlaws compare`.
+
+    laws: "all", "L1,L2" or a list. restitution: e in [0, 1], "E1,E2",
+    "start:stop:step" or a list (default: the scene's). frictions: friction
+    models to compare, each with every law. friction, mu, dissipation (s/m):
+    overrides of every tag. duration: s of simulated time; timestep: s or
+    "auto" (accuracy: relative error; max_timestep: s); sample_rate: rows per
+    simulated second; jobs: runs at a time (the results do not depend on it).
+    Returns a CompareResult; warns when a run failed (its summary row says why).
+    """
+    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+                   frictions=_text_list(frictions), friction=friction, mu=mu,
+                   dissipation=dissipation, duration=duration, timestep=timestep,
+                   max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
+                   sample_rate=sample_rate, columns=columns, settle=settle, jobs=jobs,
+                   impacts_per_point=impacts_per_point)
+    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
+        status, report = _contactlaws._compare(str(scene), options, folder)
+        result = CompareResult(*(_read(_os.path.join(folder, f"{name}.csv"))
+                                 for name in ("trajectories", "impacts", "summary")), report)
+    _warn_incomplete(status, scene, "a run failed: its summary row gives the reason")
+    return result
+
+
+def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, mu=None,
+                dissipation=None, duration=2, timestep=None, max_timestep=None, accuracy=None,
+                integrator=None, settle=False, jobs=None):
+    """The first impact of every law x restitution, as `contactlaws
+    restitution` (the paper's Fig. 7).
+
+    Returns its CSV: law, restitution, restitution_post (the first rebound's
+    e), impact_velocity (m/s), max_depth (m), max_force (N), contact_duration
+    (s); empty where a run has no such value. The options as compare's;
+    warns when a first contact did not end within duration.
+    """
+    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+                   friction=friction, mu=mu, dissipation=dissipation, duration=duration,
+                   timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
+                   integrator=integrator, settle=settle, jobs=jobs)
+    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
+        path = _os.path.join(folder, "restitution.csv")
+        status, _ = _contactlaws._restitution(str(scene), options, path)
+        table = _read(path)
+    _warn_incomplete(status, scene, "a first contact did not end within the duration")
+    return table
+
+
+def _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric, weights,
+                    length, timestep, max_timestep, accuracy, integrator, law, restitution,
+                    dissipation, friction, mu, set, jobs):
+    return dict(data=str(data), start=start, refit_height=refit_height, refit_lead=refit_lead,
+                refit_min_samples=refit_min_samples, metric=metric, weights=_text_list(weights),
+                length=length, timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
+                integrator=integrator, law=law, restitution=restitution,
+                dissipation=dissipation, friction=friction, mu=mu,
+                set=[set] if isinstance(set, str) else set, jobs=jobs)
+
+
+class ReplayResult:
+    """replay's two files: .scores (replay.csv: one row per trajectory, its
+    scores: e_q, position_rms m, angle_rms rad, ...), .trajectories (the
+    simulated samples in the data's own columns and units); .report, the
+    printed distributions."""
+
+    def __init__(self, scores, trajectories, report):
+        self.scores = scores
+        self.trajectories = trajectories
+        self.report = report
+
+
+def replay(scene, data, *, start="first", refit_height=None, refit_lead=3, refit_min_samples=4,
+           metric="e_q", weights=None, length=None, timestep=None, max_timestep=None,
+           accuracy=None, integrator=None, law=None, restitution=None, dissipation=None,
+           friction=None, mu=None, set=None, jobs=None):
+    """Measured trajectories simulated from their start and scored, as
+    `contactlaws replay` (docs/identification.md).
+
+    data: the measured CSV (time s, positions m, quaternions, velocities m/s,
+    rad/s). start: "first" or "refit" (refit_height m, refit_lead and
+    refit_min_samples samples). metric: "e_q", "position_rms" (m),
+    "angle_rms" (rad) or "weighted" (weights "P,A[,J]"); length: e_q's L, m.
+    timestep: s or "auto"; law, restitution, dissipation (s/m), friction, mu:
+    overrides of every tag; set: "KEY=VALUE" or a list of them, on every tag.
+    Returns a ReplayResult.
+    """
+    options = _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric,
+                              weights, length, timestep, max_timestep, accuracy, integrator,
+                              law, restitution, dissipation, friction, mu, set, jobs)
+    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
+        _, report = _contactlaws._replay(str(scene), options, folder)
+        return ReplayResult(_read(_os.path.join(folder, "replay.csv")),
+                            _read(_os.path.join(folder, "trajectories.csv")), report)
+
+
+class FitResult:
+    """fit's files: .ranking (one row per law/friction combination, best
+    first: the fitted parameters, train_ and validate_ mean, median, p90 of
+    the metric, evaluations, wall_seconds, status), .errors (each
+    trajectory's scores at the fitted values), .best_trajectories (the best
+    combination's simulated samples), .best_tag (the scene's tag line with
+    the fitted values); .report, the printed ranking."""
+
+    def __init__(self, ranking, errors, best_trajectories, best_tag, report):
+        self.ranking = ranking
+        self.errors = errors
+        self.best_trajectories = best_trajectories
+        self.best_tag = best_tag
+        self.report = report
+
+
+def fit(scene, data, params, *, laws=None, frictions=None, validate=None, budget=200, seed=1,
+        start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
+        weights=None, length=None, timestep=None, max_timestep=None, accuracy=None,
+        integrator=None, law=None, restitution=None, dissipation=None, friction=None, mu=None,
+        set=None, jobs=None):
+    """Tag and model parameters identified from measured trajectories, as
+    `contactlaws fit` (docs/identification.md).
+
+    params: "KEY=LO:HI[:log],..." or a list of them (tag keys in their units,
+    BODY.mass_scale, GEOM.offset m, mujoco.*). laws, frictions: the
+    combinations to fit ("all", names, or lists). validate: trajectories not
+    fitted on. budget: evaluations per combination; seed: the search's seed.
+    The other options as replay's. Returns a FitResult. Ctrl-C stops the
+    search after its current evaluation and raises KeyboardInterrupt.
+    """
+    options = _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric,
+                              weights, length, timestep, max_timestep, accuracy, integrator,
+                              law, restitution, dissipation, friction, mu, set, jobs)
+    options.update(params=_text_list(params), laws=_text_list(laws),
+                   frictions=_text_list(frictions),
+                   validate=None if validate is None else str(validate), budget=budget,
+                   seed=seed)
+    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
+        _, report = _contactlaws._fit(str(scene), options, folder)
+        with open(_os.path.join(folder, "best_tag.txt")) as tag:
+            best_tag = tag.read()
+        return FitResult(*(_read(_os.path.join(folder, f"{name}.csv"))
+                           for name in ("ranking", "errors", "best_trajectories")),
+                         best_tag, report)
+
+
+class LawTables:
+    """The laws and friction models: .laws (name, formula, parameters,
+    reference), .frictions (name, formula, state, parameters, reference),
+    .restitution (`laws --format csv`: law, family, restitution,
+    hysteresis_coefficient a(e) in s/m, effective_restitution)."""
+
+    def __init__(self, laws, frictions, restitution):
+        self.laws = laws
+        self.frictions = frictions
+        self.restitution = restitution
+
+
+def laws(*, restitution=None):
+    """The law and friction tables, as `contactlaws laws`, and each law's
+    a(e) and rebound per restitution, as `contactlaws laws --format csv`.
+
+    restitution: "E1,E2", "start:stop:step" or a list (default
+    0.9,0.7,0.5,0.3,0.1). Returns LawTables.
+    """
+    law_rows, friction_rows = _contactlaws._tables()
+    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
+        path = _os.path.join(folder, "laws.csv")
+        _contactlaws._laws_csv(dict(restitution=_text_list(restitution)), path)
+        effective = _read(path)
+    return LawTables(
+        _pd.DataFrame(law_rows, columns=["name", "formula", "parameters", "reference"]),
+        _pd.DataFrame(friction_rows,
+                      columns=["name", "formula", "state", "parameters", "reference"]),
+        effective)
+
+
+def check(scene, *, law=None, restitution=None, dissipation=None, friction=None, mu=None,
+          timestep=None, accuracy=None, impact_velocity=None):
+    """The scene's tags resolved, their contact estimates and the timestep
+    they need, as `contactlaws check`: its report, word for word (str).
+
+    law, restitution, dissipation (s/m), friction, mu: overrides of every
+    tag; timestep: s or "auto" (accuracy: relative error); impact_velocity:
+    m/s, instead of the estimate.
+    """
+    options = dict(law=law, restitution=restitution, dissipation=dissipation,
+                   friction=friction, mu=mu, timestep=timestep, accuracy=accuracy,
+                   impact_velocity=impact_velocity)
+    _, report = _contactlaws._check(str(scene), options)
+    return report

@@ -1,0 +1,245 @@
+// Copyright contactlaws authors.
+//
+// compare, restitution, replay, fit, laws and check as functions: the command
+// line's own commands (src/cli), given the keywords as their options, their
+// CSV files written into a folder the package reads back as DataFrames, and
+// their printed report kept as text. A command runs on a thread of its own
+// while the caller watches for Ctrl-C.
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <future>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "bindings.h"
+#include "cli/commands.h"
+
+namespace contactlaws::python {
+namespace {
+
+namespace py = pybind11;
+
+// The keyword key's text into field (absent or None: the command's default).
+void Take(const py::dict& kwargs, const char* key, std::optional<std::string>* field) {
+  if (auto v = OptionalText(kwargs, key)) *field = *v;
+}
+void Take(const py::dict& kwargs, const char* key, std::string* field) {
+  if (auto v = OptionalText(kwargs, key)) *field = *v;
+}
+
+// A flag keyword: True or False (absent or None: false).
+bool Flag(const py::dict& kwargs, const char* key) {
+  if (!kwargs.contains(key) || kwargs[key].is_none()) return false;
+  if (!py::isinstance<py::bool_>(kwargs[key])) {
+    throw py::type_error(std::string(key) + " must be True or False");
+  }
+  return kwargs[key].cast<bool>();
+}
+
+}  // namespace
+
+void TakeCommon(const py::dict& kwargs, cli::CommonArgs* args) {
+  Take(kwargs, "duration", &args->duration);
+  Take(kwargs, "sample_rate", &args->sample_rate);
+  Take(kwargs, "timestep", &args->timestep);
+  Take(kwargs, "max_timestep", &args->max_timestep);
+  Take(kwargs, "accuracy", &args->accuracy);
+  Take(kwargs, "integrator", &args->integrator);
+  Take(kwargs, "columns", &args->columns);
+  Take(kwargs, "dissipation", &args->dissipation);
+  Take(kwargs, "friction", &args->friction);
+  Take(kwargs, "mu", &args->mu);
+  args->settle = Flag(kwargs, "settle");
+}
+
+namespace {
+
+cli::SweepArgs SweepArgsOf(const std::string& scene, const py::dict& kwargs) {
+  cli::SweepArgs args;
+  args.scene = scene;
+  TakeCommon(kwargs, &args);
+  Take(kwargs, "laws", &args.laws);
+  Take(kwargs, "restitution", &args.restitution);
+  Take(kwargs, "frictions", &args.frictions);
+  Take(kwargs, "jobs", &args.jobs);
+  args.impacts_per_point = Flag(kwargs, "impacts_per_point");
+  args.quiet = true;  // no progress line on the caller's stderr
+  return args;
+}
+
+void TakeReplay(const std::string& scene, const py::dict& kwargs, cli::ReplayArgs* args) {
+  args->scene = scene;
+  Take(kwargs, "data", &args->data);
+  Take(kwargs, "start", &args->start);
+  Take(kwargs, "refit_height", &args->refit_height);
+  Take(kwargs, "refit_lead", &args->refit_lead);
+  Take(kwargs, "refit_min_samples", &args->refit_min_samples);
+  Take(kwargs, "metric", &args->metric);
+  Take(kwargs, "weights", &args->weights);
+  Take(kwargs, "length", &args->length);
+  Take(kwargs, "timestep", &args->timestep);
+  Take(kwargs, "max_timestep", &args->max_timestep);
+  Take(kwargs, "accuracy", &args->accuracy);
+  Take(kwargs, "integrator", &args->integrator);
+  Take(kwargs, "law", &args->law);
+  Take(kwargs, "restitution", &args->restitution);
+  Take(kwargs, "dissipation", &args->dissipation);
+  Take(kwargs, "friction", &args->friction);
+  Take(kwargs, "mu", &args->mu);
+  Take(kwargs, "jobs", &args->jobs);
+  if (kwargs.contains("set") && !kwargs["set"].is_none()) {
+    for (const py::handle item : kwargs["set"]) args->set.push_back(py::str(item));
+  }
+  args->quiet = true;
+}
+
+// What a command prints, kept in memory (a POSIX memory stream).
+class Report {
+ public:
+  Report() : file_(open_memstream(&buffer_, &size_)) {
+    if (!file_) throw std::runtime_error("contactlaws: cannot open a memory stream");
+  }
+  ~Report() {
+    std::fclose(file_);
+    std::free(buffer_);
+  }
+  Report(const Report&) = delete;
+  Report& operator=(const Report&) = delete;
+
+  std::FILE* file() { return file_; }
+  std::string Text() {
+    std::fflush(file_);
+    return std::string(buffer_, size_);
+  }
+
+ private:
+  char* buffer_ = nullptr;
+  size_t size_ = 0;
+  std::FILE* file_;
+};
+
+// Runs command on a thread of its own with the GIL released. The calling
+// thread checks for Ctrl-C meanwhile: on it, the commands' stop flag makes
+// the runs stop after their current step (what the command line does on
+// SIGINT), and KeyboardInterrupt is raised once the command has returned.
+// Returns the command's exit status; its Error propagates.
+int Interruptible(const std::function<int()>& command) {
+  std::packaged_task<int()> task(command);
+  std::future<int> done = task.get_future();
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::thread worker(std::move(task));
+    constexpr auto kSignalCheck = std::chrono::milliseconds(20);  // Ctrl-C felt at once
+    while (done.wait_for(kSignalCheck) != std::future_status::ready) {
+      if (interrupted) continue;
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        interrupted = true;
+        cli::stop_signal = true;
+      }
+    }
+    worker.join();
+  }
+  cli::stop_signal = false;
+  if (interrupted) throw py::error_already_set();  // the KeyboardInterrupt raised
+  return done.get();
+}
+
+// (exit status, printed report) of command given args with report.
+template <typename Args>
+py::tuple Call(int (*command)(const Args&), Args args) {
+  Report report;
+  args.report = report.file();
+  const int status = Interruptible([&] { return command(args); });
+  return py::make_tuple(status, report.Text());
+}
+
+py::tuple Compare(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
+  cli::SweepArgs args = SweepArgsOf(scene, kwargs);
+  args.output_dir = dir;
+  return Call(&cli::CompareCommand, std::move(args));
+}
+
+py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const std::string& path) {
+  cli::SweepArgs args = SweepArgsOf(scene, kwargs);
+  args.output = path;
+  return Call(&cli::RestitutionCommand, std::move(args));
+}
+
+py::tuple Replay(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
+  cli::ReplayArgs args;
+  TakeReplay(scene, kwargs, &args);
+  args.output = dir;
+  return Call(&cli::ReplayCommand, std::move(args));
+}
+
+py::tuple Fit(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
+  cli::FitArgs args;
+  TakeReplay(scene, kwargs, &args);
+  Take(kwargs, "params", &args.params);
+  Take(kwargs, "laws", &args.laws);
+  Take(kwargs, "frictions", &args.frictions);
+  Take(kwargs, "validate", &args.validate);
+  Take(kwargs, "budget", &args.budget);
+  Take(kwargs, "seed", &args.seed);
+  args.output = dir;
+  return Call(&cli::FitCommand, std::move(args));
+}
+
+py::tuple Check(const std::string& scene, const py::dict& kwargs) {
+  cli::CheckArgs args;
+  args.scene = scene;
+  Take(kwargs, "law", &args.law);
+  Take(kwargs, "restitution", &args.restitution);
+  Take(kwargs, "dissipation", &args.dissipation);
+  Take(kwargs, "friction", &args.friction);
+  Take(kwargs, "mu", &args.mu);
+  Take(kwargs, "timestep", &args.timestep);
+  Take(kwargs, "accuracy", &args.accuracy);
+  Take(kwargs, "impact_velocity", &args.impact_velocity);
+  return Call(&cli::CheckCommand, std::move(args));
+}
+
+// laws --format csv into path.
+py::tuple LawsCsv(const py::dict& kwargs, const std::string& path) {
+  cli::LawsArgs args;
+  args.format = "csv";
+  Take(kwargs, "restitution", &args.restitution);
+  args.output = path;
+  return Call(&cli::LawsCommand, std::move(args));
+}
+
+// The law table and the friction table: the library's own rows.
+py::tuple Tables() {
+  py::list laws, frictions;
+  for (const LawInfo& law : contactlaws::Laws()) {
+    laws.append(py::make_tuple(std::string(law.name), std::string(law.formula),
+                               std::string(law.parameters), std::string(law.reference)));
+  }
+  for (const FrictionInfo& model : FrictionModels()) {
+    frictions.append(py::make_tuple(std::string(model.name), std::string(model.formula),
+                                    std::string(model.state), std::string(model.parameters),
+                                    std::string(model.reference)));
+  }
+  return py::make_tuple(laws, frictions);
+}
+
+}  // namespace
+
+void BindFileCommands(py::module_& m) {
+  m.def("_compare", &Compare);
+  m.def("_restitution", &Restitution);
+  m.def("_replay", &Replay);
+  m.def("_fit", &Fit);
+  m.def("_check", &Check);
+  m.def("_laws_csv", &LawsCsv);
+  m.def("_tables", &Tables);
+}
+
+}  // namespace contactlaws::python

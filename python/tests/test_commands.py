@@ -1,0 +1,182 @@
+"""compare, restitution, replay, fit, laws and check from Python against the
+command line on the same scene: the same files, the same numbers."""
+
+import _thread
+import io
+import os
+import subprocess
+import threading
+import time
+
+import pandas as pd
+import pytest
+
+import contactlaws
+
+CLI = os.environ["CONTACTLAWS_CLI"]
+BALL = os.path.join(os.environ["CONTACTLAWS_MJCF"], "bouncing_ball.xml")
+INCLINE = os.path.join(os.environ["CONTACTLAWS_MJCF"], "friction_incline.xml")
+
+
+def cli(*args, check=True):
+    return subprocess.run([CLI, *args], capture_output=True, text=True, check=check)
+
+
+def read(path):
+    """A CSV of the command line, its numbers read exactly (shortest exact
+    form), its empty fields as NaN and nothing else."""
+    return pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
+                       na_values=[""])
+
+
+def assert_same(frame, path):
+    pd.testing.assert_frame_equal(frame, read(path), check_exact=True)
+
+
+def test_compare_gives_the_command_lines_three_files(tmp_path):
+    cli("compare", BALL, "--laws=hertz,flores,hunt-crossley", "--restitution=0.5,0.8",
+        "--duration=0.6", "--sample-rate=200", "--quiet", "--output-dir", str(tmp_path))
+    result = contactlaws.compare(BALL, laws=["hertz", "flores", "hunt-crossley"],
+                                 restitution=[0.5, 0.8], duration=0.6, sample_rate=200)
+    for name in ("trajectories", "impacts", "summary"):
+        assert_same(getattr(result, name), tmp_path / f"{name}.csv")
+    # hertz once (elastic), the two others at both e: five runs
+    assert list(result.summary["law"]) == ["hertz"] + ["flores"] * 2 + ["hunt-crossley"] * 2
+    assert "first e_post" in result.report
+
+
+def test_compare_of_friction_models(tmp_path):
+    cli("compare", INCLINE, "--laws=hertz", "--frictions=coulomb,stribeck", "--duration=0.3",
+        "--quiet", "--output-dir", str(tmp_path))
+    result = contactlaws.compare(INCLINE, laws="hertz", frictions="coulomb,stribeck",
+                                 duration=0.3)
+    for name in ("trajectories", "impacts", "summary"):
+        assert_same(getattr(result, name), tmp_path / f"{name}.csv")
+    assert list(result.summary["friction"]) == ["coulomb", "stribeck"]
+
+
+def test_restitution_gives_the_command_lines_table(tmp_path):
+    out = tmp_path / "fig7.csv"
+    cli("restitution", BALL, "--laws=hertz,flores,gonthier", "--restitution=0.2,0.6,1",
+        "--duration=0.6", "--quiet", "--output", str(out))
+    table = contactlaws.restitution(BALL, laws="hertz,flores,gonthier", restitution=[0.2, 0.6, 1],
+                                    duration=0.6)
+    assert_same(table, out)
+    assert list(table["law"]) == ["hertz"] * 3 + ["flores"] * 3 + ["gonthier"] * 3
+
+
+@pytest.fixture(scope="module")
+def measured(tmp_path_factory):
+    """Two bounces of the ball at e = 0.6 as measured data: run's body
+    columns with a trajectory column in front (docs/identification.md)."""
+    folder = tmp_path_factory.mktemp("measured")
+    frames = []
+    for name, restitution in (("a", 0.6), ("b", 0.62)):
+        run = contactlaws.run(BALL, law="flores", restitution=restitution, duration=0.8,
+                              sample_rate=100, columns="bodies").trajectory
+        run.insert(0, "trajectory", name)
+        frames.append(run)
+    path = folder / "ball.csv"
+    pd.concat(frames).to_csv(path, index=False)
+    return path
+
+
+def test_replay_gives_the_command_lines_files(tmp_path, measured):
+    cli("replay", BALL, "--data", str(measured), "--law=flores", "--restitution=0.5",
+        "--timestep=1e-4", "--quiet", "--output", str(tmp_path))
+    result = contactlaws.replay(BALL, measured, law="flores", restitution=0.5, timestep=1e-4)
+    assert_same(result.scores, tmp_path / "replay.csv")
+    assert_same(result.trajectories, tmp_path / "trajectories.csv")
+    assert len(result.scores) == 2
+
+
+def test_fit_gives_the_command_lines_files(tmp_path, measured):
+    flags = ["--params=restitution=0.3:0.9", "--law=flores", "--timestep=1e-4", "--budget=6"]
+    cli("fit", BALL, "--data", str(measured), *flags, "--quiet", "--output", str(tmp_path))
+    result = contactlaws.fit(BALL, measured, "restitution=0.3:0.9", law="flores",
+                             timestep=1e-4, budget=6)
+    for name in ("ranking", "errors", "best_trajectories"):
+        frame = getattr(result, name)
+        if name == "ranking":  # wall_seconds is the one column that is not a result
+            frame = frame.drop(columns="wall_seconds")
+            expected = read(tmp_path / "ranking.csv").drop(columns="wall_seconds")
+            pd.testing.assert_frame_equal(frame, expected, check_exact=True)
+        else:
+            assert_same(frame, tmp_path / f"{name}.csv")
+    assert result.best_tag == (tmp_path / "best_tag.txt").read_text()
+
+
+def test_laws_gives_the_command_lines_tables():
+    printed = cli("laws").stdout
+    tables = contactlaws.laws()
+    # every law and friction model, in the printed order, with its formula
+    for table in (tables.laws, tables.frictions):
+        for row in table.itertuples():
+            assert f"\n{row.name}\n  {row.formula}\n" in printed
+    csv = cli("laws", "--format=csv", "--restitution=0.1:0.9:0.4").stdout
+    mine = contactlaws.laws(restitution="0.1:0.9:0.4").restitution
+    pd.testing.assert_frame_equal(mine, read(io.StringIO(csv)), check_exact=True)
+
+
+def test_check_prints_the_command_lines_report():
+    printed = cli("check", BALL, "--law=flores", "--restitution=0.4", "--timestep=1e-4").stdout
+    assert contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4) == printed
+    assert "steps per contact" in printed
+
+
+@pytest.mark.parametrize("call", [
+    lambda: contactlaws.compare(BALL, restitutoin=0.5),
+    lambda: contactlaws.restitution(BALL, restitutoin=0.5),
+    lambda: contactlaws.replay(BALL, "d.csv", restitutoin=0.5),
+    lambda: contactlaws.fit(BALL, "d.csv", "mu=0:1", restitutoin=0.5),
+    lambda: contactlaws.laws(restitutoin=0.5),
+    lambda: contactlaws.check(BALL, restitutoin=0.5),
+])
+def test_a_wrong_keyword_is_a_type_error_naming_it(call):
+    with pytest.raises(TypeError, match="restitutoin"):
+        call()
+
+
+@pytest.mark.parametrize("args, call", [
+    (["compare", BALL, "--laws=hartz"], lambda: contactlaws.compare(BALL, laws="hartz")),
+    (["restitution", BALL, "--restitution=0.5,1.5"],
+     lambda: contactlaws.restitution(BALL, restitution=[0.5, 1.5])),
+    (["restitution", BALL, "--jobs=0"], lambda: contactlaws.restitution(BALL, jobs=0)),
+    (["replay", BALL, "--data=/nonexistent.csv"],
+     lambda: contactlaws.replay(BALL, "/nonexistent.csv")),
+    (["laws", "--format=csv", "--restitution=2"], lambda: contactlaws.laws(restitution=2)),
+    (["check", BALL, "--timestep=-1"], lambda: contactlaws.check(BALL, timestep=-1)),
+    (["check", "no_such.xml"], lambda: contactlaws.check("no_such.xml")),
+    (["compare", "no_such.xml"], lambda: contactlaws.compare("no_such.xml")),
+])
+def test_a_wrong_value_is_the_command_lines_message(args, call):
+    refused = cli(*args, check=False)
+    assert refused.returncode == 2
+    with pytest.raises(contactlaws.Error) as error:
+        call()
+    # the command line prints "contactlaws: MESSAGE"
+    assert refused.stderr == f"contactlaws: {error.value}\n"
+
+
+def test_a_wrong_measured_value_in_fit(measured):
+    args = ["--params=restitution=0.5:2", "--law=flores", "--timestep=1e-4"]
+    refused = cli("fit", BALL, "--data", str(measured), *args, check=False)
+    assert refused.returncode == 2
+    with pytest.raises(contactlaws.Error) as error:
+        contactlaws.fit(BALL, measured, "restitution=0.5:2", law="flores", timestep=1e-4)
+    assert refused.stderr == f"contactlaws: {error.value}\n"
+
+
+def test_ctrl_c_interrupts_a_long_fit_and_the_next_call_runs(measured):
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        # 100000 evaluations: hours, were it not stopped
+        contactlaws.fit(BALL, measured, "restitution=0.3:0.9", law="flores", timestep=1e-5,
+                        budget=100000)
+    timer.join()
+    # stopped after its current evaluation: one replay of two 0.8 s runs at
+    # 1e-5 s takes ~0.3 s alone, allow 10 s on 2 loaded cores
+    assert time.perf_counter() - start < 10
+    assert len(contactlaws.restitution(BALL, laws="flores", restitution=0.5)) == 1
