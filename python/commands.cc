@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
@@ -55,7 +56,8 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   const cli::CommonOptions common = cli::ParseCommon(args);
   SimulationOptions options = common.simulation;
   cli::ParseLawOverrides(args.law, args.restitution, &options.overrides);
-  const Scene scene(args.scene);
+  // the arena sized as the command line sizes it (the same work per step)
+  const Scene scene(args.scene, cli::LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   std::vector<std::string> warnings;
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
