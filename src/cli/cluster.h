@@ -3,7 +3,8 @@
 // The program's place in a cluster job. Built with MPI (CONTACTLAWS_MPI),
 // the program launched by mpirun or srun is one rank of the job: the ranks
 // share the trajectories of replay and fit and the runs of compare and
-// restitution (ClusterSpread), and rank 0 alone writes. Built without it, or launched alone, it is the only process.
+// restitution (ClusterSpread), and rank 0 alone writes. Built without it, or
+// launched alone, it is the only process.
 
 #ifndef CONTACTLAWS_CLI_CLUSTER_H_
 #define CONTACTLAWS_CLI_CLUSTER_H_

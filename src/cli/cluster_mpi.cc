@@ -70,7 +70,9 @@ constexpr double kGrace = 0.5;
 // Items as "1,3,5" (at most 20, then "...").
 std::string ItemList(const std::vector<int>& items) {
   std::string text;
-  for (size_t i = 0; i < items.size() && i < 20; ++i) text += (i ? "," : "") + std::to_string(items[i]);
+  for (size_t i = 0; i < items.size() && i < 20; ++i) {
+    text += (i ? "," : "") + std::to_string(items[i]);
+  }
   if (items.size() > 20) text += ",...";
   return text;
 }

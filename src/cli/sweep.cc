@@ -340,7 +340,8 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
   auto skipped = [&](int k) { return NotRun(specs[k]); };
   if (WorkSpread* spread = ClusterSpread()) {
     SetThreadsPerRank(sweep.jobs);
-    std::vector<RunOutput> outputs = RunShare(spread, count, sweep.jobs, work, should_stop, skipped);
+    std::vector<RunOutput> outputs =
+        RunShare(spread, count, sweep.jobs, work, should_stop, skipped);
     for (int k = 0; k < count; ++k) handle(k, outputs[k]);
   } else {
     RunInOrder<RunOutput>(count, sweep.jobs, work, handle, should_stop, skipped);
