@@ -91,7 +91,7 @@ struct ReplayOptions {
   int jobs = 1;
   // Trajectories spread over processes too (each computes its share, every
   // process gets every result); null: this process replays them all.
-  const WorkSpread* spread = nullptr;
+  WorkSpread* spread = nullptr;
   // Called between steps: true stops the replay (the trajectories not
   // finished are marked so).
   std::function<bool()> should_stop;

@@ -9,6 +9,8 @@
 #ifndef CONTACTLAWS_WORK_SPREAD_H_
 #define CONTACTLAWS_WORK_SPREAD_H_
 
+#include <time.h>
+
 #include <string>
 #include <vector>
 
@@ -19,12 +21,23 @@ class WorkSpread {
   virtual ~WorkSpread() = default;
   // Whether this process computes item k of count.
   virtual bool Mine(int k, int count) const = 0;
-  // items has one entry per item; this process's entries hold its results
-  // (opaque bytes). Returns with every entry filled from the process that
-  // computed it, on every process. Every process calls it with the same
-  // count, in the same order of calls.
-  virtual void Share(std::vector<std::string>* items) const = 0;
+  // items and seconds have one entry per item; this process's entries hold
+  // its results (opaque bytes) and the seconds each took to compute
+  // (ThreadSeconds). Returns
+  // with every entry of items filled from the process that computed it, on
+  // every process. Every process calls it with the same count, in the same
+  // order of calls. The seconds decide who computes what in the next call
+  // with the same count (the costs of one evaluation foretell the next's).
+  virtual void Share(std::vector<std::string>* items, const std::vector<double>& seconds) = 0;
 };
+
+// The CPU time of the calling thread, s: an item's cost for Share, which on a
+// machine shared with other work its wall time would overstate.
+inline double ThreadSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 }  // namespace contactlaws
 

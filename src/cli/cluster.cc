@@ -19,9 +19,11 @@ bool JoinCluster(int*, char***) {
   return true;
 }
 
+void SetThreadsPerRank(int) {}
+
 void LeaveCluster(int) {}
 
-const WorkSpread* ClusterSpread() { return nullptr; }
+WorkSpread* ClusterSpread() { return nullptr; }
 
 bool WritesOutputs() { return true; }
 

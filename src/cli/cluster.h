@@ -2,8 +2,9 @@
 //
 // The program's place in a cluster job. Built with MPI (CONTACTLAWS_MPI),
 // the program launched by mpirun or srun is one rank of the job: the ranks
-// share the trajectories of replay and fit (ClusterSpread) and rank 0 alone
-// writes. Built without it, or launched alone, it is the only process.
+// share the trajectories of replay and fit and the runs of compare and
+// restitution (ClusterSpread), and rank 0 alone writes. Built without it, or
+// launched alone, it is the only process.
 
 #ifndef CONTACTLAWS_CLI_CLUSTER_H_
 #define CONTACTLAWS_CLI_CLUSTER_H_
@@ -27,11 +28,17 @@ inline const char* LauncherRankVariable() {
 // to /dev/null. Returns false, having printed one line, when the program was
 // launched by mpirun but built without MPI.
 bool JoinCluster(int* argc, char*** argv);
-// Leaves the job (MPI_Finalize); exit_code != 0 on this rank ends every rank.
+// The threads each rank runs (--jobs), for the timing line.
+void SetThreadsPerRank(int jobs);
+// Leaves the job (MPI_Finalize) once every rank leaves. An exit_code other
+// than 0, kExitIncomplete and kExitInterrupted (which every rank reaches
+// alike) ends every rank at once.
+// After a command that spread its work, rank 0 prints the timing line on
+// stderr (docs/cluster.md).
 void LeaveCluster(int exit_code);
 
 // The spread over the job's ranks; null when the program is the only process.
-const WorkSpread* ClusterSpread();
+WorkSpread* ClusterSpread();
 // Whether this process writes the outputs (rank 0, or the only process).
 bool WritesOutputs();
 

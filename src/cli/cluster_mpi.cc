@@ -1,19 +1,32 @@
 // Copyright contactlaws authors.
 //
-// cluster.h with MPI. Items go to ranks in turn (k mod ranks): the
-// trajectories of a data file come in no order of cost, so each rank's share
-// is a sample of the whole (docs/cluster.md measures the balance). Results
-// are exchanged by two allgathers, so every rank holds every result and the
-// reductions that follow run in item order on each: the same bits whatever
-// the ranks.
+// cluster.h with MPI. The first time a count of items is spread, item k goes
+// to rank k mod ranks; every exchange then hands out every rank the seconds
+// each item took, and the next spread of that count gives the items, longest
+// first, each to the rank with the least work so far (the cost of a
+// trajectory changes little from one evaluation of a fit to the next). Every
+// rank computes the same plan from the same seconds: no message decides it.
+// Results are exchanged by two allgathers, so every rank holds every result
+// and the reductions that follow run in item order on each: the same bits
+// whatever the ranks and whoever computed what.
 
 #include <mpi.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <numeric>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
 
 #include "cli/cluster.h"
+#include "cli/commands.h"
+#include "contactlaws/error.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -30,20 +43,70 @@ int Size() {
   return size;
 }
 
+// Each item's rank: longest first, to the rank with the least seconds so far
+// (the lowest rank on a tie), which is within 4/3 of the best balance
+// (Graham's bound for longest-processing-time-first).
+std::vector<int> LongestFirst(const std::vector<double>& seconds, int ranks) {
+  std::vector<int> order(seconds.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return seconds[a] > seconds[b]; });
+  std::vector<double> load(ranks, 0.0);
+  std::vector<int> owner(seconds.size());
+  for (const int k : order) {
+    const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    owner[k] = r;
+    load[r] += seconds[k];
+  }
+  return owner;
+}
+
+// How long rank 0 waits, once a stop came, for the ranks that have not
+// reached an exchange, s: a stopped rank arrives within a step of a
+// rollout; mpirun kills every rank 1 s after its SIGTERM
+// (odls_base_sigkill_timeout), and rank 0 must name the missing ranks first.
+constexpr double kGrace = 0.5;
+
+// Items as "1,3,5" (at most 20, then "...").
+std::string ItemList(const std::vector<int>& items) {
+  std::string text;
+  for (size_t i = 0; i < items.size() && i < 20; ++i) {
+    text += (i ? "," : "") + std::to_string(items[i]);
+  }
+  if (items.size() > 20) text += ",...";
+  return text;
+}
+
+// What a rank spent, summed over the exchanges of the command, s.
+struct Timing {
+  double busy = 0;      // its items' CPU seconds
+  double waiting = 0;   // for the last rank to reach the exchange
+  double exchange = 0;  // in the allgathers themselves
+  double exchanges = 0;
+};
+
 class MpiSpread final : public WorkSpread {
  public:
-  bool Mine(int k, int) const override { return k % Size() == Rank(); }
+  bool Mine(int k, int count) const override { return Owner(k, count) == Rank(); }
 
-  void Share(std::vector<std::string>* items) const override {
+  void Share(std::vector<std::string>* items, const std::vector<double>& seconds) override {
     const int count = static_cast<int>(items->size());
-    // this rank's items: [length][bytes], in item order
+    // this rank's items: [seconds][length][bytes], in item order
     std::string mine;
     for (int k = 0; k < count; ++k) {
       if (!Mine(k, count)) continue;
       const uint64_t length = (*items)[k].size();
+      timing_.busy += seconds[k];
+      mine.append(reinterpret_cast<const char*>(&seconds[k]), sizeof seconds[k]);
       mine.append(reinterpret_cast<const char*>(&length), sizeof length);
       mine += (*items)[k];
     }
+    // the wait for the slowest rank apart from the exchange proper
+    double start = MPI_Wtime();
+    AwaitArrivals(count);
+    MPI_Barrier(MPI_COMM_WORLD);
+    timing_.waiting += MPI_Wtime() - start;
+    start = MPI_Wtime();
     const int size = Size();
     std::vector<int> lengths(size), offsets(size);
     int length = static_cast<int>(mine.size());
@@ -53,20 +116,123 @@ class MpiSpread final : public WorkSpread {
     std::string all(total, '\0');
     MPI_Allgatherv(mine.data(), length, MPI_BYTE, all.data(), lengths.data(), offsets.data(),
                    MPI_BYTE, MPI_COMM_WORLD);
-    // rank r's items are k = r, r + size, ...
-    for (int r = 0; r < size; ++r) {
-      const char* at = all.data() + offsets[r];
-      for (int k = r; k < count; k += size) {
-        uint64_t n;
-        std::memcpy(&n, at, sizeof n);
-        (*items)[k].assign(at + sizeof n, n);
-        at += sizeof n + n;
+    timing_.exchange += MPI_Wtime() - start;
+    timing_.exchanges += 1;
+    // each rank's items, in item order, as the plan that made them
+    std::vector<const char*> at(size);
+    for (int r = 0; r < size; ++r) at[r] = all.data() + offsets[r];
+    std::vector<double> every(count);
+    for (int k = 0; k < count; ++k) {
+      const char*& from = at[Owner(k, count)];
+      uint64_t n;
+      std::memcpy(&every[k], from, sizeof every[k]);
+      std::memcpy(&n, from + sizeof every[k], sizeof n);
+      (*items)[k].assign(from + sizeof every[k] + sizeof n, n);
+      from += sizeof every[k] + sizeof n + n;
+    }
+    plans_[count] = LongestFirst(every, size);
+  }
+
+  const Timing& timing() const { return timing_; }
+
+ private:
+  // Every rank tells rank 0 it reached the exchange. Once a stop came
+  // (Ctrl-C, or mpirun ending the job because a rank died: both send
+  // SIGTERM), rank 0 throws, naming the ranks still missing after kGrace and
+  // the items they held, so that the command ends with that one line and
+  // its unfinished files removed.
+  void AwaitArrivals(int count) const {
+    constexpr int kArrived = 23;  // the message's tag
+    if (Rank() != 0) {
+      MPI_Send(nullptr, 0, MPI_BYTE, 0, kArrived, MPI_COMM_WORLD);
+      return;
+    }
+    const int size = Size();
+    std::vector<MPI_Request> arrivals(size, MPI_REQUEST_NULL);
+    for (int r = 1; r < size; ++r) {
+      MPI_Irecv(nullptr, 0, MPI_BYTE, r, kArrived, MPI_COMM_WORLD, &arrivals[r]);
+    }
+    double stopped_at = -1;
+    while (true) {
+      int all = 0;
+      MPI_Testall(size, arrivals.data(), &all, MPI_STATUSES_IGNORE);
+      if (all) return;
+      if (stop_signal.load(std::memory_order_relaxed)) {
+        if (stopped_at < 0) stopped_at = MPI_Wtime();
+        if (MPI_Wtime() - stopped_at > kGrace) {
+          const std::string missing = Missing(count, &arrivals);
+          if (!missing.empty()) throw Error(missing);
+        }
       }
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
     }
   }
+
+  // "exchange 2: rank 1 (items 1,3 of 4) did not arrive ...", naming each
+  // rank whose arrival is still pending; empty when none is.
+  std::string Missing(int count, std::vector<MPI_Request>* arrivals) const {
+    std::string ranks;
+    for (int r = 1; r < Size(); ++r) {
+      int arrived = 0;
+      MPI_Test(&(*arrivals)[r], &arrived, MPI_STATUS_IGNORE);
+      if (arrived) continue;
+      std::vector<int> held;
+      for (int k = 0; k < count; ++k) {
+        if (Owner(k, count) == r) held.push_back(k);
+      }
+      ranks += fmt::format("{}rank {} (items {} of {})", ranks.empty() ? "" : ", ", r,
+                           ItemList(held), count);
+    }
+    if (ranks.empty()) return ranks;
+    return fmt::format("exchange {}: {} did not arrive after the stop (died, or ended by "
+                       "mpirun); items count from 0 in input order, nothing written",
+                       static_cast<long>(timing_.exchanges) + 1, ranks);
+  }
+
+  int Owner(int k, int count) const {
+    const auto plan = plans_.find(count);
+    return plan == plans_.end() ? k % Size() : plan->second[k];
+  }
+
+  std::map<int, std::vector<int>> plans_;  // per count, each item's rank
+  Timing timing_;
 };
 
+MpiSpread& TheSpread() {
+  static MpiSpread spread;
+  return spread;
+}
+
+bool spread_used = false;  // the command spread its work (and reports its timing)
 bool joined = false;
+int threads_per_rank = 1;
+double joined_at = 0;
+
+// Rank 0's timing line on stderr: every rank's times, gathered.
+void PrintTiming() {
+  const Timing& mine = TheSpread().timing();
+  const double sent[4] = {mine.busy / threads_per_rank, mine.waiting, mine.exchange,
+                          mine.exchanges};
+  std::vector<double> all(4 * Size());
+  MPI_Gather(sent, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (Rank() != 0) return;
+  const int size = Size();
+  double busy_min = all[0], busy_max = all[0], busy_sum = 0, waiting = 0;
+  for (int r = 0; r < size; ++r) {
+    busy_min = std::min(busy_min, all[4 * r]);
+    busy_max = std::max(busy_max, all[4 * r]);
+    busy_sum += all[4 * r];
+    waiting += all[4 * r + 1];
+  }
+  const double busy_mean = busy_sum / size;
+  fmt::print(stderr,
+             "contactlaws: timing: {} ranks x {} thread{}, wall {:.3f} s; busy (CPU) per rank "
+             "min {:.3f} mean {:.3f} max {:.3f} s (max/mean {:.3f}); waiting for the slowest "
+             "{:.3f} s (rank mean); exchange {:.6f} s in {} allgathers\n",
+             size, threads_per_rank, threads_per_rank == 1 ? "" : "s", MPI_Wtime() - joined_at,
+             busy_min, busy_mean, busy_max, busy_mean > 0 ? busy_max / busy_mean : 1.0,
+             waiting / size, all[2], static_cast<long>(all[3]));
+}
 
 }  // namespace
 
@@ -76,23 +242,35 @@ bool JoinCluster(int* argc, char*** argv) {
   int provided = 0;
   MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
   joined = true;
+  joined_at = MPI_Wtime();
   if (Rank() != 0) std::freopen("/dev/null", "w", stdout);
   return true;
 }
 
+void SetThreadsPerRank(int jobs) { threads_per_rank = std::max(1, jobs); }
+
 void LeaveCluster(int exit_code) {
   if (!joined) return;
-  if (exit_code != 0 && Size() > 1) {
+  // an incomplete or interrupted run is known to every rank alike (every
+  // rank holds every result and status); any other failure may be this
+  // rank's alone
+  if (exit_code != 0 && exit_code != kExitIncomplete && exit_code != kExitInterrupted &&
+      Size() > 1) {
     // the others may wait in an exchange this rank will never join
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, exit_code);
   }
+  // no rank leaves before rank 0 has written: mpirun ends the job when a
+  // rank exits non-zero
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (spread_used) PrintTiming();
   MPI_Finalize();
 }
 
-const WorkSpread* ClusterSpread() {
-  static const MpiSpread spread;
-  return joined && Size() > 1 ? &spread : nullptr;
+WorkSpread* ClusterSpread() {
+  if (!joined || Size() == 1) return nullptr;
+  spread_used = true;
+  return &TheSpread();
 }
 
 bool WritesOutputs() { return !joined || Rank() == 0; }

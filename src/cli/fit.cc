@@ -165,7 +165,7 @@ int FitCommand(const FitArgs& args) {
     options.parameters = f.parameters;
     options.budget = static_cast<int>(*budget);
     options.seed = static_cast<uint64_t>(*seed);
-    if (!args.quiet) {
+    if (!args.quiet && WritesOutputs()) {  // rank 0 of a job reports alone
       options.on_evaluation = [&](int n, double score, double best) {
         if (n % 10 == 0 || n == options.budget) {
           fmt::print(stderr, "fit {}: evaluation {}/{}: {:.4g} (best {:.4g})\n", f.label, n,

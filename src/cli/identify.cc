@@ -77,6 +77,7 @@ ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Met
   options.refit.min_samples = ParseCount("--refit-min-samples", args.refit_min_samples, 2);
   options.jobs = Jobs(args.jobs);
   options.spread = ClusterSpread();
+  SetThreadsPerRank(options.jobs);
   return options;
 }
 

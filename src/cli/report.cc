@@ -4,11 +4,13 @@
 
 #include <fmt/format.h>
 
+#include "cli/cluster.h"
 #include "cli/mujoco_warnings.h"
 
 namespace contactlaws::cli {
 
 void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {
+  if (!WritesOutputs()) return;  // rank 0 of the job warns
   if (model.tags().empty() && warned->insert("no tags").second) {
     fmt::print(stderr,
                "contactlaws: warning: {}: no contactlaw: tags: MuJoCo's own contact acts on "
@@ -25,6 +27,7 @@ void ReportSettle(const Simulation& sim) {
 }
 
 void Warn(const std::string& scene, const std::string& what) {
+  if (!WritesOutputs()) return;  // rank 0 of the job warns
   fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
 }
 

@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
-// What the commands print besides their files: warnings on stderr, table
-// cells.
+// What the commands print besides their files: warnings on stderr (by rank
+// 0 alone in a cluster job), table cells.
 
 #ifndef CONTACTLAWS_CLI_REPORT_H_
 #define CONTACTLAWS_CLI_REPORT_H_

@@ -5,13 +5,16 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <set>
+#include <type_traits>
 
 #include <fmt/format.h>
 
 #include "cli/arena.h"
+#include "cli/cluster.h"
 #include "cli/commands.h"
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
@@ -109,6 +112,99 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     out.reason = e.what();
   }
   return out;
+}
+
+// RunOutput as bytes, for the exchange between the ranks of a job.
+template <typename T>
+void Put(std::string* bytes, const T& value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  bytes->append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+void PutText(std::string* bytes, const std::string& text) {
+  Put(bytes, text.size());
+  *bytes += text;
+}
+
+std::string Pack(const RunOutput& out) {
+  std::string bytes;
+  Put(&bytes, out.status);
+  PutText(&bytes, out.reason);
+  Put(&bytes, out.warnings.size());
+  for (const std::string& w : out.warnings) PutText(&bytes, w);
+  Put(&bytes, out.restitution);
+  PutText(&bytes, out.trajectory);
+  PutText(&bytes, out.impacts);
+  Put(&bytes, out.summary);
+  Put(&bytes, out.dissipated);
+  Put(&bytes, out.first);
+  return bytes;
+}
+
+// Reads what Pack wrote, in the same order.
+class Unpacker {
+ public:
+  explicit Unpacker(const std::string& bytes) : at_(bytes.data()) {}
+  template <typename T>
+  void Get(T* value) {
+    std::memcpy(value, at_, sizeof *value);
+    at_ += sizeof *value;
+  }
+  void GetText(std::string* text) {
+    size_t n;
+    Get(&n);
+    text->assign(at_, n);
+    at_ += n;
+  }
+
+ private:
+  const char* at_;
+};
+
+RunOutput Unpack(const std::string& bytes) {
+  RunOutput out;
+  Unpacker in(bytes);
+  in.Get(&out.status);
+  in.GetText(&out.reason);
+  size_t warnings;
+  in.Get(&warnings);
+  out.warnings.resize(warnings);
+  for (std::string& w : out.warnings) in.GetText(&w);
+  in.Get(&out.restitution);
+  in.GetText(&out.trajectory);
+  in.GetText(&out.impacts);
+  in.Get(&out.summary);
+  in.Get(&out.dissipated);
+  in.Get(&out.first);
+  return out;
+}
+
+// The runs of a cluster job: this rank's share computed (jobs at a time),
+// then every run's output, in order, on every rank.
+std::vector<RunOutput> RunShare(WorkSpread* spread, int count, int jobs,
+                                const std::function<RunOutput(int)>& work,
+                                const std::function<bool()>& should_stop,
+                                const std::function<RunOutput(int)>& skipped) {
+  std::vector<std::string> items(count);
+  std::vector<double> seconds(count);  // each of this rank's runs'
+  RunInOrder<RunOutput>(
+      count, jobs,
+      [&](int k) {
+        if (!spread->Mine(k, count)) return RunOutput();
+        const double start = ThreadSeconds();
+        RunOutput out = work(k);
+        seconds[k] = ThreadSeconds() - start;
+        return out;
+      },
+      [&](int k, RunOutput& out) {
+        if (spread->Mine(k, count)) items[k] = Pack(out);
+      },
+      should_stop, [&](int k) { return spread->Mine(k, count) ? skipped(k) : RunOutput(); });
+  spread->Share(&items, seconds);
+  std::vector<RunOutput> outputs;
+  outputs.reserve(count);
+  for (const std::string& item : items) outputs.push_back(Unpack(item));
+  return outputs;
 }
 
 }  // namespace
@@ -221,24 +317,35 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
   Progress progress(static_cast<int>(specs.size()), sweep.quiet);
   int failed = 0;
   bool interrupted = false;
-  RunInOrder<RunOutput>(
-      static_cast<int>(specs.size()), sweep.jobs,
-      [&](int k) { return Execute(scene, options, specs[k], advices[k], sweep); },
-      [&](int k, RunOutput& out) {
-        progress.Done();  // what deliver or the warnings print starts a line
-        for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
-        if (out.status == RunOutput::Status::kFailed) {
-          ++failed;
-          fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene.path(),
-                     Describe(specs[k]), out.reason);
-        }
-        interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
-                      out.status == RunOutput::Status::kNotRun;
-        deliver(k, out);
-        progress.Finished(k, Describe(specs[k]));
-      },
-      [&] { return sweep.advance.stop && sweep.advance.stop->load(std::memory_order_relaxed); },
-      [&](int k) { return NotRun(specs[k]); });
+  const int count = static_cast<int>(specs.size());
+  auto work = [&](int k) { return Execute(scene, options, specs[k], advices[k], sweep); };
+  auto handle = [&](int k, RunOutput& out) {
+    progress.Done();  // what deliver or the warnings print starts a line
+    for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
+    if (out.status == RunOutput::Status::kFailed) {
+      ++failed;
+      if (WritesOutputs()) {
+        fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene.path(),
+                   Describe(specs[k]), out.reason);
+      }
+    }
+    interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
+                  out.status == RunOutput::Status::kNotRun;
+    deliver(k, out);
+    progress.Finished(k, Describe(specs[k]));
+  };
+  auto should_stop = [&] {
+    return sweep.advance.stop && sweep.advance.stop->load(std::memory_order_relaxed);
+  };
+  auto skipped = [&](int k) { return NotRun(specs[k]); };
+  if (WorkSpread* spread = ClusterSpread()) {
+    SetThreadsPerRank(sweep.jobs);
+    std::vector<RunOutput> outputs =
+        RunShare(spread, count, sweep.jobs, work, should_stop, skipped);
+    for (int k = 0; k < count; ++k) handle(k, outputs[k]);
+  } else {
+    RunInOrder<RunOutput>(count, sweep.jobs, work, handle, should_stop, skipped);
+  }
   progress.Done();
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");

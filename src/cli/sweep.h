@@ -101,8 +101,9 @@ struct SweepOptions {
   bool quiet = false;  // no progress line
 };
 
-// Runs every spec (jobs at a time) and hands each output to deliver, in
-// order. Returns the exit status: 0, kExitIncomplete when a run failed,
+// Runs every spec (jobs at a time; in a cluster job, each rank its share)
+// and hands each output to deliver, in order, on every rank (rank 0 alone
+// writes files and prints). Returns the exit status: 0, kExitIncomplete when a run failed,
 // kExitInterrupted after a stop request.
 int Sweep(const Scene& scene, const SimulationOptions& options,
           const std::vector<RunSpec>& specs,

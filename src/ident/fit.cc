@@ -280,7 +280,9 @@ struct Objective {
 double Evaluate(unsigned n, const double* u, double* /*gradient*/, void* data) {
   auto* o = static_cast<Objective*>(data);
   const FitOptions& options = *o->options;
-  if (options.replay.should_stop && options.replay.should_stop()) {
+  // spread over processes, a stop is seen through the statuses the replay
+  // exchanges, so that every process stops at the same evaluation
+  if (!options.replay.spread && options.replay.should_stop && options.replay.should_stop()) {
     o->result->interrupted = true;
     if (o->opt) nlopt_force_stop(o->opt);
     return std::numeric_limits<double>::infinity();

@@ -29,8 +29,10 @@ int Replay::StartSample(int i, const ReplayOptions& options) const {
 namespace {
 
 // Every process's trajectories to every process: each result as bytes (its
-// fields, then the simulated samples), exchanged through spread.
-void Share(const WorkSpread& spread, std::vector<ReplayedTrajectory>* results) {
+// fields, then the simulated samples), exchanged through spread with the
+// seconds each took.
+void Share(WorkSpread& spread, const std::vector<double>& seconds,
+           std::vector<ReplayedTrajectory>* results) {
   struct Fixed {
     ReplayedTrajectory::Status status;
     int start;
@@ -47,7 +49,7 @@ void Share(const WorkSpread& spread, std::vector<ReplayedTrajectory>* results) {
     items[i].append(reinterpret_cast<const char*>(r.simulated.data()),
                     r.simulated.size() * sizeof(double));
   }
-  spread.Share(&items);
+  spread.Share(&items, seconds);
   for (int i = 0; i < count; ++i) {
     ReplayedTrajectory& r = (*results)[i];
     Fixed fixed;
@@ -235,6 +237,7 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   }
   const int count = static_cast<int>(data_.trajectories.size());
   std::vector<ReplayedTrajectory> results(count);
+  std::vector<double> seconds(count);  // each rollout's, for the spread's balance
   // the first rollout on this thread: the tags are checked (and refused) here
   Rollout first(*this, options);
   const int threads = std::max(1, std::min(options.jobs, count));
@@ -250,7 +253,9 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
           results[i].status = ReplayedTrajectory::Status::kInterrupted;
           continue;
         }
+        const double start = ThreadSeconds();
         results[i] = rollout->Run(i);
+        seconds[i] = ThreadSeconds() - start;
       }
     } catch (...) {
       errors[thread] = std::current_exception();
@@ -264,7 +269,7 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   for (const std::exception_ptr& e : errors) {
     if (e) std::rethrow_exception(e);
   }
-  if (options.spread) Share(*options.spread, &results);
+  if (options.spread) Share(*options.spread, seconds, &results);
   return results;
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# mpirun -np N contactlaws replay|fit against the program alone (--jobs 1):
-# the same files, byte for byte, and the same fit, whatever the ranks; more
-# ranks than trajectories; one rank. Usage: mpi_test.sh CONTACTLAWS SOURCE_DIR
+# mpirun -np N contactlaws replay|fit|compare|restitution against the program
+# alone (--jobs 1): the same files and lines, byte for byte, and the same fit,
+# whatever the ranks; more ranks than trajectories; one rank. Usage: mpi_test.sh CONTACTLAWS SOURCE_DIR
 set -euo pipefail
 cli="$1"
 src="$2"
@@ -38,35 +38,106 @@ done
 mpi 2 "$cli" "${replay[@]}" --data "$tmp/five.csv" --jobs 2 --output "$tmp/np2j2" > /dev/null
 same "$tmp/alone/replay.csv" "$tmp/np2j2/replay.csv"
 
+# compare and restitution: -np 2 and 3 write the files and print the lines
+# of --jobs 1 (rank 0 adds only its timing line on stderr)
+ball="$src/mjcf/bouncing_ball.xml"
+compare=(compare "$ball" --laws hertz,flores,hunt-crossley,gonthier --restitution 0.5,0.8
+         --duration 0.2 --quiet --jobs 1)
+restitution=(restitution "$ball" --laws flores,hunt-crossley --restitution 0.3,0.6,0.9 --quiet
+             --jobs 1)
+"$cli" "${compare[@]}" --output-dir "$tmp/compare_alone" > "$tmp/compare_alone.txt"
+"$cli" "${restitution[@]}" --output "$tmp/restitution_alone.csv" > "$tmp/restitution_alone.txt"
+for np in 2 3; do
+  mpi "$np" "$cli" "${compare[@]}" --output-dir "$tmp/compare_np$np" > "$tmp/compare_np$np.txt" \
+    2> "$tmp/compare_np$np.err"
+  for f in trajectories.csv impacts.csv summary.csv; do
+    same "$tmp/compare_alone/$f" "$tmp/compare_np$np/$f"
+  done
+  sed "s#$tmp/compare_np$np#$tmp/compare_alone#g" "$tmp/compare_np$np.txt" > "$tmp/compare_np$np.renamed"
+  same "$tmp/compare_alone.txt" "$tmp/compare_np$np.renamed"
+  grep -q "^contactlaws: timing: $np ranks x 1 thread" "$tmp/compare_np$np.err" ||
+    fail "compare -np $np: no timing line: $(cat "$tmp/compare_np$np.err")"
+  mpi "$np" "$cli" "${restitution[@]}" --output "$tmp/restitution_np$np.csv" \
+    > "$tmp/restitution_np$np.txt"
+  same "$tmp/restitution_alone.csv" "$tmp/restitution_np$np.csv"
+  sed "s#restitution_np$np#restitution_alone#g" "$tmp/restitution_np$np.txt" \
+    > "$tmp/restitution_np$np.renamed"
+  same "$tmp/restitution_alone.txt" "$tmp/restitution_np$np.renamed"
+done
+
 # more ranks than trajectories: the idle rank says nothing, the same files
 "$cli" "${replay[@]}" --data "$tmp/two.csv" --jobs 1 --output "$tmp/two_alone" > /dev/null
 mpi 3 "$cli" "${replay[@]}" --data "$tmp/two.csv" --jobs 1 --output "$tmp/two_np3" \
   > /dev/null 2> "$tmp/two_np3.err"
 same "$tmp/two_alone/replay.csv" "$tmp/two_np3/replay.csv"
-[ -s "$tmp/two_np3.err" ] && fail "idle ranks wrote: $(cat "$tmp/two_np3.err")"
+grep -v "^contactlaws: timing: " "$tmp/two_np3.err" &&
+  fail "idle ranks wrote: $(cat "$tmp/two_np3.err")"
 
-# fit: 2 ranks give the fit of 1, to the bit (every file it writes)
-fit=(fit "$scene" --data "$tmp/two.csv" --start refit --timestep 6.756756756756757e-4
+# fit: 2 and 3 ranks give the fit of 1, to the bit (every file it writes),
+# the trajectories of every evaluation after the first handed out by the
+# last one's costs (five tosses on 3 ranks: with costs as their samples,
+# 109 108 101 104 99, longest first puts 0 | 1,4 | 2,3 against k mod 3's
+# 0,3 | 1,4 | 2)
+fit=(fit "$scene" --data "$tmp/five.csv" --start refit --timestep 6.756756756756757e-4
      --params restitution=0.3:0.9 --budget 4 --quiet)
 "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit1" > /dev/null
-mpi 2 "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit2" > /dev/null
-for f in errors.csv best_trajectories.csv best_tag.txt; do same "$tmp/fit1/$f" "$tmp/fit2/$f"; done
 # ranking.csv but its wall_seconds column (the 11th), a time that differs run to run
-for n in 1 2; do cut -d, -f1-10,12- "$tmp/fit$n/ranking.csv" > "$tmp/ranking$n.csv"; done
-same "$tmp/ranking1.csv" "$tmp/ranking2.csv"
-# a rank killed mid-run: the job ends non-zero, mpirun names the rank, and no
-# output file appears (rank 0 writes only by renaming a finished PATH.tmp)
-awk -F, 'NR == 1 || $1 < 40' "$tmp/all.csv" > "$tmp/forty.csv"
+cut -d, -f1-10,12- "$tmp/fit1/ranking.csv" > "$tmp/ranking1.csv"
+for np in 2 3; do
+  mpi "$np" "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit_np$np" > /dev/null
+  for f in errors.csv best_trajectories.csv best_tag.txt; do same "$tmp/fit1/$f" "$tmp/fit_np$np/$f"; done
+  cut -d, -f1-10,12- "$tmp/fit_np$np/ranking.csv" > "$tmp/ranking_np$np.csv"
+  same "$tmp/ranking1.csv" "$tmp/ranking_np$np.csv"
+done
+# Ctrl-C (SIGINT to mpirun) during a fit: every rank stops at the same
+# evaluation and rank 0 writes the best so far, as the program alone does
+# (job control on: a background job of a script would ignore SIGINT)
+set -m
+mpirun --oversubscribe -np 2 "$cli" fit "$scene" --data "$tmp/two.csv" --start refit --timestep 6.756756756756757e-4 \
+  --params restitution=0.3:0.9 --budget 1000 --jobs 1 --output "$tmp/fit_int" \
+  > /dev/null 2> "$tmp/fit_int.err" &
+launcher=$!
+set +m
+# once rank 0 reports its 10th evaluation (without --quiet)
+for _ in $(seq 300); do grep -q "evaluation 10/" "$tmp/fit_int.err" && break; sleep 0.1; done
+kill -INT "$launcher"
 status=0
-mpirun --oversubscribe -np 2 "$cli" "${replay[@]}" --data "$tmp/forty.csv" --jobs 1 --output "$tmp/killed" \
+wait "$launcher" || status=$?
+[ "$status" -ne 0 ] || fail "an interrupted fit left exit status 0: $(cat "$tmp/fit_int.err")"
+grep -q "^contactlaws: interrupted: the best result so far is written" "$tmp/fit_int.err" ||
+  fail "the interrupted fit did not write the best so far: $(cat "$tmp/fit_int.err")"
+for f in ranking.csv errors.csv best_trajectories.csv best_tag.txt; do
+  [ -s "$tmp/fit_int/$f" ] || fail "the interrupted fit left no $f"
+done
+grep -q interrupted "$tmp/fit_int/ranking.csv" || fail "ranking.csv does not say interrupted"
+
+# a rank killed mid-run: the job ends non-zero, rank 0 names the rank and
+# the trajectories it held in one line, and no output file appears (rank 0
+# writes only by renaming a finished PATH.tmp, and removes it on the error)
+status=0
+mpirun --oversubscribe -np 2 "$cli" "${replay[@]}" --data "$tmp/all.csv" --jobs 1 \
+  --output "$tmp/killed" \
   > /dev/null 2> "$tmp/killed.err" &
 launcher=$!
-# once both ranks run: the one started last
-for _ in $(seq 50); do [ "$(pgrep -P "$launcher" -f "$cli" | wc -l)" -ge 2 ] && break; sleep 0.1; done
-pgrep -a -P "$launcher" >&2
+# once both ranks run and catch SIGTERM (their stop handler is set; the 300
+# tosses then take each rank more than a second): the one started last
+catches_sigterm() {  # PID: bit 15 of its caught-signal mask
+  local mask
+  mask="$(awk '/^SigCgt:/ {print $2}' "/proc/$1/status" 2> /dev/null)"
+  [ -n "$mask" ] && (( (16#$mask >> 14) & 1 ))
+}
+for _ in $(seq 300); do
+  ranks=($(pgrep -P "$launcher" -f "$cli" || true))
+  if [ "${#ranks[@]}" -ge 2 ] && catches_sigterm "${ranks[0]}" && catches_sigterm "${ranks[1]}"; then
+    break
+  fi
+  sleep 0.05
+done
 kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
 wait "$launcher" || status=$?
 [ "$status" -ne 0 ] || fail "a killed rank left exit status 0"
-grep -q "rank 1" "$tmp/killed.err" || fail "no line names rank 1: $(cat "$tmp/killed.err")"
+[ "$(grep -c "^contactlaws: exchange 1: rank 1 (items 1,3,5,.* of 300) did not arrive" \
+     "$tmp/killed.err")" = 1 ] || fail "not one line names rank 1 and its items: $(cat "$tmp/killed.err")"
 [ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
+ls "$tmp/killed" | grep -q tmp && fail "a killed job left a .tmp file"
 echo "mpi_test: ok"
