@@ -68,6 +68,38 @@ inline constexpr KratosPoint kTest4KratosAlumina[] = {
     {65, 0.91538, 298.688}, {70, 0.93395, 241.774}, {75, 0.95138, 182.999},
     {80, 0.96800, 122.808}, {85, 0.98412, 61.656}};
 
+// Tests 5 and 6, from the same directory of the same repository
+// (benchmark5_graph1.dat, benchmark5_graph2.dat, benchmark6_graph1.dat, the
+// paper's curves as Kratos digitized them), with the inputs Kratos' scenes
+// of those tests take (benchmark5DEM.mdpa, benchmark6DEM.mdpa): one point
+// is {x, y} of the figure.
+struct FigurePoint {
+  double x, y;
+};
+
+// Test 5: steel (E 208 GPa, nu 0.30, rho 7850), v_n 5 m/s, mu 0.3, e 1, no
+// spin, v_t for x = v_t / (mu v_n). The contact point's rebound tangent over
+// mu, v_t,c' / (mu v_n'):
+inline constexpr FigurePoint kTest5ReboundSteel[] = {
+    {0.0665, -0.0800}, {0.3323, -0.2800}, {0.6707, -0.4933}, {1.0091, -0.7467}, {1.3353, -1.0000},
+    {1.6616, -1.2667}, {2.0000, -1.5333}, {2.3505, -1.8133}, {2.9909, -2.4400}, {3.3414, -2.6933},
+    {4.0060, -2.7867}, {4.9970, -2.0000}, {6.0000, -1.0133}, {9.9879, 3.0133},  {12.9607, 6.0133}};
+// and the spin, R w' / (mu v_n), against the same x:
+inline constexpr FigurePoint kTest5SpinSteel[] = {
+    {0.0578, 0.1055},  {0.3526, 0.4301},  {0.6821, 0.8197},  {0.9942, 1.2498},  {1.3410, 1.6637},
+    {1.6879, 2.0938},  {2.0000, 2.5240},  {2.3295, 2.9784},  {2.9884, 3.9037},  {3.3179, 4.2932},
+    {3.9942, 4.8368},  {5.0000, 5.0068},  {6.0058, 5.0062},  {10.0116, 5.0041}, {20.0000, 4.9905}};
+
+// Test 6: aluminium alloy (E 70 GPa, nu 0.33, rho 2700), v_n 0.2 m/s, mu
+// 0.4, e 0.5, no tangential speed, the spin giving the contact point v_t,c
+// for x = 3.5 mu (1 + e) v_n / v_t,c. The contact point's tangential
+// restitution beta = -v_t,c' / v_t,c:
+inline constexpr FigurePoint kTest6BetaAlloy[] = {
+    {0.1762, -0.8200},  {0.3524, -0.6335}, {0.5507, -0.4447}, {0.7709, -0.2428}, {0.9692, -0.0277},
+    {1.1894, 0.0974},   {1.4537, 0.1193},  {1.7401, 0.0996},  {2.0925, 0.0579},  {2.4890, 0.0052},
+    {2.9956, -0.0497},  {3.6344, -0.1001}, {4.5154, -0.1396}, {5.7489, -0.1748}, {7.8194, -0.2077},
+    {11.8943, -0.2582}, {24.0088, -0.3416}};
+
 }  // namespace contactlaws::testing
 
 #endif  // CONTACTLAWS_TESTS_SIM_CHUNG_OOI_REFERENCE_H_

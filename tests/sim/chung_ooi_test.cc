@@ -50,6 +50,8 @@ struct Material {
 // 2.5 mm; the normalized quantities of Hertz-Mindlin do not depend on R.
 constexpr Material kAlumina{"alumina", 380e9, 0.23, 4000};
 constexpr Material kAlloy{"aluminium alloy", 70e9, 0.33, 2700};
+// test 5's (chung_ooi_reference.h)
+constexpr Material kSteel{"steel", 208e9, 0.30, 7850};
 constexpr double kRadius = 2.55e-3;  // m
 // the rigid plane: 1000x the sphere's Young modulus, its Poisson ratio (Yade's
 // benchmark scripts do the same)
@@ -256,6 +258,7 @@ class ChungOoiTest : public testing::MujocoTest {
   // bound.
   double Expect(const ImpactCase& c, const char* label) {
     const Quantities sim = Measure(c, Simulate(c));
+    last_ = sim;
     const Quantities ref = Measure(c, ReferenceImpact(c));
     const double j = (1 + c.e) * NormalMass(c) * c.vn * (1 + (std::isinf(c.ra) ? 0 : Mass(c.material, kRadius) / Mass(c.material, c.ra)));
     const double dv = c.mu * j / Mass(c.material, kRadius);
@@ -289,6 +292,7 @@ class ChungOoiTest : public testing::MujocoTest {
   }
 
   static constexpr double kBound = 0.02;  // the 2%, in the units above
+  Quantities last_;  // the simulated quantities of the last Expect
 };
 
 // The spin (rad/s, about y) that gives the contact surface the normalized
@@ -393,34 +397,70 @@ TEST_F(ChungOoiTest, Test4AgainstThePublishedCurves) {
   std::printf("test 4 against the published: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 5: 5 m/s along the normal, the tangential speed set for normalized
-// incident angles 0.25 ... 8, elastic (e = 1): Maw, Barber and Fawcett's
-// range, sticking to gross sliding.
+// Test 5 with the paper's inputs (chung_ooi_reference.h): steel onto the
+// rigid plane at v_n 5 m/s, mu 0.3, e 1, no spin, v_t at the figure's x =
+// v_t / (mu v_n), against the model's integration (Expect) at every x, and
+// against the paper's curves where the rigid sphere slides throughout (x >=
+// 3.5 (1 + e) = 7): the contact point's rebound tangent over mu within 2% of
+// x (the incident one's scale, as Expect's), the spin R w' / (mu v_n) within
+// 2% of its gross-sliding 5/2 (1 + e) = 5. Below, the paper's curves
+// reverse the contact point (-0.75 at x 1) where this model, its
+// integration here and Kratos' computed test 4 rebound forward; printed,
+// not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test5ConstantNormalVelocityVaryingTangential) {
   double worst = 0;  // the largest deviation, over its bound
-  for (const Material& m : kMaterials) {
-    for (double psi : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0}) {
-      ImpactCase c{m};
+  for (const bool spin : {false, true}) {
+    const std::vector<testing::FigurePoint> points =
+        spin ? std::vector(std::begin(testing::kTest5SpinSteel), std::end(testing::kTest5SpinSteel))
+             : std::vector(std::begin(testing::kTest5ReboundSteel),
+                           std::end(testing::kTest5ReboundSteel));
+    for (const testing::FigurePoint& p : points) {
+      ImpactCase c{kSteel};
+      c.mu = 0.3;
       c.e = 1;
       c.vn = 5;
-      const double nu = m.poisson;
-      c.vt = psi * c.mu * (2 - nu) / (2 * (1 - nu)) * c.vn;
+      c.vt = p.x * c.mu * c.vn;
       worst = std::max(worst, Expect(c, "test 5"));
+      const double got = spin ? last_.w * kRadius / (c.mu * c.vn) : last_.tangent_out / c.mu;
+      const bool held = p.x >= 3.5 * (1 + c.e);
+      std::printf("test 5 against the paper, %s at x %.3f: %.4f for %.4f%s\n",
+                  spin ? "R w'/(mu v_n)" : "v_t,c'/(mu v_n')", p.x, got, p.y,
+                  held ? "" : " (not held)");
+      if (!held) continue;
+      const double error = std::abs(got - p.y) / (kBound * (spin ? 5.0 : p.x));
+      EXPECT_LE(error, 1) << (spin ? "spin" : "rebound") << " at x " << p.x << ": " << got
+                          << " for " << p.y;
+      worst = std::max(worst, error);
     }
   }
   std::printf("test 5: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 6: 3.9 m/s along the normal, no tangential speed, the spin set for
-// normalized incident angles -8 ... 8 of the contact surface.
+// Test 6 with the paper's inputs: aluminium alloy onto the rigid plane at
+// v_n 0.2 m/s, mu 0.4, e 0.5, spinning so that the contact point slips at
+// v_t,c = 3.5 mu (1 + e) v_n / x, against the model's integration at every
+// x, and against the paper's curve of beta = -v_t,c' / v_t,c where the
+// rigid sphere slides throughout (x <= 1, beta = x - 1), within 2% of
+// beta's scale 1. Beyond, the paper's beta falls to -0.34 (x 24), where
+// this model's tangential damper (the normal law's ratio at e 0.5) leaves
+// +0.02; printed, not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test6ConstantNormalVelocityVaryingSpin) {
   double worst = 0;  // the largest deviation, over its bound
-  for (const Material& m : kMaterials) {
-    for (double psi : {-8.0, -4.0, -2.0, -1.0, -0.5, 0.5, 1.0, 2.0, 4.0, 8.0}) {
-      ImpactCase c{m};
-      c.w = SpinFor(c, psi, c.vn, kRadius);
-      worst = std::max(worst, Expect(c, "test 6"));
-    }
+  for (const testing::FigurePoint& p : testing::kTest6BetaAlloy) {
+    ImpactCase c{kAlloy};
+    c.mu = 0.4;
+    c.e = 0.5;
+    c.vn = 0.2;
+    c.w = -3.5 * c.mu * (1 + c.e) * c.vn / p.x / kRadius;
+    worst = std::max(worst, Expect(c, "test 6"));
+    const double beta = -last_.tangent_out * last_.restitution / last_.tangent_in;
+    const bool held = p.x <= 1;
+    std::printf("test 6 against the paper, beta at x %.3f: %.4f for %.4f%s\n", p.x, beta, p.y,
+                held ? "" : " (not held)");
+    if (!held) continue;
+    const double error = std::abs(beta - p.y) / kBound;
+    EXPECT_LE(error, 1) << "beta at x " << p.x << ": " << beta << " for " << p.y;
+    worst = std::max(worst, error);
   }
   std::printf("test 6: largest deviation %.3f of the bound\n", worst);
 }
