@@ -25,9 +25,9 @@ struct Material {
 };
 // The benchmark's materials as Yade's scripts of its tests give them (E, nu,
 // rho; test 4's mu 0.092, 3.9 m/s, e 0.98; V. Angelidakis, B. Chareyre, R.
-// Caulk, 2023; Kratos' scenes of test 4 the same). The paper itself was not
-// read here. Those scripts take R =
-// 2.5 mm; the normalized quantities of Hertz-Mindlin do not depend on R.
+// Caulk, 2023; Kratos' scene of test 4 takes the same alumina). The paper
+// itself was not read here. Those scripts take R = 2.5 mm; the normalized
+// quantities of Hertz-Mindlin do not depend on R.
 inline constexpr Material kAlumina{"alumina", 380e9, 0.23, 4000};
 inline constexpr Material kAlloy{"aluminium alloy", 70e9, 0.33, 2700};
 // test 5's (chung_ooi_reference.h)
