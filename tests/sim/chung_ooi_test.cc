@@ -3,18 +3,17 @@
 // The contact benchmark of H. Chung, J. Y. Ooi, "Benchmark tests for
 // verifying discrete element modelling codes at particle impact level",
 // Granular Matter 13:643-656 (2011), tests 3 to 8, through MuJoCo: a sphere
-// of alumina or aluminium alloy (R 2.55 mm) onto a rigid plane, and onto a
-// sphere of its size or of twice its radius, tagged with its materials, so
-// that the pair takes Mindlin's no-slip spring 8 G* a with its Coulomb cap
-// and the normal law's damping ratio (friction.h). Gravity off.
+// (R 2.55 mm) of the test's material onto a rigid plane, and onto a sphere
+// of its size or of twice its radius, tagged with its materials, so that the
+// pair takes Mindlin's no-slip spring 8 G* a with its Coulomb cap and the
+// normal law's damping ratio (friction.h). Gravity off.
 //
-// The reference is the benchmark's model, the one its DEM codes share
-// (Hertz normal, Mindlin's incremental no-slip spring capped at mu F_n, the
-// unloading correction of Thornton et al. 2011), integrated here on its own
-// in two dimensions at 1/20000 of the contact (ReferenceImpact, written
-// from the formulas, not from the library's friction kernels; the normal
-// law's force and damping come from law.h, verified on their own), and in
-// gross sliding the rigid-body closed forms. The quantities are those the
+// Two references: the benchmark's own (chung_ooi_reference.h: the paper's
+// curves and one DEM code's results, tests 4 to 6), and the model its DEM
+// codes share (Hertz normal, Mindlin's incremental no-slip spring capped at
+// mu F_n, the unloading correction of Thornton et al. 2011) integrated on
+// its own at 1/20000 of the contact (chung_ooi_model.h), with in gross
+// sliding the rigid-body closed forms. The quantities are those the
 // benchmark plots, normalized as it does: the tangential restitution
 // v_t'/v_t, the spin w' R / v, and the contact surface's rebound angle
 // against the incident one, Psi = 2 (1 - nu) / (mu (2 - nu)) x tangent
@@ -22,8 +21,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -32,72 +33,17 @@
 #include "contactlaws/hertz.h"
 #include "contactlaws/law.h"
 #include "contactlaws/simulation.h"
+#include "chung_ooi_model.h"
+#include "chung_ooi_reference.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {
 namespace {
 
-struct Material {
-  const char* name;
-  double youngs, poisson, density;  // Pa, -, kg/m^3
-};
-// The benchmark's materials as Yade's scripts of its tests give them (E, nu,
-// rho; test 4's mu 0.092, 3.9 m/s, e 0.98; V. Angelidakis, B. Chareyre, R.
-// Caulk, 2023). The paper itself was not read here. Those scripts take R =
-// 2.5 mm; the normalized quantities of Hertz-Mindlin do not depend on R.
-constexpr Material kAlumina{"alumina", 380e9, 0.23, 4000};
-constexpr Material kAlloy{"aluminium alloy", 70e9, 0.33, 2700};
-constexpr double kRadius = 2.55e-3;  // m
-// the rigid plane: 1000x the sphere's Young modulus, its Poisson ratio (Yade's
-// benchmark scripts do the same)
-constexpr double kRigid = 1000;
-// the sphere starts this far from the other body (m): it touches at once
-constexpr double kGap = 1e-7;
+using namespace chung_ooi;  // NOLINT: the test reads in the model's terms
 
-// One impact: body B (a sphere) moves onto body A (the plane, or a sphere of
-// radius ra) along -z at vn, along x at vt, spinning about y at w (rad/s);
-// the sphere A, if any, moves the other way (the momentum sums to zero) and
-// spins at wa.
-struct ImpactCase {
-  Material material;
-  double mu = 0.092, e = 0.98;
-  double vn = 3.9, vt = 0, w = 0;  // body B's, m/s and rad/s
-  double ra = INFINITY;            // A's radius: a plane when infinite
-  double wa = 0;                   // A's spin, rad/s
-};
-
-struct Rebound {
-  double vt = 0, vn = 0, w = 0;  // body B's centre and spin after the impact
-  double wa = 0;                 // A's spin
-};
-
-double Mass(const Material& m, double r) { return m.density * 4.0 / 3.0 * M_PI * r * r * r; }
-double Inertia(const Material& m, double r) { return 0.4 * Mass(m, r) * r * r; }
-double Effective(double a, double b) { return std::isinf(a) ? b : a * b / (a + b); }
-
-// The normal law of the tag below: law=exact, its e, Hertz's K of the materials.
-LawParams NormalLaw(const ImpactCase& c) {
-  LawParams law;
-  law.kind = *ParseLawName("exact");
-  law.restitution = c.e;
-  const double youngs_a = std::isinf(c.ra) ? kRigid * c.material.youngs : c.material.youngs;
-  law.stiffness = HertzSphereStiffness(c.ra, kRadius,
-                                       MaterialCompliance(youngs_a, c.material.poisson),
-                                       MaterialCompliance(c.material.youngs, c.material.poisson));
-  ResolveLawParams(&law);  // a(e), as ContactModel resolves every pair's
-  return law;
-}
-
-// The effective mass along the normal, kg.
-double NormalMass(const ImpactCase& c) {
-  return Effective(std::isinf(c.ra) ? INFINITY : Mass(c.material, c.ra), Mass(c.material, kRadius));
-}
-
-double ContactDuration(const ImpactCase& c) {
-  const LawParams law = NormalLaw(c);
-  return HertzContactDuration(law.stiffness, law.exponent, NormalMass(c), c.vn);
-}
-
+// The impact's MJCF: B (and A when a sphere) with its initial velocities,
+// the pair tagged with its materials, law=exact at the case's e.
 std::string Scene(const ImpactCase& c, double timestep) {
   const Material& m = c.material;
   const bool plane = std::isinf(c.ra);
@@ -128,109 +74,6 @@ std::string Scene(const ImpactCase& c, double timestep) {
                      m.youngs, m.poisson, plane ? kRigid * m.youngs : m.youngs, c.mu);
 }
 
-// The benchmark's model in two dimensions, on its own: Hertz (law.h) along
-// the normal, Mindlin's no-slip spring k_t = 8 G* a incremental in the slip
-// and capped at mu F_n, its force scaled with k_t while k_t falls (Thornton
-// et al. 2011; Di Renzo and Di Maio 2005), damped at the normal law's
-// damping ratio, c_t = c_n sqrt(k_t / k_n) (Tsuji et al. 1992). The contact
-// point sits midway in the overlap, as MuJoCo puts it: levers R - d/2.
-// Semi-implicit Euler at t_c / 20000.
-Rebound ReferenceImpact(const ImpactCase& c) {
-  const Material& m = c.material;
-  const bool plane = std::isinf(c.ra);
-  const LawParams law = NormalLaw(c);
-  const double nu = m.poisson;
-  const double shear = m.youngs / (2 * (1 + nu));
-  const double shear_a = (plane ? kRigid : 1) * shear;
-  const double g_star = 1 / ((2 - nu) / shear + (2 - nu) / shear_a);
-  const double r_star = Effective(c.ra, kRadius);
-  const double mb = Mass(m, kRadius), ib = Inertia(m, kRadius);
-  const double ma = plane ? INFINITY : Mass(m, c.ra), ia = plane ? INFINITY : Inertia(m, c.ra);
-  const double share = plane ? 0 : mb / ma;
-  double vb = c.vt, wb = c.w, va = -share * c.vt, wa = c.wa;
-  double vbn = -c.vn, van = share * c.vn;
-  double depth = 0, spring = 0, k_prev = 0;
-  const double h = ContactDuration(c) / 20000;
-  ContactState state;
-  state.impact_velocity = c.vn * (1 + share);
-  do {
-    state.depth = depth;
-    state.depth_rate = van - vbn;
-    const double fn = depth > 0 ? EvaluateLaw(law, state).total : 0.0;
-    const double k_t = 8 * g_star * std::sqrt(r_star * std::max(depth, 0.0));
-    const double k_n = 1.5 * law.stiffness * std::sqrt(std::max(depth, 0.0));
-    const double c_t = k_n > 0 ? DampingCoefficient(law, state) * std::sqrt(k_t / k_n) : 0.0;
-    if (k_t < k_prev) spring *= k_t / k_prev;
-    k_prev = k_t;
-    const double lb = kRadius - depth / 2, la = c.ra - depth / 2;
-    // the slip of B's contact point on A's
-    const double slip = (vb - wb * lb) - (va + (plane ? 0 : wa * la));
-    spring -= k_t * slip * h;
-    double force = spring - c_t * slip;
-    if (std::abs(force) > c.mu * fn) {
-      force = std::copysign(c.mu * fn, force);
-      spring = force;
-    }
-    vb += force / mb * h;
-    vbn += fn / mb * h;
-    wb -= lb * force / ib * h;
-    if (!plane) {
-      va -= force / ma * h;
-      van -= fn / ma * h;
-      wa -= la * force / ia * h;
-    }
-    depth += (van - vbn) * h;
-  } while (depth > 0 || vbn < van);
-  return {vb, vbn, wb, wa};
-}
-
-// The benchmark's quantities of one rebound: B's tangential velocity and
-// spin, the contact surface's slip over the normal speed (the tangent of its
-// angle) before and after, and the normal restitution.
-struct Quantities {
-  double vt = 0, w = 0;      // m/s, rad/s
-  double tangent_in = 0, tangent_out = 0;
-  double restitution = 0;
-};
-
-Quantities Measure(const ImpactCase& c, const Rebound& r) {
-  const bool plane = std::isinf(c.ra);
-  const double share = plane ? 0 : Mass(c.material, kRadius) / Mass(c.material, c.ra);
-  const double la = plane ? 0 : c.ra;
-  const double slip_in = (c.vt - c.w * kRadius) - (-share * c.vt + c.wa * la);
-  const double approach = c.vn * (1 + share);
-  const double slip_out = (r.vt - r.w * kRadius) - (-share * r.vt + r.wa * la);
-  const double separation = r.vn * (1 + share);
-  return {r.vt, r.w, slip_in / approach, slip_out / separation, separation / approach};
-}
-
-// Psi = 2 (1 - nu) / (mu (2 - nu)) x tangent: the normalized angles of
-// Maw, Barber and Fawcett (1976) that the benchmark's tests 5 to 8 plot.
-double Normalized(const ImpactCase& c, double tangent) {
-  const double nu = c.material.poisson;
-  return 2 * (1 - nu) / (c.mu * (2 - nu)) * tangent;
-}
-
-// The rigid-body rebound in gross sliding: the normal impulse J = (1 + e) m*
-// v, the tangential one mu J against the slip, the levers R; nullopt when
-// the slip would stop (the contact sticks: no closed form).
-std::optional<Rebound> SlidingRebound(const ImpactCase& c) {
-  const bool plane = std::isinf(c.ra);
-  const Material& m = c.material;
-  const double mb = Mass(m, kRadius), ib = Inertia(m, kRadius);
-  const double ma = plane ? INFINITY : Mass(m, c.ra), ia = plane ? INFINITY : Inertia(m, c.ra);
-  const double share = plane ? 0 : mb / ma;
-  const double la = plane ? 0 : c.ra;
-  const double slip = (c.vt - c.w * kRadius) - (-share * c.vt + c.wa * la);
-  const double j = (1 + c.e) * NormalMass(c) * c.vn * (1 + share);
-  const double jt = -std::copysign(c.mu * j, slip);
-  // the slip's change per unit tangential impulse
-  const double mobility = 1 / mb + kRadius * kRadius / ib + (plane ? 0 : 1 / ma + la * la / ia);
-  if ((slip + jt * mobility) * slip <= 0) return std::nullopt;
-  return Rebound{c.vt + jt / mb, c.e * c.vn, c.w - kRadius * jt / ib,
-                 plane ? 0.0 : c.wa - la * jt / ia};
-}
-
 class ChungOoiTest : public testing::MujocoTest {
  protected:
   // The impact through MuJoCo, at t_c / 500 (RK4), until well apart.
@@ -253,6 +96,7 @@ class ChungOoiTest : public testing::MujocoTest {
   // bound.
   double Expect(const ImpactCase& c, const char* label) {
     const Quantities sim = Measure(c, Simulate(c));
+    last_ = sim;
     const Quantities ref = Measure(c, ReferenceImpact(c));
     const double j = (1 + c.e) * NormalMass(c) * c.vn * (1 + (std::isinf(c.ra) ? 0 : Mass(c.material, kRadius) / Mass(c.material, c.ra)));
     const double dv = c.mu * j / Mass(c.material, kRadius);
@@ -286,6 +130,7 @@ class ChungOoiTest : public testing::MujocoTest {
   }
 
   static constexpr double kBound = 0.02;  // the issue's 2%, in the units above
+  Quantities last_;  // the simulated quantities of the last Expect
 };
 
 // The spin (rad/s, about y) that gives the contact surface the normalized
@@ -331,34 +176,129 @@ TEST_F(ChungOoiTest, Test4ObliqueImpactAtConstantSpeed) {
   std::printf("test 4: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 5: 5 m/s along the normal, the tangential speed set for normalized
-// incident angles 0.25 ... 8, elastic (e = 1): Maw, Barber and Fawcett's
-// range, sticking to gross sliding.
+// Test 4 against the benchmark's own reference (chung_ooi_reference.h): the
+// paper's DEM-code curves of v_t'/v_t and the spin, both materials, and one
+// DEM code's (Kratos') results, alumina, 5 ... 85 degrees. The spin is
+// compared as w' R (the reference's at its R; Hertz-Mindlin's normalized
+// rebound does not depend on R). Bounds, the issue's 2%: of v_t'/v_t; of
+// the largest w' R of the curve for the spin, which falls to 0 at either
+// end. The paper's curves are held from 15 (v_t'/v_t) and 20 degrees (the
+// spin) on: below, read off a slope of up to 0.05 per degree, they part
+// from the DEM code's results, which the simulation matches there.
+TEST_F(ChungOoiTest, Test4AgainstThePublishedCurves) {
+  constexpr double kRatio = kRadius / testing::kChungOoiTest4Radius;
+  auto rebound = [&](const Material& m, double degrees) {
+    ImpactCase c{m};
+    c.vn = 3.9 * std::cos(degrees * M_PI / 180);
+    c.vt = 3.9 * std::sin(degrees * M_PI / 180);
+    const Rebound r = Simulate(c);
+    return std::pair{r.vt / c.vt, std::abs(r.w) * kRatio};  // e_t; w' at the reference's R
+  };
+  double worst = 0;  // the largest deviation, over its bound
+  auto check = [&](double got, double want, double scale, const std::string& what) {
+    const double error = std::abs(got - want) / (kBound * scale);
+    EXPECT_LE(error, 1) << what << ": " << got << " for " << want;
+    worst = std::max(worst, error);
+    std::printf("test 4 against %s: %.4f for %.4f (%+.2f%%)\n", what.c_str(), got, want,
+                100 * (got - want) / want);
+  };
+  double peak = 0;  // the spin's scale
+  for (const testing::KratosPoint& p : testing::kTest4KratosAlumina) peak = std::max(peak, p.spin);
+  for (const testing::KratosPoint& p : testing::kTest4KratosAlumina) {
+    const auto [et, w] = rebound(kAlumina, p.degrees);
+    check(et, p.restitution, p.restitution, fmt::format("Kratos, e_t at {} deg", p.degrees));
+    check(w, p.spin, peak, fmt::format("Kratos, spin at {} deg", p.degrees));
+  }
+  struct Curves {
+    Material material;
+    const testing::CurvePoint *restitution, *spin;
+  };
+  for (const Curves& curve :
+       {Curves{kAlumina, testing::kTest4TangentialRestitutionAlumina, testing::kTest4SpinAlumina},
+        Curves{kAlloy, testing::kTest4TangentialRestitutionAlloy, testing::kTest4SpinAlloy}}) {
+    constexpr int kPoints = std::size(testing::kTest4SpinAlumina);
+    double curve_peak = 0;
+    for (int i = 0; i < kPoints; ++i) curve_peak = std::max(curve_peak, curve.spin[i].value);
+    for (int i = 0; i < kPoints; ++i) {
+      const testing::CurvePoint& r = curve.restitution[i];
+      const testing::CurvePoint& s = curve.spin[i];
+      if (r.degrees >= 14.9) {
+        check(rebound(curve.material, r.degrees).first, r.value, r.value,
+              fmt::format("the paper, {} e_t at {:.2f} deg", curve.material.name, r.degrees));
+      }
+      if (s.degrees >= 19.9) {
+        check(rebound(curve.material, s.degrees).second, s.value, curve_peak,
+              fmt::format("the paper, {} spin at {:.2f} deg", curve.material.name, s.degrees));
+      }
+    }
+  }
+  std::printf("test 4 against the published: largest deviation %.3f of the bound\n", worst);
+}
+
+// Test 5 with the paper's inputs (chung_ooi_reference.h): steel onto the
+// rigid plane at v_n 5 m/s, mu 0.3, e 1, no spin, v_t at the figure's x =
+// v_t / (mu v_n), against the model's integration (Expect) at every x, and
+// against the paper's curves where the rigid sphere slides throughout (x >=
+// 3.5 (1 + e) = 7): the contact point's rebound tangent over mu within 2% of
+// x (the incident one's scale, as Expect's), the spin R w' / (mu v_n) within
+// 2% of its gross-sliding 5/2 (1 + e) = 5. Below, the paper's curves
+// reverse the contact point (-0.75 at x 1) where this model, its
+// integration here and Kratos' computed test 4 rebound forward; printed,
+// not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test5ConstantNormalVelocityVaryingTangential) {
   double worst = 0;  // the largest deviation, over its bound
-  for (const Material& m : kMaterials) {
-    for (double psi : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0}) {
-      ImpactCase c{m};
+  for (const bool spin : {false, true}) {
+    const std::vector<testing::FigurePoint> points =
+        spin ? std::vector(std::begin(testing::kTest5SpinSteel), std::end(testing::kTest5SpinSteel))
+             : std::vector(std::begin(testing::kTest5ReboundSteel),
+                           std::end(testing::kTest5ReboundSteel));
+    for (const testing::FigurePoint& p : points) {
+      ImpactCase c{kSteel};
+      c.mu = 0.3;
       c.e = 1;
       c.vn = 5;
-      const double nu = m.poisson;
-      c.vt = psi * c.mu * (2 - nu) / (2 * (1 - nu)) * c.vn;
+      c.vt = p.x * c.mu * c.vn;
       worst = std::max(worst, Expect(c, "test 5"));
+      const double got = spin ? last_.w * kRadius / (c.mu * c.vn) : last_.tangent_out / c.mu;
+      const bool held = p.x >= 3.5 * (1 + c.e);
+      std::printf("test 5 against the paper, %s at x %.3f: %.4f for %.4f%s\n",
+                  spin ? "R w'/(mu v_n)" : "v_t,c'/(mu v_n')", p.x, got, p.y,
+                  held ? "" : " (not held)");
+      if (!held) continue;
+      const double error = std::abs(got - p.y) / (kBound * (spin ? 5.0 : p.x));
+      EXPECT_LE(error, 1) << (spin ? "spin" : "rebound") << " at x " << p.x << ": " << got
+                          << " for " << p.y;
+      worst = std::max(worst, error);
     }
   }
   std::printf("test 5: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 6: 3.9 m/s along the normal, no tangential speed, the spin set for
-// normalized incident angles -8 ... 8 of the contact surface.
+// Test 6 with the paper's inputs: aluminium alloy onto the rigid plane at
+// v_n 0.2 m/s, mu 0.4, e 0.5, spinning so that the contact point slips at
+// v_t,c = 3.5 mu (1 + e) v_n / x, against the model's integration at every
+// x, and against the paper's curve of beta = -v_t,c' / v_t,c where the
+// rigid sphere slides throughout (x <= 1, beta = x - 1), within 2% of
+// beta's scale 1. Beyond, the paper's beta falls to -0.34 (x 24), where
+// this model's tangential damper (the normal law's ratio at e 0.5) leaves
+// +0.02; printed, not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test6ConstantNormalVelocityVaryingSpin) {
   double worst = 0;  // the largest deviation, over its bound
-  for (const Material& m : kMaterials) {
-    for (double psi : {-8.0, -4.0, -2.0, -1.0, -0.5, 0.5, 1.0, 2.0, 4.0, 8.0}) {
-      ImpactCase c{m};
-      c.w = SpinFor(c, psi, c.vn, kRadius);
-      worst = std::max(worst, Expect(c, "test 6"));
-    }
+  for (const testing::FigurePoint& p : testing::kTest6BetaAlloy) {
+    ImpactCase c{kAlloy};
+    c.mu = 0.4;
+    c.e = 0.5;
+    c.vn = 0.2;
+    c.w = -3.5 * c.mu * (1 + c.e) * c.vn / p.x / kRadius;
+    worst = std::max(worst, Expect(c, "test 6"));
+    const double beta = -last_.tangent_out * last_.restitution / last_.tangent_in;
+    const bool held = p.x <= 1;
+    std::printf("test 6 against the paper, beta at x %.3f: %.4f for %.4f%s\n", p.x, beta, p.y,
+                held ? "" : " (not held)");
+    if (!held) continue;
+    const double error = std::abs(beta - p.y) / kBound;
+    EXPECT_LE(error, 1) << "beta at x " << p.x << ": " << beta << " for " << p.y;
+    worst = std::max(worst, error);
   }
   std::printf("test 6: largest deviation %.3f of the bound\n", worst);
 }
