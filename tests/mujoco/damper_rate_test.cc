@@ -1,8 +1,8 @@
 // Copyright contactlaws authors.
 //
-// TangentialDamperRate against the rigid-body closed forms: a point at r
-// from a free body's centre of mass moves, per unit impulse along t, by 1/m
-// + (r x t) . I^-1 (r x t).
+// DamperRate against the rigid-body closed forms: a point at r
+// from a free body's centre of mass moves, per unit impulse along t (a
+// tangent, or the normal), by 1/m + (r x t) . I^-1 (r x t).
 
 #include "mujoco/damper_rate.h"
 
@@ -48,7 +48,7 @@ TEST_F(DamperRateTest, OnePointUnderABallActsOnItsMassAndItsSpin) {
   mjData* d = Body(fmt::format(R"(type="sphere" size="{}")", kRadius));
   const mjtNum pos[3] = {0, 0, 1 - kRadius};
   const mjtNum normal[3] = {0, 0, 1};
-  TangentialDamperRate rate;
+  DamperRate rate;
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, pos, normal, &kDamping),
               kDamping * 3.5 / kMass, 1e-9 * kDamping / kMass);
 }
@@ -67,7 +67,7 @@ TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMas
     }
   }
   const std::vector<double> damping(4, kDamping);
-  TangentialDamperRate rate;
+  DamperRate rate;
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data()),
               12 * kDamping / kMass, 1e-9 * kDamping / kMass);
   // the normal's own direction is not damped: a normal along x leaves y, z
@@ -75,6 +75,26 @@ TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMas
   const mjtNum centre[3] = {0, 0, 1};
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, centre, side, &kDamping), kDamping / kMass,
               1e-9 * kDamping / kMass);
+}
+
+TEST_F(DamperRateTest, FourCornersRockTheCubeOneAndAHalfTimesFasterThanTheyLiftIt) {
+  // the normal dampers of the bottom corners of a cube of half size a: it
+  // rises against 4 c on m (4 c / m) and rocks about a horizontal axis
+  // against 4 c a^2 on I_xx = 2/3 m a^2 (6 c / m), the fastest mode
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  for (const double x : {-kHalf, kHalf}) {
+    for (const double y : {-kHalf, kHalf}) {
+      pos.insert(pos.end(), {x, y, 1 - kHalf});
+      normal.insert(normal.end(), {0, 0, 1});
+    }
+  }
+  const std::vector<double> damping(4, kDamping);
+  DamperRate rate;
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data(),
+                        DamperDirection::kNormal),
+              6 * kDamping / kMass, 1e-9 * kDamping / kMass);
 }
 
 }  // namespace
