@@ -106,6 +106,10 @@ struct ReplayedTrajectory {
   // finite state for the samples after it.
   Score score;
   double diverged_at = 0;  // s after the start, with kDiverged
+  // With SimulationOptions::settle: the bodies in contact at the start state
+  // that Settle moved into their static equilibrium, and the farthest move, m.
+  int settled_bodies = 0;
+  double settled_distance = 0;
   // With keep_trajectories: samples start .. last, the data's columns.
   std::vector<double> simulated;
 };

@@ -55,6 +55,7 @@ struct SimulateArgs {
   std::optional<std::string> friction;
   std::optional<std::string> mu;
   std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
+  bool settle = false;  // the plugin starts the bodies in contact settled
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.

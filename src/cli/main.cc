@@ -46,6 +46,10 @@ constexpr char kDissipationHelp[] =
     "override every tag's dissipation c, s/m >= 0, for the laws that read it "
     "(hunt-crossley-constant); the others ignore it";
 
+constexpr char kSettleHelp[] =
+    "before t = 0, move the bodies that start in contact into the static equilibrium of their "
+    "contacts (positions only); refused when there is none";
+
 void AddFriction(CLI::App* cmd, std::optional<std::string>* friction,
                  std::optional<std::string>* mu) {
   cmd->add_option("--friction", *friction,
@@ -68,9 +72,7 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
                   "euler, rk4 or implicit (default: the scene's)");
   AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
   AddFriction(cmd, &args->friction, &args->mu);
-  cmd->add_flag("--settle", args->settle,
-                "before t = 0, move the bodies that start in contact into the static "
-                "equilibrium of their contacts (positions only); refused when there is none");
+  cmd->add_flag("--settle", args->settle, kSettleHelp);
   if (sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();
@@ -226,6 +228,7 @@ void AddSimulate(CLI::App* app, Commands* c) {
             "step with the contact-aware timestep (docs/timestep.md) at this relative error in a "
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
+  c->simulate_cmd->add_flag("--settle", c->simulate.settle, kSettleHelp);
 }
 
 void AddRender(CLI::App* app, Commands* c) {
@@ -286,6 +289,7 @@ void AddReplayOptions(CLI::App* cmd, ReplayArgs* args) {
   AddFriction(cmd, &args->friction, &args->mu);
   cmd->add_option("--set", args->set, "KEY=VALUE: set a contactlaw tag key on every tag "
                   "(repeatable)");
+  cmd->add_flag("--settle", args->settle, kSettleHelp);
   cmd->add_option("--jobs", args->jobs,
                   "threads, >= 1 (default: the number of cores); the results do not depend on it")
       ->type_name("INT");

@@ -8,6 +8,25 @@
 #include "cli/sweep.h"
 
 namespace contactlaws::cli {
+namespace {
+
+// What --settle moved over the trajectories' starts, in one line.
+std::string SettledText(const std::vector<ReplayedTrajectory>& replayed) {
+  int starts = 0, farthest = -1;
+  for (size_t i = 0; i < replayed.size(); ++i) {
+    if (replayed[i].settled_bodies == 0) continue;
+    ++starts;
+    if (farthest < 0 || replayed[i].settled_distance > replayed[farthest].settled_distance) {
+      farthest = static_cast<int>(i);
+    }
+  }
+  if (starts == 0) return "settle: no body touches another at any trajectory's start: nothing moved";
+  return fmt::format("settled the bodies in contact at the start of {} of {} trajectories: the "
+                     "farthest moved {:.3g} m (trajectory {})",
+                     starts, replayed.size(), replayed[farthest].settled_distance, farthest);
+}
+
+}  // namespace
 
 int ReplayCommand(const ReplayArgs& args) {
   // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
@@ -50,6 +69,9 @@ int ReplayCommand(const ReplayArgs& args) {
              DistributionText(replayed, Metric::kAngleRms));
   if (const std::string diverged = DivergedText(replayed); !diverged.empty()) {
     fmt::print(stderr, "contactlaws: {}: warning: {}\n", scene.path(), diverged);
+  }
+  if (options.simulation.settle) {
+    fmt::print(stderr, "contactlaws: {}: {}\n", scene.path(), SettledText(replayed));
   }
   if (args.output)
     fmt::print(args.report, "wrote {0}/replay.csv, {0}/trajectories.csv\n", *args.output);

@@ -1,11 +1,12 @@
 // Copyright contactlaws authors.
 //
 // contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]
-// [--accuracy TOL]: MuJoCo's own viewer, mujoco-simulate, with
+// [--accuracy TOL] [--settle]: MuJoCo's own viewer, mujoco-simulate, with
 // libcontactlaws_plugin.so preloaded and the overrides in its environment
 // (--accuracy as CONTACTLAWS_ACCURACY: the plugin sets the auto timestep
-// before each step). The scene's tags and the overrides are checked first,
-// as run checks them, so a refusal is the same line and no window opens.
+// before each step; --settle as CONTACTLAWS_SETTLE=1). The scene's tags, the
+// overrides and the settling are checked first, as run checks them, so a
+// refusal is the same line and no window opens.
 
 #include <unistd.h>
 
@@ -37,6 +38,7 @@ int SimulateCommand(const SimulateArgs& args) {
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
   if (args.accuracy) ParseAccuracy(*args.accuracy, std::nullopt);
+  options.settle = args.settle;
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
   const std::string plugin = FindPlugin();
@@ -49,6 +51,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SetVariable("CONTACTLAWS_FRICTION", args.friction);
   SetVariable("CONTACTLAWS_MU", args.mu);
   SetVariable("CONTACTLAWS_ACCURACY", args.accuracy);
+  SetVariable("CONTACTLAWS_SETTLE", args.settle ? std::optional<std::string>("1") : std::nullopt);
   const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};
   execv(viewer.c_str(), const_cast<char* const*>(argv));
   throw Error(fmt::format("simulate: could not start {}", viewer));

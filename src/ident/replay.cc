@@ -38,13 +38,16 @@ void Share(WorkSpread& spread, const std::vector<double>& seconds,
     int start;
     Score score;
     double diverged_at;
+    int settled_bodies;
+    double settled_distance;
   };
   std::vector<std::string> items(results->size());
   const int count = static_cast<int>(results->size());
   for (int i = 0; i < count; ++i) {
     if (!spread.Mine(i, count)) continue;
     const ReplayedTrajectory& r = (*results)[i];
-    const Fixed fixed{r.status, r.start, r.score, r.diverged_at};
+    const Fixed fixed{r.status, r.start, r.score, r.diverged_at, r.settled_bodies,
+                      r.settled_distance};
     items[i].assign(reinterpret_cast<const char*>(&fixed), sizeof fixed);
     items[i].append(reinterpret_cast<const char*>(r.simulated.data()),
                     r.simulated.size() * sizeof(double));
@@ -58,6 +61,8 @@ void Share(WorkSpread& spread, const std::vector<double>& seconds,
     r.start = fixed.start;
     r.score = fixed.score;
     r.diverged_at = fixed.diverged_at;
+    r.settled_bodies = fixed.settled_bodies;
+    r.settled_distance = fixed.settled_distance;
     r.simulated.resize((items[i].size() - sizeof fixed) / sizeof(double));
     std::memcpy(r.simulated.data(), items[i].data() + sizeof fixed,
                 r.simulated.size() * sizeof(double));
@@ -124,6 +129,7 @@ class Replay::Rollout {
       : replay_(replay), options_(options), width_(static_cast<int>(replay.data_.columns.size())) {
     SimulationOptions simulation = options.simulation;
     simulation.columns = ColumnGroups{true, true, false, false, false};
+    simulation.settle = false;  // each trajectory's start is settled, not the scene's
     if (options.edits.empty()) {
       sim_ = replay.scene_.Make(simulation);  // the scene's model, shared
     } else {
@@ -148,9 +154,18 @@ class Replay::Rollout {
     const MeasuredTrajectory& t = replay_.data_.trajectories[i];
     ReplayedTrajectory result;
     result.start = replay_.binding_->StartSample(i, options_);
-    sim_->Reset();
-    replay_.binding_->SetStart(t, result.start, options_, sim_->model(), sim_->data());
-    mj_forward(sim_->model(), sim_->data());
+    Start(t, result.start);
+    if (options_.simulation.settle) {
+      // the measured positions into their static equilibrium; Settle leaves
+      // the velocities zeroed and its relaxation's memory: started again
+      const SettleReport settled = Settle(sim_.get());
+      result.settled_bodies = settled.bodies;
+      result.settled_distance = settled.distance;
+      const std::vector<mjtNum> qpos(sim_->data()->qpos, sim_->data()->qpos + sim_->model()->nq);
+      Start(t, result.start);
+      mju_copy(sim_->data()->qpos, qpos.data(), sim_->model()->nq);
+      mj_forward(sim_->model(), sim_->data());
+    }
     std::optional<AutoTimestep> stepper;
     if (options_.auto_timestep) stepper.emplace(sim_->contacts(), *options_.auto_timestep);
     const double tolerance = stepper ? 1e-9 : 0.5 * sim_->model()->opt.timestep;
@@ -190,6 +205,13 @@ class Replay::Rollout {
  private:
   const double* Sample(const MeasuredTrajectory& t, int k) const {
     return t.values.data() + static_cast<size_t>(k) * width_;
+  }
+
+  // The run reset to sample s of t (positions, velocities, time 0).
+  void Start(const MeasuredTrajectory& t, int s) {
+    sim_->Reset();
+    replay_.binding_->SetStart(t, s, options_, sim_->model(), sim_->data());
+    mj_forward(sim_->model(), sim_->data());
   }
 
 

@@ -10,6 +10,8 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/law.h"
+#include "contactlaws/settle.h"
+#include "contactlaws/simulation.h"
 #include "scene/number.h"
 #include "scene/tags.h"
 
@@ -92,6 +94,13 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
       result.accuracy = *tol;
     }
   }
+  if (const char* text = std::getenv(kSettleVariable)) {
+    if (std::string_view(text) != "1") {
+      result.refusal = fmt::format("{}={} must be 1 (or unset)", kSettleVariable, text);
+    } else {
+      result.settle = true;
+    }
+  }
   return result;
 }
 
@@ -140,11 +149,35 @@ Plugin::ModelEntry& Plugin::Resolve(const mjModel* m) {
   return entry;
 }
 
+void Plugin::SettleModel(const mjModel* m, ModelEntry* entry) {
+  try {
+    // the model is the program's: shared with the run, not owned
+    SimulationOptions options;
+    options.overrides = environment_->overrides;
+    Simulation sim(std::shared_ptr<const mjModel>(m, [](const mjModel*) {}), entry->source,
+                   options);
+    // the program's data start at qpos0 (mj_makeData, mj_resetData), not at
+    // a keyframe
+    mju_copy(sim.data()->qpos, m->qpos0, m->nq);
+    const SettleReport report = Settle(&sim);
+    entry->settled_qpos.assign(sim.data()->qpos, sim.data()->qpos + m->nq);
+    std::fprintf(stderr, "contactlaws: plugin: %s: %s\n", entry->source.c_str(),
+                 report.Line().c_str());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "contactlaws: %s (the scene's positions kept)\n", e.what());
+  }
+}
+
 void Plugin::Made(const mjModel* m, mjData* d) {
   if (!m || !d) return;
   std::lock_guard lock(mutex_);
-  const ModelEntry& entry = Resolve(m);
+  ModelEntry& entry = Resolve(m);
   if (!entry.laws) return;
+  if (environment_->settle && !entry.settled) {
+    entry.settled = true;
+    SettleModel(m, &entry);
+  }
+  if (!entry.settled_qpos.empty()) mju_copy(d->qpos, entry.settled_qpos.data(), m->nq);
   auto managed = std::make_unique<ManagedData>(*entry.laws, d);
   if (environment_->accuracy) {
     AutoTimestepOptions options;
@@ -152,6 +185,13 @@ void Plugin::Made(const mjModel* m, mjData* d) {
     managed->auto_step.emplace(managed->contacts, options);
   }
   data_[d] = std::move(managed);
+}
+
+void Plugin::ResetDone(const mjModel* m, mjData* d) {
+  std::lock_guard lock(mutex_);
+  const auto found = models_.find(m);
+  if (found == models_.end() || found->second.settled_qpos.empty()) return;
+  mju_copy(d->qpos, found->second.settled_qpos.data(), m->nq);
 }
 
 void Plugin::Deleting(const mjData* d) {

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <mujoco/mujoco.h>
 
@@ -43,6 +44,12 @@ inline constexpr const char* kMuVariable = "CONTACTLAWS_MU";
 // the program's model is not written. Without it the program's model steps
 // as given.
 inline constexpr const char* kAccuracyVariable = "CONTACTLAWS_ACCURACY";
+// `--settle` of run: CONTACTLAWS_SETTLE=1 moves the bodies a tagged model
+// places touching into the static equilibrium of their contacts (Settle,
+// settle.h), once per model from its qpos0, and every mjData of it starts
+// there (mj_makeData, mj_resetData). One line on stderr says what moved, or
+// why nothing could (the scene's positions are then kept).
+inline constexpr const char* kSettleVariable = "CONTACTLAWS_SETTLE";
 
 // The longest step the plugin's auto timestep takes, s: a frame of a 60 Hz
 // display. A viewer draws the state between steps, and a free flight's step
@@ -55,6 +62,7 @@ inline constexpr double kPluginMaxStep = 1.0 / 60;
 struct EnvironmentOverrides {
   Overrides overrides;
   std::optional<double> accuracy;  // CONTACTLAWS_ACCURACY: step with AutoTimestep
+  bool settle = false;             // CONTACTLAWS_SETTLE=1
   std::optional<std::string> refusal;
 };
 EnvironmentOverrides ReadEnvironmentOverrides();
@@ -79,6 +87,8 @@ class Plugin {
   void Loaded(const mjModel* m, const char* file);
   // mj_makeData(m) gave d: a ContactData when m is tagged and accepted.
   void Made(const mjModel* m, mjData* d);
+  // mj_resetData(m, d) reset d: the settled positions, with CONTACTLAWS_SETTLE.
+  void ResetDone(const mjModel* m, mjData* d);
   // before mj_deleteData(d) / mj_deleteModel(m)
   void Deleting(const mjData* d);
   void DeletingModel(const mjModel* m);
@@ -94,7 +104,12 @@ class Plugin {
     std::string source = "mjModel";  // the file, as the program named it
     bool resolved = false;           // tags read (the first mj_makeData)
     std::unique_ptr<ContactModel> laws;  // null: untagged or refused
+    bool settled = false;                // Settle tried (the first mj_makeData)
+    std::vector<mjtNum> settled_qpos;    // with CONTACTLAWS_SETTLE, when it settled
   };
+  // entry's settled_qpos from m's qpos0, and the line of what moved (under
+  // mutex_).
+  void SettleModel(const mjModel* m, ModelEntry* entry);
   // The entry of m, its tags read on first use (under mutex_).
   ModelEntry& Resolve(const mjModel* m);
   // The overrides of the environment; false (and the refusal printed, once)

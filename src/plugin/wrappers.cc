@@ -6,6 +6,7 @@
 //
 //   mj_loadXML, mj_loadModel  record the model's file (for messages)
 //   mj_makeData               a ContactData for the data of a tagged model
+//   mj_resetData              the settled positions (CONTACTLAWS_SETTLE)
 //   mj_deleteData             the data's ContactData removed first
 //   mj_deleteModel            the model's tags (and any data left) removed
 //   mj_step                   the auto timestep (CONTACTLAWS_ACCURACY);
@@ -123,6 +124,13 @@ mjData* mj_makeData(const mjModel* m) {
   mjData* d = real(m);
   if (nesting.outermost()) Plugin::Get().Made(m, d);
   return d;
+}
+
+void mj_resetData(const mjModel* m, mjData* d) {
+  CONTACTLAWS_REAL(mj_resetData);
+  Nesting nesting;
+  real(m, d);
+  if (nesting.outermost()) Plugin::Get().ResetDone(m, d);
 }
 
 void mj_deleteData(mjData* d) {

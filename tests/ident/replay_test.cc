@@ -160,5 +160,56 @@ TEST(ReplayTest, TheRefitRuleRecoversAFlight) {
   EXPECT_LT(replayed[0].score.angle_rms, 1e-12);
 }
 
+// --settle in replay: a cube measured at rest on the board, its start placed
+// exactly touching (d = 0), starts in the static equilibrium of its corners
+// and stays there; as placed it drops into its springs and rings.
+TEST(ReplayTest, SettleStartsEachTrajectoryInItsStaticEquilibrium) {
+  const Scene scene = CubeScene("law=hertz stiffness=3e5 friction=coulomb mu=0.3");
+  constexpr double kHalf = 0.0524;  // m, the cube's half side
+  MeasuredData data;
+  data.source = "resting";
+  data.columns.assign(CubeColumns().begin(), CubeColumns().begin() + 7);
+  for (const char* name : {"a", "b"}) {
+    MeasuredTrajectory t;
+    t.name = name;
+    for (int k = 0; k < 30; ++k) {
+      t.time.push_back(k / 148.0);
+      t.values.insert(t.values.end(), {0.0, 0.0, kHalf, 1.0, 0.0, 0.0, 0.0});
+    }
+    data.trajectories.push_back(t);
+  }
+  const Replay replay(scene, data);
+  ReplayOptions options;
+  options.keep_trajectories = true;
+  options.simulation.settle = true;
+  const std::vector<ReplayedTrajectory> settled = replay.Run(options);
+  options.simulation.settle = false;
+  const std::vector<ReplayedTrajectory> placed = replay.Run(options);
+  // Hertz's statics: each of the four corners carries W / 4 at
+  // d = (W / 4 / K)^(2/3)
+  const double depth = std::pow(0.37 * 9.81 / 4 / 3e5, 2.0 / 3.0);
+  const int width = static_cast<int>(data.columns.size());
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(settled[i].settled_bodies, 1) << i;
+    EXPECT_EQ(placed[i].settled_bodies, 0) << i;
+    const std::vector<double>& s = settled[i].simulated;
+    const std::vector<double>& p = placed[i].simulated;
+    // what is left of the relaxation (kSettleResidual): below 1e-3 of the depth
+    std::printf("start %.9g, moved %.9g m, statics %.9g\n", s[2], settled[i].settled_distance,
+                kHalf - depth);
+    EXPECT_NEAR(s[2], kHalf - depth, 1e-3 * depth) << i;
+    EXPECT_GE(settled[i].settled_distance, kHalf - s[2]) << i;
+    double drop_settled = 0, drop_placed = 0;
+    for (size_t k = 0; k < s.size() / width; ++k) {
+      drop_settled = std::max(drop_settled, std::abs(s[k * width + 2] - s[2]));
+      drop_placed = std::max(drop_placed, std::abs(p[k * width + 2] - p[2]));
+    }
+    // settled, the cube stays to 1e-8 m (the relaxation's residual acting
+    // for 0.2 s); placed, it drops by a part of the static depth
+    EXPECT_LT(drop_settled, 1e-8) << i;
+    EXPECT_GT(drop_placed, 0.1 * depth) << i;
+  }
+}
+
 }  // namespace
 }  // namespace contactlaws

@@ -1,8 +1,8 @@
 // Copyright contactlaws authors.
 //
-// TangentialDamperRate against the rigid-body closed forms: a point at r
-// from a free body's centre of mass moves, per unit impulse along t, by 1/m
-// + (r x t) . I^-1 (r x t).
+// DamperRate against the rigid-body closed forms: a point at r
+// from a free body's centre of mass moves, per unit impulse along t (a
+// tangent, or the normal), by 1/m + (r x t) . I^-1 (r x t).
 
 #include "mujoco/damper_rate.h"
 
@@ -48,12 +48,12 @@ TEST_F(DamperRateTest, OnePointUnderABallActsOnItsMassAndItsSpin) {
   mjData* d = Body(fmt::format(R"(type="sphere" size="{}")", kRadius));
   const mjtNum pos[3] = {0, 0, 1 - kRadius};
   const mjtNum normal[3] = {0, 0, 1};
-  TangentialDamperRate rate;
+  DamperRate rate;
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, pos, normal, &kDamping),
               kDamping * 3.5 / kMass, 1e-9 * kDamping / kMass);
 }
 
-TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMass) {
+TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesItsMass) {
   // the bottom corners of a cube of half size a, at r^2 = 2 a^2 from the
   // vertical axis: torsion at 4 c 2 a^2 / I_zz, I_zz = 2/3 m a^2: 12 c / m
   // (the fastest mode; translation with rocking 10 c / m)
@@ -67,7 +67,7 @@ TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMas
     }
   }
   const std::vector<double> damping(4, kDamping);
-  TangentialDamperRate rate;
+  DamperRate rate;
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data()),
               12 * kDamping / kMass, 1e-9 * kDamping / kMass);
   // the normal's own direction is not damped: a normal along x leaves y, z
@@ -75,6 +75,12 @@ TEST_F(DamperRateTest, FourCornersTurnTheCubeTwelveTimesFasterThanOneMovesItsMas
   const mjtNum centre[3] = {0, 0, 1};
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, centre, side, &kDamping), kDamping / kMass,
               1e-9 * kDamping / kMass);
+  // their normal dampers: the cube rises against 4 c on m (4 c / m) and
+  // rocks about a horizontal axis against 4 c a^2 on I_xx = 2/3 m a^2
+  // (6 c / m), the fastest mode
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data(),
+                        DamperDirection::kNormal),
+              6 * kDamping / kMass, 1e-9 * kDamping / kMass);
 }
 
 }  // namespace

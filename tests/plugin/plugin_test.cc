@@ -234,5 +234,51 @@ TEST(PluginTest, RefusedTagsPrintRunsLineAndLeaveTheModelToMujoco) {
   EXPECT_GE(Number(with.runs.at("tagged0"), "solver_contacts"), 1);
 }
 
+// CONTACTLAWS_SETTLE=1 (simulate --settle): a cube placed exactly on the
+// floor starts in the static equilibrium of its four corners, as
+// mujoco-simulate makes and resets its data; without it the cube drops into
+// its springs. A value other than 1 is one line.
+TEST(PluginTest, SettleStartsAndResetsTheDataInTheStaticEquilibrium) {
+  constexpr double kHalf = 0.05, kStiffness = 1e7;  // m; N/m^1.5
+  const std::string scene = testing::TempPath("cube.xml");
+  std::ofstream(scene) << fmt::format(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1"/>
+    <body name="cube" pos="0 0 {0}"><freejoint/>
+      <geom name="cube" type="box" size="{0} {0} {0}" mass="1"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:cube-floor" data="geom1=cube geom2=floor law=hunt-crossley
+    restitution=0.5 stiffness={1} min_impact_velocity=1e-2"/></custom>
+</mujoco>)", kHalf, kStiffness);
+  auto run = [&](const std::string& environment) {
+    const ProgramResult r = RunProgram(Preload() + environment,
+                                       fmt::format("{} {} 1000", CONTACTLAWS_RESTING_MUJOCO, scene));
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::istringstream words(r.out);
+    std::map<std::string, double> fields;
+    for (std::string word; words >> word;) {
+      fields[word.substr(0, word.find('='))] = std::stod(word.substr(word.find('=') + 1));
+    }
+    return std::make_pair(r.err, fields);
+  };
+  // statics: each corner carries W / 4 at d = (W / 4 / K)^(2/3)
+  const double depth = std::pow(9.81 / 4 / kStiffness, 2.0 / 3.0);
+  const auto [settled_err, settled] = run(" CONTACTLAWS_SETTLE=1");
+  EXPECT_NE(settled_err.find(fmt::format("contactlaws: plugin: {}: settled 1 body in contact at "
+                                         "t = 0 (", scene)), std::string::npos)
+      << settled_err;
+  // what is left of the relaxation: below 1e-6 of the depth (settle_test)
+  EXPECT_NEAR(settled.at("start"), kHalf - depth, 1e-6 * depth);
+  EXPECT_EQ(settled.at("reset"), settled.at("start"));
+  // 0.1 s at rest: the relaxation's residual, 1e-6 g, moves it < 5e-8 m
+  EXPECT_LT(settled.at("moved"), 1e-8);
+  const auto [placed_err, placed] = run("");
+  EXPECT_EQ(placed.at("start"), kHalf);
+  EXPECT_GT(placed.at("moved"), 0.1 * depth);  // dropped into its springs
+  EXPECT_EQ(run(" CONTACTLAWS_SETTLE=yes").first,
+            "contactlaws: CONTACTLAWS_SETTLE=yes must be 1 (or unset)\n");
+}
+
 }  // namespace
 }  // namespace contactlaws
