@@ -122,7 +122,8 @@ def main():
 
     # figure 1: the held-out error distribution per combination
     table = sorted(rows, key=lambda r: float(r[1]["train_mean"]))
-    fig, ax = plt.subplots(figsize=(10, 5.5))
+    # a row's label legible: about 0.15 inch a combination
+    fig, ax = plt.subplots(figsize=(10, max(5.5, 1.5 + 0.15 * len(table))))
     data = [errors(folder, row, "validate") for _, row, folder in table]
     ax.boxplot(data, vert=False, whis=(5, 95), showmeans=True, flierprops={"markersize": 2})
     ax.set_yticks(range(1, len(table) + 1), [f"{label(r)} ({s})" for s, r, _ in table], fontsize=7)
