@@ -8,6 +8,7 @@
 #include "cli/impact_csv.h"
 #include "cli/sweep.h"
 #include "scene/number.h"
+#include "scene/tags.h"
 
 namespace contactlaws::cli {
 
@@ -54,7 +55,7 @@ ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Met
   bool tagged = false;
   for (int i = 0; i < scene.model()->ntext; ++i) {
     const char* name = scene.model()->names + scene.model()->name_textadr[i];
-    tagged = tagged || std::string_view(name).rfind("contactlaw:", 0) == 0;
+    tagged = tagged || std::string_view(name).rfind(kPairTagPrefix, 0) == 0;
   }
   options.auto_timestep = common.auto_timestep;
   if (!args.timestep && !options.auto_timestep && tagged) options.auto_timestep.emplace();
