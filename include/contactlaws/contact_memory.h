@@ -123,6 +123,10 @@ struct Impact {
            max_approach_velocity >
                kChainFactor * std::max({impact_velocity, touch_v0, settling_velocity});
   }
+  // Whether the bodies approached at all: a contact placed there at t = 0 and
+  // pushed apart at once (bodies overlapping) has no approach, and its
+  // rebound no restitution.
+  bool approached() const { return std::max(impact_velocity, max_approach_velocity) > 0; }
   // separation / the largest approach speed (closed only): an impact's touch
   // speed, a chained contact's pulse
   double restitution_post() const {

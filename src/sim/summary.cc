@@ -12,11 +12,16 @@ RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
   s.impacts = static_cast<int>(impacts.size());
   if (impacts.empty()) return s;
 
-  const Impact& first = impacts.front();
-  s.impact_velocity = first.impact_velocity;
-  if (!first.open) {
-    s.restitution_post = first.restitution_post();
-    s.contact_duration = first.time_separation - first.time_contact;
+  // the first collision with an approach: bodies placed overlapping and
+  // pushed apart at t = 0 rebound from nothing (their e_post would be x / 0)
+  const auto first = std::find_if(impacts.begin(), impacts.end(),
+                                  [](const Impact& i) { return i.approached(); });
+  if (first != impacts.end()) {
+    s.impact_velocity = first->impact_velocity;
+    if (!first->open) {
+      s.restitution_post = first->restitution_post();
+      s.contact_duration = first->time_separation - first->time_contact;
+    }
   }
 
   struct PairRest {

@@ -55,6 +55,16 @@ TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
   EXPECT_FALSE(resting.restitution_post);
   EXPECT_FALSE(resting.contact_duration);
   EXPECT_EQ(resting.time_to_rest, 0.0);
+  // bodies placed overlapping, pushed apart at t = 0 without approaching:
+  // no rebound to measure; the first impact after it is the first
+  Impact pushed_apart = Episode(0, 0.0, 0.004);
+  pushed_apart.impact_velocity = 0;
+  pushed_apart.separation_velocity = 4.1;
+  const RunSummary after = Summarize({pushed_apart, Episode(0, 0.3, 0.31)}, 1.0);
+  EXPECT_EQ(after.impacts, 2);
+  EXPECT_EQ(after.restitution_post, 0.75);
+  EXPECT_EQ(after.impact_velocity, 2.0);
+  EXPECT_FALSE(Summarize({pushed_apart}, 1.0).restitution_post);
   // no contact at all
   const RunSummary none = Summarize({}, 1.0);
   EXPECT_EQ(none.impacts, 0);
