@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/arena.h"
 #include "cli/impact_csv.h"
 #include "cli/options.h"
 
@@ -65,7 +66,8 @@ std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const py::d
   if (const auto timestep = OptionalText(kwargs, "timestep")) {
     options.timestep = cli::ParsePositive("--timestep", *timestep, "s");
   }
-  return Scene(scene).Make(options);
+  // the arena sized as the command line sizes it: reset() zeroes all of it
+  return Scene(scene, cli::LoadSizedModel(scene, options.overrides)).Make(options);
 }
 
 void BindSimulation(py::module_& m) {
