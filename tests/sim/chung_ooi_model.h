@@ -83,14 +83,25 @@ inline double ContactDuration(const ImpactCase& c) {
   return HertzContactDuration(law.stiffness, law.exponent, NormalMass(c), c.vn);
 }
 
+// The tangential spring of ReferenceImpact: `share` of Mindlin's no-slip
+// stiffness 8 G* a, and whether its force is scaled by k_t / k_t,prev while
+// k_t falls (Thornton et al. 2011's unloading correction). The defaults are
+// the library's spring; share 1/2 without the correction is the spring whose
+// rebounds the paper's test 5 curves show (chung_ooi_model_test).
+struct TangentialSpring {
+  double share = 1;
+  bool unloading_correction = true;
+};
+
 // The benchmark's model in two dimensions, on its own: Hertz (law.h) along
 // the normal, Mindlin's no-slip spring k_t = 8 G* a incremental in the slip
 // and capped at mu F_n, its force scaled with k_t while k_t falls (Thornton
 // et al. 2011; Di Renzo and Di Maio 2005), damped at the normal law's
 // damping ratio, c_t = c_n sqrt(k_t / k_n) (Tsuji et al. 1992). The contact
 // point sits midway in the overlap, as MuJoCo puts it: levers R - d/2.
-// Semi-implicit Euler at t_c / 20000.
-inline Rebound ReferenceImpact(const ImpactCase& c) {
+// Semi-implicit Euler at t_c / 20000. `spring_model` varies the tangential
+// spring (its defaults are the library's).
+inline Rebound ReferenceImpact(const ImpactCase& c, const TangentialSpring& spring_model = {}) {
   const Material& m = c.material;
   const bool plane = std::isinf(c.ra);
   const LawParams law = NormalLaw(c);
@@ -112,10 +123,10 @@ inline Rebound ReferenceImpact(const ImpactCase& c) {
     state.depth = depth;
     state.depth_rate = van - vbn;
     const double fn = depth > 0 ? EvaluateLaw(law, state).total : 0.0;
-    const double k_t = 8 * g_star * std::sqrt(r_star * std::max(depth, 0.0));
+    const double k_t = spring_model.share * 8 * g_star * std::sqrt(r_star * std::max(depth, 0.0));
     const double k_n = 1.5 * law.stiffness * std::sqrt(std::max(depth, 0.0));
     const double c_t = k_n > 0 ? DampingCoefficient(law, state) * std::sqrt(k_t / k_n) : 0.0;
-    if (k_t < k_prev) spring *= k_t / k_prev;
+    if (spring_model.unloading_correction && k_t < k_prev) spring *= k_t / k_prev;
     k_prev = k_t;
     const double lb = kRadius - depth / 2, la = c.ra - depth / 2;
     // the slip of B's contact point on A's

@@ -243,8 +243,9 @@ TEST_F(ChungOoiTest, Test4AgainstThePublishedCurves) {
 // x (the incident one's scale, as Expect's), the spin R w' / (mu v_n) within
 // 2% of its gross-sliding 5/2 (1 + e) = 5. Below, the paper's curves
 // reverse the contact point (-0.75 at x 1) where this model, its
-// integration here and Kratos' computed test 4 rebound forward; printed,
-// not held (docs/friction.md).
+// integration here and Kratos' computed test 4 rebound forward: they are
+// the no-slip spring at half Mindlin's stiffness without the unloading
+// correction (chung_ooi_model_test); printed, not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test5ConstantNormalVelocityVaryingTangential) {
   double worst = 0;  // the largest deviation, over its bound
   for (const bool spin : {false, true}) {
