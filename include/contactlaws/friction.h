@@ -228,6 +228,13 @@ struct FrictionOutput {
 };
 FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInput& in);
 
+// What EvaluateFriction reads of a FrictionInput beyond the slip and the load,
+// so that a caller computes only that: the stick state (committed, stretch,
+// was_sliding, mass) for coulomb, stribeck and lugre; the tangential spring
+// (stiffness, committed_stiffness, damping) for coulomb and stribeck.
+bool ReadsStickState(FrictionKind kind);
+bool ReadsTangentialSpring(FrictionKind kind);
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_FRICTION_H_

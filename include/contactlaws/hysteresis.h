@@ -32,18 +32,27 @@
 
 namespace contactlaws {
 
+// The factors on the Hertz spring K d^n of the two dissipative families, so
+// that a caller holding K d^n multiplies it once: 1 + a d'/v0 and 1 + c d'.
+inline double HysteresisFactor(double coefficient, double depth_rate, double impact_velocity) {
+  return 1.0 + coefficient * depth_rate / impact_velocity;
+}
+inline double DissipationFactor(double dissipation, double depth_rate) {
+  return 1.0 + dissipation * depth_rate;
+}
+
 // K d^n (1 + a d'/v0) for d > 0, 0 otherwise (N); not clamped.
 inline double HysteresisForce(double stiffness, double exponent,
                               double coefficient, double depth,
                               double depth_rate, double impact_velocity) {
   return HertzForce(stiffness, exponent, depth) *
-         (1.0 + coefficient * depth_rate / impact_velocity);
+         HysteresisFactor(coefficient, depth_rate, impact_velocity);
 }
 
 // K d^n (1 + c d') for d > 0, 0 otherwise (N); c in s/m; not clamped.
 inline double DissipationForce(double stiffness, double exponent, double dissipation,
                                double depth, double depth_rate) {
-  return HertzForce(stiffness, exponent, depth) * (1.0 + dissipation * depth_rate);
+  return HertzForce(stiffness, exponent, depth) * DissipationFactor(dissipation, depth_rate);
 }
 
 // The rebound restitution e_post of a law with coefficient a >= 0: the root in

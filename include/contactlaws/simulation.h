@@ -129,6 +129,13 @@ class Simulation {
   // The values of Columns() at the current state. Runs mj_forward so that
   // every quantity belongs to the accepted state.
   void Sample(std::vector<double>* row);
+  // Sample, for a data stepped on at a fixed step: when the columns are
+  // bodies' and joints' only and no step of the model makes a constraint
+  // row, only the stages they read (positions, velocities), to the bit.
+  // mj_forward's other stages (the hooks, the solver and its warm start)
+  // then change nothing the next fixed step reads; the contact-aware step
+  // reads the hooks' evaluation: give it Sample.
+  void SampleMotion(std::vector<double>* row);
 
   // The ledger at the current state (after mj_forward).
   EnergyLedger Energy() const;
@@ -167,6 +174,7 @@ class Simulation {
   UniqueData data_;
   std::unique_ptr<ContactData> contacts_;
   ColumnGroups columns_;
+  bool motion_only_ = false;  // SampleMotion: the kinematic stages suffice
   std::vector<int> recorded_bodies_;
   std::vector<uint8_t> oriented_;  // per recorded body: it has a free or ball joint
   std::vector<int> recorded_joints_;  // hinge and slide joints

@@ -172,7 +172,8 @@ class Replay::Rollout {
 
     ScoreAccumulator score(options_.weights);
     row_.assign(width_, 0.0);
-    Record();
+    const bool fixed_step = !stepper;
+    Record(fixed_step);
     bool diverged = false;
     for (int k = result.start; k < t.samples(); ++k) {
       const double target = t.time[k] - t.time[result.start];
@@ -188,7 +189,7 @@ class Replay::Rollout {
           result.diverged_at = sim_->contacts().divergence()->time;
         }
       }
-      if (!diverged) Record();  // a diverged state is not read: the last finite one stands
+      if (!diverged) Record(fixed_step);  // a diverged state is not read: the last finite one stands
       Add(t, k, &score);
       if (options_.keep_trajectories) {
         result.simulated.insert(result.simulated.end(), row_.begin(), row_.end());
@@ -217,8 +218,12 @@ class Replay::Rollout {
 
   // The simulated state in the data's columns (row_), as the run's rows
   // give it.
-  void Record() {
-    sim_->Sample(&sample_);
+  void Record(bool fixed_step) {
+    if (fixed_step) {
+      sim_->SampleMotion(&sample_);
+    } else {
+      sim_->Sample(&sample_);
+    }
     for (int c = 0; c < width_; ++c) row_[c] = sample_[place_[c]];
   }
 

@@ -214,6 +214,14 @@ CappedSpringOutput CappedSpring(const CappedSpringInput& in) {
   return out;
 }
 
+bool ReadsStickState(FrictionKind kind) {
+  return kind == FrictionKind::kLuGre || ReadsTangentialSpring(kind);
+}
+
+bool ReadsTangentialSpring(FrictionKind kind) {
+  return kind == FrictionKind::kCoulomb || kind == FrictionKind::kStribeck;
+}
+
 FrictionOutput EvaluateFriction(const FrictionParams& params, const FrictionInput& in) {
   switch (params.kind) {
     case FrictionKind::kNone: return FrictionOutput();

@@ -141,15 +141,15 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
       f.total = KelvinVoigtForce(p.linear_stiffness, c, s.depth, s.depth_rate);
       break;
     }
-    case LawFamily::kHysteresis: {
+    // the spring K d^n once (pow is half the law's cost), then its factor:
+    // HysteresisForce and DissipationForce, to the bit
+    case LawFamily::kHysteresis:
       f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
-      f.total = HysteresisForce(p.stiffness, p.exponent, p.hysteresis, s.depth, s.depth_rate,
-                                s.impact_velocity);
+      f.total = f.elastic * HysteresisFactor(p.hysteresis, s.depth_rate, s.impact_velocity);
       break;
-    }
     case LawFamily::kConstantDissipation:
       f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
-      f.total = DissipationForce(p.stiffness, p.exponent, *p.dissipation, s.depth, s.depth_rate);
+      f.total = f.elastic * DissipationFactor(*p.dissipation, s.depth_rate);
       break;
   }
 

@@ -73,12 +73,18 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   const FrictionParams& params = pair.friction;
   if (params.kind == FrictionKind::kNone) return;
 
+  // only what the model reads (regularized: the slip and the load), and
+  // what rolling resistance reads (the committed orientations, k_t)
+  const bool rolling = params.torsional > 0 || params.rolling > 0;
+  const bool stick = ReadsStickState(params.kind);
+  const bool spring = ReadsTangentialSpring(params.kind);
+
   // the committed state, turned into the current tangent plane, and the
   // stretch of the spring since: the anchors' relative displacement
   FrictionInput in;
   FrictionState committed;
-  if (e->episode >= 0) {
-    committed = episodes_.CommittedFriction(e->episode);
+  if (e->episode >= 0 && (stick || rolling)) committed = episodes_.CommittedFriction(e->episode);
+  if (e->episode >= 0 && stick) {
     const double(&anchors)[2][3] = episodes_.Anchors(e->episode);
     mjtNum p0[3], p1[3];
     BodyPoint(d_, b0, anchors[0], p0);
@@ -93,14 +99,16 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   in.normal_force = std::max(e->force, 0.0);
 
   // k_t: the tag's, or Mindlin's no-slip spring at this depth; c_t
-  in.stiffness = TangentialStiffness(params, pair.params, e->depth);
+  if (spring || rolling) in.stiffness = TangentialStiffness(params, pair.params, e->depth);
   in.committed_stiffness = committed.stiffness;
   in.mass = pair.friction_mass;
-  ContactState state;
-  state.depth = e->depth;
-  state.depth_rate = e->depth_rate;
-  state.impact_velocity = e->impact_velocity;
-  in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+  if (spring) {
+    ContactState state;
+    state.depth = e->depth;
+    state.depth_rate = e->depth_rate;
+    state.impact_velocity = e->impact_velocity;
+    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+  }
 
   const FrictionOutput out = EvaluateFriction(params, in);
   for (int b = 0; b < 2; ++b) {
@@ -118,9 +126,7 @@ void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointE
   next.stiffness = in.stiffness;
   mju_copy4(next.orientation[0], d_->xquat + 4 * b0);
   mju_copy4(next.orientation[1], d_->xquat + 4 * b1);
-  if (params.torsional > 0 || params.rolling > 0) {
-    AddRollingResistance(pair, committed, in.stiffness, e);
-  }
+  if (rolling) AddRollingResistance(pair, committed, in.stiffness, e);
 }
 
 void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,

@@ -4,9 +4,11 @@
 
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <system_error>
 
 namespace contactlaws {
 namespace {
@@ -49,6 +51,15 @@ bool IsDecimal(std::string_view text) {
 std::optional<double> ParseNumber(std::string_view text) {
   if (text.empty() || text.size() > kMaxNumberLength || !IsDecimal(text)) {
     return std::nullopt;
+  }
+  // from_chars: the correctly rounded value, as strtod's, at a tenth of its
+  // cost (a measured trajectory is ~10^5 numbers); strtod's ERANGE rule
+  // decides what lies near the range's ends (zeros, subnormals, overflow)
+  const std::string_view digits = text.front() == '+' ? text.substr(1) : text;
+  double fast = 0;
+  const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), fast);
+  if (error == std::errc() && stop == digits.data() + digits.size() && std::isnormal(fast)) {
+    return fast;
   }
   const std::string buffer(text);
   char* end = nullptr;

@@ -13,6 +13,27 @@
 
 namespace contactlaws {
 
+namespace {
+
+// No step of m makes a constraint row: MuJoCo's solver never runs, so the
+// warm start it keeps between calls (qacc_warmstart) is never read.
+bool WithoutConstraints(const mjModel* m) {
+  if (m->opt.disableflags & mjDSBL_CONSTRAINT) return true;
+  if (!(m->opt.disableflags & mjDSBL_CONTACT) || m->neq > 0) return false;
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_limited[j]) return false;
+  }
+  for (int v = 0; v < m->nv; ++v) {
+    if (m->dof_frictionloss[v] > 0) return false;
+  }
+  for (int t = 0; t < m->ntendon; ++t) {
+    if (m->tendon_limited[t] || m->tendon_frictionloss[t] > 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
                        const SimulationOptions& options)
     : model_(std::move(model)), source_(std::move(source)) {
@@ -25,6 +46,8 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   if (options.integrator) contacts_->options().integrator = *options.integrator;
 
   columns_ = options.columns;
+  motion_only_ = !columns_.pairs && !columns_.friction && !columns_.energy &&
+                 WithoutConstraints(contacts_->model_view());
   RecordBodiesAndJoints();
   Reset(/*fresh=*/true);
   if (options.settle) {
@@ -149,6 +172,14 @@ std::vector<TagReading> Simulation::Readings() const {
 
 void Simulation::Sample(std::vector<double>* row) {
   mj_forward(model(), data_.get());  // the run's options: mj_forward reads its timestep
+  Row(data_.get(), Readings(), contacts_->ElasticEnergy(), contacts_->DissipatedEnergy(), row);
+}
+
+void Simulation::SampleMotion(std::vector<double>* row) {
+  if (!motion_only_) return Sample(row);
+  mj_kinematics(model(), data_.get());
+  mj_comPos(model(), data_.get());
+  mj_comVel(model(), data_.get());
   Row(data_.get(), Readings(), contacts_->ElasticEnergy(), contacts_->DissipatedEnergy(), row);
 }
 
