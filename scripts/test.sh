@@ -44,8 +44,10 @@ configure_sanitized() {
   # the plugin is left out: a shared library linked with -Wl,--no-undefined
   # cannot take the sanitizers' runtime, which only executables carry (its
   # tests are not run there either: label preload)
+  # nor the Python module (its tests cannot load an instrumented module:
+  # label python) and the MPI build (label mpi), which no sanitized test runs
   cmake -S "$repo" -B "$repo/$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCONTACTLAWS_BUILD_PLUGIN=OFF \
+    -DCONTACTLAWS_BUILD_PLUGIN=OFF -DCONTACTLAWS_PYTHON=OFF -DCONTACTLAWS_MPI=OFF \
     -DCMAKE_CXX_COMPILER="$cxx" \
     -DCMAKE_CXX_FLAGS="$cflags" \
     -DCMAKE_EXE_LINKER_FLAGS="$lflags" \
