@@ -37,24 +37,33 @@
 // opt is this data's. A step of a length of its own, Step(timestep), sets the
 // data's options, never the model's. The model must not change while data
 // use it.
+//
+// Inside, ContactData is a facade over objects with one job each
+// (src/mujoco/): the hook session (the pairs the broadphase proposed, the
+// capture of the step's start evaluation), the point evaluator (the laws and
+// friction at each contact point), the step committer (episodes, collisions,
+// energy, divergence, visible contacts) and the step-start velocities.
 
 #ifndef CONTACTLAWS_CONTACT_DATA_H_
 #define CONTACTLAWS_CONTACT_DATA_H_
 
-#include <array>
-#include <cstdint>
 #include <memory>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include <mujoco/mujoco.h>
 
-#include "contactlaws/contact_memory.h"
 #include "contactlaws/contact_model.h"
-#include "contactlaws/kinematics.h"
+#include "contactlaws/impact.h"
+#include "contactlaws/point_evaluation.h"
 
 namespace contactlaws {
+
+class PointEvaluator;
+class ProposedPairs;
+class StepCapture;
+class StepCommitter;
+class StepStartVelocities;
 
 // MuJoCo 2.2.2's own contact filter for a geom pair (not exported by the
 // library): 1 discards. Installing mjcb_contactfilter replaces it for every
@@ -121,7 +130,7 @@ class ContactData {
 
   // Set by the AfterStep that found the state diverged; the state is then
   // not to be trusted (MuJoCo may even have reset it).
-  const std::optional<Divergence>& divergence() const { return divergence_; }
+  const std::optional<Divergence>& divergence() const;
 
   const ContactModel& model() const { return model_; }
   const mjData* data() const { return d_; }
@@ -129,21 +138,21 @@ class ContactData {
 
   // Every collision so far, one per pair from its first point touching to
   // its last point leaving (CollisionLog), in order of first touch.
-  const std::vector<Impact>& impacts() const { return collisions_.impacts(); }
+  const std::vector<Impact>& impacts() const;
 
   // Every contact episode of every contact point so far, in order of first
   // touch: a point is followed by where it sits on the two bodies.
-  const std::vector<Impact>& point_impacts() const { return episodes_.impacts(); }
+  const std::vector<Impact>& point_impacts() const;
 
   // One contact point as the hook last saw it.
   using Evaluation = PointEvaluation;
 
   // The contact points of the latest hook evaluation (depth > 0).
-  const std::vector<Evaluation>& latest() const { return latest_; }
+  const std::vector<Evaluation>& latest() const;
 
   // The tagged pairs the last collision pass proposed (what ApplyForces
   // evaluates), in pair order.
-  const std::vector<int>& proposed_pairs() const { return proposed_; }
+  const std::vector<int>& proposed_pairs() const;
 
   // The latest hook evaluation (call mj_forward first for the current state).
   TagReading Reading(int tag) const;
@@ -164,79 +173,17 @@ class ContactData {
 
   // World-frame velocity of a point fixed to body (driven bodies: their
   // prescribed motion). Needs cvel (mj_forward, or inside the hooks).
-  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const {
-    contactlaws::PointVelocity(model_, d_, body, point, vel);
-  }
+  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const;
 
  private:
-  // The law at a contact point of pair p (narrowphase output con); taken:
-  // the pair's open episodes already matched in this evaluation.
-  PointEvaluation Evaluate(int p, const mjContact& con, uint64_t* taken);
-  // The friction at that point (friction_force.cc): records its slip and
-  // spin in *e, and for a pair with friction adds the friction force and
-  // torque to qfrc_passive and records them, with the state to commit.
-  void AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e);
-  // The rolling and torsional resistance of a point (condim 4 and 6) with
-  // the committed state c and tangential stiffness k.
-  void AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
-                            PointEvaluation* e);
-  // Once a step: sets divergence_ when the step diverged.
-  void CheckDivergence();
-  // Notices an mjData stepped without BeforeStep (plain mj_step): warns once.
-  void NoticeUnmanagedStep();
-  // The velocities of the step's start and of the one before (BeforeStep).
-  void RecordStepStart();
-
   const ContactModel& model_;
-  const mjModel* m_;
   mjData* d_;
-  mjModel view_;  // m_'s header with this data's options: model_view()
-  // ApplyForces tests every tagged pair, MuJoCo's collision pass is off in
-  // view_ (OwnBroadphase in contact_data.cc)
-  bool own_broadphase_;
-
-  std::unique_ptr<mjContact[]> contacts_;  // narrowphase output, mjMAXCONPAIR
-
-  // tagged pairs proposed by the broadphase (ClaimPair), for ApplyForces
-  std::vector<int> proposed_;
-  std::vector<uint8_t> is_proposed_;  // per pair
-  bool proposals_sorted_ = true;
-  bool proposals_consumed_ = true;  // ApplyForces used the list
-
-  // the hook's last evaluation, and the one at the step's start, which
-  // AfterStep commits
-  std::vector<PointEvaluation> latest_;
-  double latest_time_ = 0;
-  std::vector<PointEvaluation> captured_;
-  double captured_time_ = 0;
-  bool capture_armed_ = false;
-  bool has_capture_ = false;
-
-  // plain mj_step detection: evaluations at a later time with no step armed
-  static constexpr int kUnarmedAdvancesBeforeWarning = 8;
-  int advances_unarmed_ = 0;
-  bool unmanaged_ = false;
-
-  // qvel at the start of this step and of the one before (BeforeStep): the
-  // rates just before a contact begins and just after it ends, which no
-  // contact force has touched
-  std::vector<mjtNum> current_qvel_;
-  std::vector<mjtNum> previous_qvel_;
-  double current_time_ = 0;
-  double step_start_time_ = 0;  // d->time at BeforeStep
-  double previous_time_ = 0;
-  bool has_current_ = false;
-  bool has_previous_ = false;
-
-  // MuJoCo's bad-state warning counts at BeforeStep: a rise means mj_step
-  // found NaN/huge values and reset the data
-  std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
-  std::optional<Divergence> divergence_;
-
-  VisibleContactsOverflow visible_overflow_;
-  EpisodeLog episodes_;
-  CollisionLog collisions_;
-  DissipationLedger ledger_;
+  mjModel view_;  // the model's header with this data's options: model_view()
+  std::unique_ptr<ProposedPairs> proposals_;
+  std::unique_ptr<StepCapture> capture_;
+  std::unique_ptr<StepStartVelocities> step_start_;
+  std::unique_ptr<PointEvaluator> evaluator_;
+  std::unique_ptr<StepCommitter> committer_;
 };
 
 }  // namespace contactlaws

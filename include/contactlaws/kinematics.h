@@ -46,8 +46,18 @@ double ApproachRate(const ContactModel& model, mjData* d, const GeomPair& pair,
                     const mjtNum point[3], const mjtNum normal[3], const mjtNum* qvel,
                     double time);
 
-// Bounding-sphere test of MuJoCo's broadphase (margin 0): true if g1 and g2
-// cannot touch.
+// The gap between the bounding volumes of geoms g0 and g1 at d, as MuJoCo's
+// broadphase bounds them (margin 0): two bounding spheres (geom_rbound), or a
+// plane (rbound 0) and the other geom's sphere. *gap: m, < 0 when they
+// overlap; normal: the unit direction from g0 towards g1 across it (the
+// centres', or the plane's normal). False, and nothing written, when neither
+// geom has a bounding sphere (two planes, height fields): the pair is always
+// near.
+bool BoundingGap(const mjModel* m, const mjData* d, int g0, int g1, double* gap,
+                 mjtNum normal[3]);
+
+// The "is this pair near" test of the passive hook: true when the bounding
+// volumes of g1 and g2 (BoundingGap) are apart, so that they cannot touch.
 bool FarApart(const mjModel* m, const mjData* d, int g1, int g2);
 
 // Translates each driven body (and its geoms) to its pose at d->time: exact

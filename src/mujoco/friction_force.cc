@@ -1,17 +1,10 @@
 // Copyright contactlaws authors.
-//
-// The friction of a contact point (ContactData::AddFriction): the slip of
-// body[1] relative to body[0], the stretch of the stick springs since the
-// last committed step (read from the stage's own positions: the anchors are
-// points fixed on the two bodies, and the bodies' orientations), the kernels
-// of friction.h, and the forces and torques on the two bodies, equal and
-// opposite. A pure function of the state it is given and the committed
-// memory, like the normal law.
+
+#include "mujoco/friction_force.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "contactlaws/contact_data.h"
 #include "contactlaws/friction.h"
 #include "contactlaws/kinematics.h"
 
@@ -63,82 +56,19 @@ void SlipAndSpin(const ContactModel& model, const mjData* d, const GeomPair& pai
   for (int i = 0; i < 3; ++i) e->spin[i] = (w1 ? w1[i] : 0.0) - (w0 ? w0[i] : 0.0);
 }
 
-}  // namespace
-
-void ContactData::AddFriction(const GeomPair& pair, const mjContact& con, PointEvaluation* e) {
-  const mjtNum* n = con.frame;
-  const int b0 = pair.body[0];
-  const int b1 = pair.body[1];
-  SlipAndSpin(model_, d_, pair, con, e);
-  const FrictionParams& params = pair.friction;
-  if (params.kind == FrictionKind::kNone) return;
-
-  // only what the model reads (regularized: the slip and the load), and
-  // what rolling resistance reads (the committed orientations, k_t)
-  const bool rolling = params.torsional > 0 || params.rolling > 0;
-  const bool stick = ReadsStickState(params.kind);
-  const bool spring = ReadsTangentialSpring(params.kind);
-
-  // the committed state, turned into the current tangent plane, and the
-  // stretch of the spring since: the anchors' relative displacement
-  FrictionInput in;
-  FrictionState committed;
-  if (e->episode >= 0 && (stick || rolling)) committed = episodes_.CommittedFriction(e->episode);
-  if (e->episode >= 0 && stick) {
-    const double(&anchors)[2][3] = episodes_.Anchors(e->episode);
-    mjtNum p0[3], p1[3];
-    BodyPoint(d_, b0, anchors[0], p0);
-    BodyPoint(d_, b1, anchors[1], p1);
-    mju_sub3(in.stretch, p1, p0);
-    Project(n, in.stretch);
-    ProjectKeepingSize(n, committed.spring);
-  }
-  mju_copy3(in.committed, committed.spring);
-  mju_copy3(in.slip, e->slip);
-  in.was_sliding = committed.sliding;
-  in.normal_force = std::max(e->force, 0.0);
-
-  // k_t: the tag's, or Mindlin's no-slip spring at this depth; c_t
-  if (spring || rolling) in.stiffness = TangentialStiffness(params, pair.params, e->depth);
-  in.committed_stiffness = committed.stiffness;
-  in.mass = pair.friction_mass;
-  if (spring) {
-    ContactState state;
-    state.depth = e->depth;
-    state.depth_rate = e->depth_rate;
-    state.impact_velocity = e->impact_velocity;
-    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
-  }
-
-  const FrictionOutput out = EvaluateFriction(params, in);
-  for (int b = 0; b < 2; ++b) {
-    mjtNum push[3];
-    mju_scl3(push, out.force, b == 1 ? 1.0 : -1.0);
-    AddPointForce(m_, d_, pair.body[b], con.pos, push, d_->qfrc_passive);
-  }
-  mju_copy3(e->friction, out.force);
-  e->friction_energy = out.stored_energy;
-  // the power friction takes from the bodies (the ledger: contact_memory.h)
-  e->friction_power = -mju_dot3(out.force, e->slip);
-  FrictionState& next = e->friction_state;
-  mju_copy3(next.spring, out.state);
-  next.sliding = out.sliding;
-  next.stiffness = in.stiffness;
-  mju_copy4(next.orientation[0], d_->xquat + 4 * b0);
-  mju_copy4(next.orientation[1], d_->xquat + 4 * b1);
-  if (rolling) AddRollingResistance(pair, committed, in.stiffness, e);
-}
-
-void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState& c, double k,
-                                       PointEvaluation* e) {
+// The rolling and torsional resistance of a point (condim 4 and 6) with the
+// committed state c and tangential stiffness k: adds the torques to
+// d->qfrc_passive and records them in *e.
+void AddRollingResistance(const mjModel* m, mjData* d, const GeomPair& pair,
+                          const FrictionState& c, double k, PointEvaluation* e) {
   const double* n = e->normal;
   const double fn = std::max(e->force, 0.0);
   // the relative rotation since the commit, split along the normal
   // (torsion) and in the plane (rolling); so are the rate and the state
   mjtNum r0[3] = {0, 0, 0}, r1[3] = {0, 0, 0};
   if (e->episode >= 0) {
-    RotationSince(d_, pair.body[0], c.orientation[0], r0);
-    RotationSince(d_, pair.body[1], c.orientation[1], r1);
+    RotationSince(d, pair.body[0], c.orientation[0], r0);
+    RotationSince(d, pair.body[1], c.orientation[1], r1);
   }
   mjtNum rotation[3];
   mju_sub3(rotation, r1, r0);
@@ -172,10 +102,10 @@ void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState
     in.stick_limit = in.slide_limit = lengths[part] * fn;
     in.was_sliding = c.torque_sliding[part];
     const CappedSpringOutput out = CappedSpring(in);
-    AddTorque(m_, d_, pair.body[1], out.force, d_->qfrc_passive);
+    AddTorque(m, d, pair.body[1], out.force, d->qfrc_passive);
     mjtNum opposite[3];
     mju_scl3(opposite, out.force, -1.0);
-    AddTorque(m_, d_, pair.body[0], opposite, d_->qfrc_passive);
+    AddTorque(m, d, pair.body[0], opposite, d->qfrc_passive);
     mju_addTo3(e->friction_torque, out.force);
     mju_addTo3(e->friction_state.torque, out.spring);
     e->friction_state.torque_stiffness[part] = in.stiffness;
@@ -183,6 +113,73 @@ void ContactData::AddRollingResistance(const GeomPair& pair, const FrictionState
     e->friction_energy += out.stored_energy;
     e->friction_power -= mju_dot3(out.force, in.rate);
   }
+}
+
+}  // namespace
+
+void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,
+                 const GeomPair& pair, const mjContact& con, PointEvaluation* e) {
+  const mjtNum* n = con.frame;
+  const int b0 = pair.body[0];
+  const int b1 = pair.body[1];
+  SlipAndSpin(model, d, pair, con, e);
+  const FrictionParams& params = pair.friction;
+  if (params.kind == FrictionKind::kNone) return;
+
+  // only what the model reads (regularized: the slip and the load), and
+  // what rolling resistance reads (the committed orientations, k_t)
+  const bool rolling = params.torsional > 0 || params.rolling > 0;
+  const bool stick = ReadsStickState(params.kind);
+  const bool spring = ReadsTangentialSpring(params.kind);
+
+  // the committed state, turned into the current tangent plane, and the
+  // stretch of the spring since: the anchors' relative displacement
+  FrictionInput in;
+  FrictionState committed;
+  if (e->episode >= 0 && (stick || rolling)) committed = episodes.CommittedFriction(e->episode);
+  if (e->episode >= 0 && stick) {
+    const double(&anchors)[2][3] = episodes.Anchors(e->episode);
+    mjtNum p0[3], p1[3];
+    BodyPoint(d, b0, anchors[0], p0);
+    BodyPoint(d, b1, anchors[1], p1);
+    mju_sub3(in.stretch, p1, p0);
+    Project(n, in.stretch);
+    ProjectKeepingSize(n, committed.spring);
+  }
+  mju_copy3(in.committed, committed.spring);
+  mju_copy3(in.slip, e->slip);
+  in.was_sliding = committed.sliding;
+  in.normal_force = std::max(e->force, 0.0);
+
+  // k_t: the tag's, or Mindlin's no-slip spring at this depth; c_t
+  if (spring || rolling) in.stiffness = TangentialStiffness(params, pair.params, e->depth);
+  in.committed_stiffness = committed.stiffness;
+  in.mass = pair.friction_mass;
+  if (spring) {
+    ContactState state;
+    state.depth = e->depth;
+    state.depth_rate = e->depth_rate;
+    state.impact_velocity = e->impact_velocity;
+    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+  }
+
+  const FrictionOutput out = EvaluateFriction(params, in);
+  for (int b = 0; b < 2; ++b) {
+    mjtNum push[3];
+    mju_scl3(push, out.force, b == 1 ? 1.0 : -1.0);
+    AddPointForce(model.model(), d, pair.body[b], con.pos, push, d->qfrc_passive);
+  }
+  mju_copy3(e->friction, out.force);
+  e->friction_energy = out.stored_energy;
+  // the power friction takes from the bodies (the ledger: contact_memory.h)
+  e->friction_power = -mju_dot3(out.force, e->slip);
+  FrictionState& next = e->friction_state;
+  mju_copy3(next.spring, out.state);
+  next.sliding = out.sliding;
+  next.stiffness = in.stiffness;
+  mju_copy4(next.orientation[0], d->xquat + 4 * b0);
+  mju_copy4(next.orientation[1], d->xquat + 4 * b1);
+  if (rolling) AddRollingResistance(model.model(), d, pair, committed, in.stiffness, e);
 }
 
 }  // namespace contactlaws

@@ -141,23 +141,40 @@ void ApplyDrives(const ContactModel& model, mjData* d) {
   }
 }
 
-bool FarApart(const mjModel* m, const mjData* d, int g1, int g2) {
+bool BoundingGap(const mjModel* m, const mjData* d, int g0, int g1, double* gap,
+                 mjtNum normal[3]) {
+  const mjtNum r0 = m->geom_rbound[g0];
   const mjtNum r1 = m->geom_rbound[g1];
-  const mjtNum r2 = m->geom_rbound[g2];
-  auto plane_distance = [&](int plane, int other) {
-    const mjtNum* mat = d->geom_xmat + 9 * plane;
-    const mjtNum* p = d->geom_xpos + 3 * plane;
-    const mjtNum* q = d->geom_xpos + 3 * other;
-    return (q[0] - p[0]) * mat[2] + (q[1] - p[1]) * mat[5] + (q[2] - p[2]) * mat[8];
-  };
-  if (r1 > 0 && r2 > 0) {
-    mjtNum dif[3];
-    mju_sub3(dif, d->geom_xpos + 3 * g1, d->geom_xpos + 3 * g2);
-    return mju_dot3(dif, dif) > (r1 + r2) * (r1 + r2);
+  const mjtNum* p0 = d->geom_xpos + 3 * g0;
+  const mjtNum* p1 = d->geom_xpos + 3 * g1;
+  if (r0 > 0 && r1 > 0) {
+    mju_sub3(normal, p1, p0);
+    *gap = mju_normalize3(normal) - r0 - r1;
+    return true;
   }
-  if (m->geom_type[g1] == mjGEOM_PLANE && r2 > 0) return plane_distance(g1, g2) > r2;
-  if (m->geom_type[g2] == mjGEOM_PLANE && r1 > 0) return plane_distance(g2, g1) > r1;
+  // a plane's sphere is unbounded (rbound 0): the other's height above it
+  for (const int plane : {0, 1}) {
+    const int g = plane == 0 ? g0 : g1;
+    const mjtNum r = plane == 0 ? r1 : r0;
+    if (m->geom_type[g] != mjGEOM_PLANE || !(r > 0)) continue;
+    // the plane's normal (its z axis), from g0 towards g1
+    const mjtNum* mat = d->geom_xmat + 9 * g;
+    const mjtNum sign = plane == 0 ? 1.0 : -1.0;
+    normal[0] = sign * mat[2];
+    normal[1] = sign * mat[5];
+    normal[2] = sign * mat[8];
+    const mjtNum* q = plane == 0 ? p1 : p0;  // the other geom's centre
+    const mjtNum* o = plane == 0 ? p0 : p1;  // a point of the plane
+    *gap = (q[0] - o[0]) * mat[2] + (q[1] - o[1]) * mat[5] + (q[2] - o[2]) * mat[8] - r;
+    return true;
+  }
   return false;
+}
+
+bool FarApart(const mjModel* m, const mjData* d, int g1, int g2) {
+  double gap;
+  mjtNum normal[3];
+  return BoundingGap(m, d, g1, g2, &gap, normal) && gap > 0;
 }
 
 }  // namespace contactlaws

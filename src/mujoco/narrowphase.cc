@@ -89,16 +89,17 @@ int CollidePolytopePair(const mjModel* m, const mjData* d, int g0, int g1, mjtNu
 }  // namespace
 
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out) {
-  const int t0 = m->geom_type[g0];
-  const int t1 = m->geom_type[g1];
-  if (t0 == mjGEOM_BOX && t1 == mjGEOM_BOX) {
-    return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out);
+  switch (NarrowphaseOf(m, g0, g1)) {
+    case Narrowphase::kBoxBox:
+      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out);
+    case Narrowphase::kPolytope:
+      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out); count >= 0) {
+        return count;
+      }
+      break;
+    default: break;
   }
-  if (t1 == mjGEOM_MESH && IsPolytope(m, g0) && IsPolytope(m, g1)) {
-    const int count = CollidePolytopePair(m, d, g0, g1, margin, out);
-    if (count >= 0) return count;
-  }
-  return mjCOLLISIONFUNC[t0][t1](m, d, out, g0, g1, margin);
+  return mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]](m, d, out, g0, g1, margin);
 }
 
 }  // namespace contactlaws

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "mujoco/step_committer.h"
+
 namespace contactlaws {
 namespace {
 
@@ -45,12 +47,12 @@ void FillContact(const GeomPair& pair, const PointEvaluation& point, mjContact* 
 
 }  // namespace
 
-int AppendVisibleContacts(const ContactData& contacts, mjData* d,
-                          VisibleContactsOverflow* overflow) {
-  const mjModel* m = contacts.model().model();
-  const std::vector<GeomPair>& pairs = contacts.model().pairs();
+int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
+                        mjData* d, VisibleContactsOverflow* overflow) {
+  const mjModel* m = model.model();
+  const std::vector<GeomPair>& pairs = model.pairs();
   int appended = 0;
-  for (const PointEvaluation& point : contacts.latest()) {
+  for (const PointEvaluation& point : points) {
     if (d->ncon >= m->nconmax) {
       if (overflow->dropped++ == 0) {
         char message[160];
@@ -67,6 +69,11 @@ int AppendVisibleContacts(const ContactData& contacts, mjData* d,
     ++appended;
   }
   return appended;
+}
+
+int AppendVisibleContacts(const ContactData& contacts, mjData* d,
+                          VisibleContactsOverflow* overflow) {
+  return AppendVisiblePoints(contacts.model(), contacts.latest(), d, overflow);
 }
 
 }  // namespace contactlaws

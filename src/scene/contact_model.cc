@@ -146,8 +146,7 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
 const char* PairProblem(const mjModel* m, int g1, int g2) {
   const int b1 = m->geom_bodyid[g1];
   const int b2 = m->geom_bodyid[g2];
-  if (!mjCOLLISIONFUNC[std::min(m->geom_type[g1], m->geom_type[g2])]
-                      [std::max(m->geom_type[g1], m->geom_type[g2])]) {
+  if (NarrowphaseOf(m, g1, g2) == Narrowphase::kNone) {
     return "MuJoCo has no collision function for these geom types";
   }
   if (m->body_weldid[b1] == m->body_weldid[b2]) {
@@ -279,8 +278,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       }
 
       GeomPair pair;
-      const bool swap = m->geom_type[g1] > m->geom_type[g2];
-      pair.geom = swap ? std::array<int, 2>{g2, g1} : std::array<int, 2>{g1, g2};
+      pair.geom = CollisionOrder(m, g1, g2);
       pair.body = {m->geom_bodyid[pair.geom[0]], m->geom_bodyid[pair.geom[1]]};
       pair.named = {g1, g2};
       pair.tag = tag_index;
@@ -337,7 +335,7 @@ void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,
   const int t2 = std::max(model_->geom_type[g1], model_->geom_type[g2]);
   DepthVerdict verdict = JudgeDepth(t1, t2);
   // box-mesh and mesh-mesh within the polytope caps are contactlaws' own
-  if (t2 == mjGEOM_MESH && IsPolytope(model_, g1) && IsPolytope(model_, g2)) {
+  if (NarrowphaseOf(model_, g1, g2) == Narrowphase::kPolytope) {
     verdict = {DepthTrust::kComputed, ""};
   }
   // refused in a group too: skipped, the pair would fall back to MuJoCo's

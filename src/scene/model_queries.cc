@@ -37,15 +37,22 @@ bool IsPolytope(const mjModel* m, int g) {
          m->mesh_graph[graph + 1] <= kMaxPolytopeTriangles;
 }
 
+std::array<int, 2> CollisionOrder(const mjModel* m, int g1, int g2) {
+  return m->geom_type[g1] > m->geom_type[g2] ? std::array<int, 2>{g2, g1}
+                                             : std::array<int, 2>{g1, g2};
+}
+
 int MaxContacts(const mjModel* m, int g1, int g2) {
   const int type1 = m->geom_type[g1];
   const int type2 = m->geom_type[g2];
   auto either = [&](int type) { return type1 == type || type2 == type; };
   if (either(mjGEOM_SPHERE) || either(mjGEOM_ELLIPSOID)) return 1;
-  // box-box, box-mesh, mesh-mesh are contactlaws' own (mujoco/narrowphase.h):
-  // the patch's vertices
-  if (type1 == mjGEOM_BOX && type2 == mjGEOM_BOX) return kMaxBoxBoxPoints;
-  if (IsPolytope(m, g1) && IsPolytope(m, g2)) return kMaxPolytopePoints;
+  // box-box, box-mesh, mesh-mesh are contactlaws' own: the patch's vertices
+  switch (NarrowphaseOf(m, g1, g2)) {
+    case Narrowphase::kBoxBox: return kMaxBoxBoxPoints;
+    case Narrowphase::kPolytope: return kMaxPolytopePoints;
+    default: break;
+  }
   // mjc_Convex (engine_collision_convex.c): one point, or more with multiCCD
   const bool convex = (either(mjGEOM_CYLINDER) || either(mjGEOM_MESH)) &&
                       !either(mjGEOM_PLANE) && !either(mjGEOM_HFIELD);

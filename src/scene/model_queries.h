@@ -6,6 +6,8 @@
 #ifndef CONTACTLAWS_SCENE_MODEL_QUERIES_H_
 #define CONTACTLAWS_SCENE_MODEL_QUERIES_H_
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -21,6 +23,27 @@ std::string_view TextData(const mjModel* m, int i);
 // box, or a mesh whose convex hull (MuJoCo's mesh_graph) is within
 // kMaxPolytopeVertices and kMaxPolytopeTriangles.
 bool IsPolytope(const mjModel* m, int g);
+
+// The narrowphase that collides geoms g1 and g2 of m (mujoco/narrowphase.h),
+// in either order: contactlaws' box-box (geometry/box_box.h), its polytopes
+// (a box or polytope mesh with a polytope mesh: geometry/polytope.h; MuJoCo's
+// when the kernel declines a degenerate hull), MuJoCo 2.2.2's mjCOLLISIONFUNC
+// for every other pair of types it has, or none.
+// Inline: the passive hook asks it for every pair near.
+enum class Narrowphase { kNone, kBoxBox, kPolytope, kMujoco };
+inline Narrowphase NarrowphaseOf(const mjModel* m, int g1, int g2) {
+  const int type1 = std::min(m->geom_type[g1], m->geom_type[g2]);
+  const int type2 = std::max(m->geom_type[g1], m->geom_type[g2]);
+  if (type1 == mjGEOM_BOX && type2 == mjGEOM_BOX) return Narrowphase::kBoxBox;
+  if (type2 == mjGEOM_MESH && IsPolytope(m, g1) && IsPolytope(m, g2)) {
+    return Narrowphase::kPolytope;
+  }
+  return mjCOLLISIONFUNC[type1][type2] ? Narrowphase::kMujoco : Narrowphase::kNone;
+}
+
+// g1 and g2 in the order mjCOLLISIONFUNC takes them: geom types ascending
+// (a plane first).
+std::array<int, 2> CollisionOrder(const mjModel* m, int g1, int g2);
 
 // Most contact points the narrowphase (mujoco/narrowphase.h) returns for
 // geoms g1 and g2 of m: kMaxPolytopePoints for two polytopes (box-box,

@@ -10,8 +10,10 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
+#include "contactlaws/kinematics.h"
 #include "mujoco/damper_rate.h"
 #include "mujoco/hooks.h"
+#include "scene/model_queries.h"
 #include "sim/reach_sweep.h"
 
 namespace contactlaws {
@@ -284,25 +286,18 @@ bool AutoTimestep::Closes(const std::array<int, 2>& g, const std::array<int, 2>&
   const mjData* d = contacts_.data();
   const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
   mjtNum normal[3];  // from geom[0] towards geom[1]
+  if (!BoundingGap(m, d, g[0], g[1], &c->gap, normal)) {
+    return false;  // no bounding sphere (planes, height fields)
+  }
   double spin = 0;   // what rotation adds to the closing speed
-  if (m->geom_type[g[0]] == mjGEOM_PLANE && rb[1] > 0) {
-    const mjtNum* mat = d->geom_xmat + 9 * g[0];
-    normal[0] = mat[2];
-    normal[1] = mat[5];
-    normal[2] = mat[8];
-    mjtNum offset[3];
-    mju_sub3(offset, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-    c->gap = mju_dot3(offset, normal) - rb[1];
-    spin = mju_norm3(d->cvel + 6 * body[1]) * rb[1];
-  } else if (rb[0] > 0 && rb[1] > 0) {
-    mju_sub3(normal, d->geom_xpos + 3 * g[1], d->geom_xpos + 3 * g[0]);
-    const double distance = mju_normalize3(normal);
-    c->gap = distance - rb[0] - rb[1];
+  if (rb[0] > 0 && rb[1] > 0) {
     for (int b = 0; b < 2; ++b) {
       if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
     }
   } else {
-    return false;  // no bounding sphere (planes, height fields)
+    // a plane and the other geom's sphere
+    const int b = rb[0] > 0 ? 0 : 1;
+    spin = mju_norm3(d->cvel + 6 * body[b]) * rb[b];
   }
   mjtNum v[2][3], relative[3];
   for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
@@ -345,14 +340,14 @@ double AutoTimestep::ApproachStep(int p, bool* fine) const {
 
 double AutoTimestep::UntaggedStep(int g0, int g1, double margin) const {
   const mjModel* m = contacts_.model().model();
-  if (m->geom_type[g0] > m->geom_type[g1]) std::swap(g0, g1);  // a plane first, as GeomPair
-  const std::array<int, 2> body = {m->geom_bodyid[g0], m->geom_bodyid[g1]};
+  const std::array<int, 2> g = CollisionOrder(m, g0, g1);  // a plane first, as GeomPair
+  const std::array<int, 2> body = {m->geom_bodyid[g[0]], m->geom_bodyid[g[1]]};
   // both welded to the world: their gap never closes
   if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return kInfinity;
   Closing c;
   // MuJoCo's contact starts at its margin; a pair within reach (or without
   // bounding spheres) needs the scene's own step
-  if (!Closes({g0, g1}, body, DriveAcceleration(contacts_.model(), body), &c) ||
+  if (!Closes(g, body, DriveAcceleration(contacts_.model(), body), &c) ||
       !(c.gap > margin)) {
     return scene_step_;
   }

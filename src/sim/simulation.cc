@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
+#include "contactlaws/kinematics.h"
 
 namespace contactlaws {
 

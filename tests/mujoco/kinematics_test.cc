@@ -78,5 +78,60 @@ TEST_F(KinematicsTest, DrivenBodyIsExactAtAnyTime) {
   }
 }
 
+TEST_F(KinematicsTest, BoundingGapIsTheBroadphasesSpheresOrAPlane) {
+  // a tilted plane, two spheres (rbound = radius), and a second plane
+  UniqueModel m = Load(R"(<mujoco>
+  <compiler angle="radian"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1" euler="0.3 0 0"/>
+    <geom name="wall" type="plane" size="5 5 0.1" pos="9 0 0" euler="0 1.5 0"/>
+    <body pos="0 0 1"><freejoint/><geom name="a" type="sphere" size="0.1"/></body>
+    <body pos="0.3 0.4 1"><freejoint/><geom name="b" type="sphere" size="0.2"/></body>
+  </worldbody>
+</mujoco>)");
+  mjData* d = MakeData(m.get());
+  mj_forward(m.get(), d);
+  const int floor = mj_name2id(m.get(), mjOBJ_GEOM, "floor");
+  const int wall = mj_name2id(m.get(), mjOBJ_GEOM, "wall");
+  const int a = mj_name2id(m.get(), mjOBJ_GEOM, "a");
+  const int b = mj_name2id(m.get(), mjOBJ_GEOM, "b");
+  // rounding of a few operations on numbers of order 1
+  constexpr double kRounding = 1e-15;
+  double gap = 0;
+  mjtNum normal[3];
+
+  // spheres: centre distance 0.5 less the radii, along the centres
+  ASSERT_TRUE(BoundingGap(m.get(), d, a, b, &gap, normal));
+  EXPECT_NEAR(gap, 0.5 - 0.1 - 0.2, kRounding);
+  EXPECT_NEAR(normal[0], 0.6, kRounding);
+  EXPECT_NEAR(normal[1], 0.8, kRounding);
+  EXPECT_NEAR(normal[2], 0.0, kRounding);
+  EXPECT_TRUE(FarApart(m.get(), d, a, b));
+
+  // a plane tilted by 0.3 rad about x: its normal (0, -sin, cos); the
+  // sphere's centre at height cos(0.3) over it, less its radius; the same
+  // gap either way round, the normal reversed
+  const double up[3] = {0, -std::sin(0.3), std::cos(0.3)};
+  for (const bool plane_first : {true, false}) {
+    const int g0 = plane_first ? floor : a;
+    const int g1 = plane_first ? a : floor;
+    ASSERT_TRUE(BoundingGap(m.get(), d, g0, g1, &gap, normal));
+    EXPECT_NEAR(gap, std::cos(0.3) - 0.1, kRounding);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(normal[i], plane_first ? up[i] : -up[i], kRounding);
+    EXPECT_TRUE(FarApart(m.get(), d, g0, g1));
+  }
+
+  // moved into reach: overlapping, not apart
+  d->qpos[2] = 0.05;
+  mj_forward(m.get(), d);
+  ASSERT_TRUE(BoundingGap(m.get(), d, floor, a, &gap, normal));
+  EXPECT_LT(gap, 0);
+  EXPECT_FALSE(FarApart(m.get(), d, a, floor));
+
+  // two planes have no bounding sphere: always near
+  EXPECT_FALSE(BoundingGap(m.get(), d, floor, wall, &gap, normal));
+  EXPECT_FALSE(FarApart(m.get(), d, floor, wall));
+}
+
 }  // namespace
 }  // namespace contactlaws

@@ -1,0 +1,115 @@
+// Copyright contactlaws authors.
+
+#include "mujoco/point_evaluator.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "contactlaws/kinematics.h"
+#include "mujoco/friction_force.h"
+
+namespace contactlaws {
+
+PointEvaluator::PointEvaluator(const ContactModel& model)
+    : model_(model), contacts_(MakeContactBuffer()) {
+  latest_.reserve(std::min<size_t>(model.slot_count(), 4 * model.pairs().size()));
+}
+
+void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
+                              const EpisodeLog& episodes, const StepStartVelocities& start) {
+  const mjModel* m = model_.model();
+  latest_.clear();
+  latest_time_ = d->time;
+  for (const int p : pairs) {
+    const GeomPair& pair = model_.pairs()[p];
+    const int g0 = pair.geom[0];
+    const int g1 = pair.geom[1];
+    if (FarApart(m, d, g0, g1)) continue;
+
+    // the narrowphase (MuJoCo's, or ours for box-box: narrowphase.h): dist < 0
+    // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
+    // midway between the surfaces
+    const int count = std::min(Collide(m, d, g0, g1, 0, contacts_.get()), pair.slots);
+    uint64_t taken = 0;
+    for (int i = 0; i < count; ++i) {
+      const mjContact& con = contacts_[i];
+      if (!(-con.dist > 0)) continue;
+      PointEvaluation e = EvaluatePoint(d, p, con, episodes, start, &taken);
+
+      // equal and opposite, at the same point: geom[1] pushed along +normal
+      mjtNum push[3];
+      for (int b = 0; b < 2; ++b) {
+        mju_scl3(push, con.frame, b == 1 ? e.force : -e.force);
+        AddPointForce(m, d, pair.body[b], con.pos, push, d->qfrc_passive);
+      }
+      AddFriction(model_, d, episodes, pair, con, &e);
+      latest_.push_back(e);
+    }
+  }
+}
+
+PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
+                                              const EpisodeLog& episodes,
+                                              const StepStartVelocities& start,
+                                              uint64_t* taken) const {
+  const GeomPair& pair = model_.pairs()[p];
+  const mjtNum* normal = con.frame;
+  PointEvaluation e;
+  e.pair = p;
+  e.tag = pair.tag;
+  e.depth = -con.dist;
+
+  // which physical point: where it sits on the two bodies
+  for (int b = 0; b < 2; ++b) {
+    mjtNum offset[3];
+    mju_sub3(offset, con.pos, d->xpos + 3 * pair.body[b]);
+    mju_rotVecMatT(e.local[b], offset, d->xmat + 9 * pair.body[b]);
+  }
+  e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
+
+  // depth rate: approach speed of geom[0] towards geom[1] along the normal
+  mjtNum v0[3], v1[3], relative[3];
+  PointVelocity(model_, d, pair.body[0], con.pos, v0);
+  PointVelocity(model_, d, pair.body[1], con.pos, v1);
+  mju_sub3(relative, v0, v1);
+  e.depth_rate = mju_dot3(relative, normal);
+
+  ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
+  if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
+    state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal);
+  }
+  const int open = e.episode;
+  e.touch = open < 0;
+  if (e.touch) {
+    // v0: the rate at the step before first touch, which no force has slowed
+    e.at_start = !start.has_previous();
+    e.touch_velocity = start.has_previous()
+                           ? ApproachRate(model_, d, pair, con.pos, normal, start.previous(),
+                                          start.previous_time())
+                           : e.depth_rate;
+    state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);
+    // the law at the touch itself (d = 0+, d' = v0)
+    const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity,
+                             state.impact_velocity, state.effective_mass};
+    e.touch_power = EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
+    e.max_approach = e.touch_velocity;
+  } else {
+    // v0: the touch speed, or the largest approach rate committed since, for
+    // a contact compressed faster than it touched (a pulse through touching
+    // bodies: Impact::chained)
+    const double committed = episodes.MaxApproach(open);
+    state.impact_velocity = std::max({episodes.impacts()[open].impact_velocity, committed,
+                                      pair.params.min_impact_velocity});
+    e.max_approach = std::max(committed, e.depth_rate);
+  }
+  e.impact_velocity = state.impact_velocity;
+  const ContactForce f = EvaluateLaw(pair.params, state);
+  e.force = f.total;
+  e.elastic_energy = contactlaws::ElasticEnergy(pair.params, e.depth);
+  e.dissipated_power = f.dissipated_power(e.depth_rate);
+  mju_copy3(e.pos, con.pos);
+  mju_copy3(e.normal, normal);
+  return e;
+}
+
+}  // namespace contactlaws

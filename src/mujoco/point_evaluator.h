@@ -1,0 +1,58 @@
+// Copyright contactlaws authors.
+//
+// PointEvaluator: the laws at every contact point of the tagged pairs an
+// evaluation covers. For each pair: the bounding test (FarApart), the
+// narrowphase (narrowphase.h), and at each point in contact the normal law
+// (Evaluate) and the friction (friction_force.h), their forces added to
+// qfrc_passive equal and opposite on the pair's two bodies. A pure function
+// of the state it is given and the committed memory (the episodes, the
+// step-start velocities): RK4 evaluates four times a step, and only the
+// step committer (step_committer.h) writes the memory.
+
+#ifndef CONTACTLAWS_MUJOCO_POINT_EVALUATOR_H_
+#define CONTACTLAWS_MUJOCO_POINT_EVALUATOR_H_
+
+#include <cstdint>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_memory.h"
+#include "contactlaws/contact_model.h"
+#include "mujoco/narrowphase.h"
+#include "mujoco/step_start.h"
+
+namespace contactlaws {
+
+class PointEvaluator {
+ public:
+  // model must outlive this object.
+  explicit PointEvaluator(const ContactModel& model);
+
+  // Evaluates pairs (ContactModel::pairs() indices) at d's state into
+  // latest() (time d->time) and adds their forces to d->qfrc_passive.
+  void Evaluate(mjData* d, const std::vector<int>& pairs, const EpisodeLog& episodes,
+                const StepStartVelocities& start);
+
+  // Forgets the latest evaluation.
+  void Reset() { latest_.clear(); }
+
+  // The contact points of the latest evaluation (depth > 0), in pair order.
+  const std::vector<PointEvaluation>& latest() const { return latest_; }
+  double latest_time() const { return latest_time_; }  // s
+
+ private:
+  // The normal law at a contact point of pair p (narrowphase output con);
+  // taken: the pair's open episodes already matched in this evaluation.
+  PointEvaluation EvaluatePoint(mjData* d, int p, const mjContact& con, const EpisodeLog& episodes,
+                                const StepStartVelocities& start, uint64_t* taken) const;
+
+  const ContactModel& model_;
+  ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
+  std::vector<PointEvaluation> latest_;
+  double latest_time_ = 0;
+};
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_MUJOCO_POINT_EVALUATOR_H_

@@ -1,0 +1,73 @@
+// Copyright contactlaws authors.
+//
+// StepCommitter: what an accepted step leaves behind, once a step, from the
+// evaluation captured at the step's start state (hook_session.h): the
+// divergence check, the episodes of every contact point and the collisions
+// of every pair (contact_memory.h), the energy ledger, and the tagged contact
+// points listed in d->contact for MuJoCo's visualisation
+// (visible_contacts.h). The only writer of the per-contact memory.
+
+#ifndef CONTACTLAWS_MUJOCO_STEP_COMMITTER_H_
+#define CONTACTLAWS_MUJOCO_STEP_COMMITTER_H_
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "contactlaws/contact_data.h"
+#include "contactlaws/contact_memory.h"
+#include "contactlaws/contact_model.h"
+#include "mujoco/hook_session.h"
+#include "mujoco/step_start.h"
+
+namespace contactlaws {
+
+class StepCommitter {
+ public:
+  // model must outlive this object.
+  explicit StepCommitter(const ContactModel& model);
+
+  // At a step's start: MuJoCo's bad-state warning counts, whose rise during
+  // the step means mj_step found NaN/huge values and reset the data.
+  void BeforeStep(const mjData* d);
+
+  // After the step: lists latest (the step's last evaluation) in d->contact,
+  // sets divergence() when the step diverged, and else commits capture (the
+  // step's start, when held) into the memory. start: the velocities recorded
+  // at this step's start and the one before.
+  void AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
+                 const StepCapture& capture, const StepStartVelocities& start);
+
+  // Forgets every episode, collision, the energy and any divergence.
+  void Reset();
+
+  const EpisodeLog& episodes() const { return episodes_; }
+  const CollisionLog& collisions() const { return collisions_; }
+  const DissipationLedger& ledger() const { return ledger_; }
+  const std::optional<Divergence>& divergence() const { return divergence_; }
+
+ private:
+  // Sets divergence_ when the step diverged.
+  void CheckDivergence(const mjData* d, const StepCapture& capture,
+                       const StepStartVelocities& start);
+
+  const ContactModel& model_;
+  std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
+  std::optional<Divergence> divergence_;
+  VisibleContactsOverflow visible_overflow_;
+  EpisodeLog episodes_;
+  CollisionLog collisions_;
+  DissipationLedger ledger_;
+};
+
+// Appends each of points (evaluated on model's pairs) to d->contact, as
+// AppendVisibleContacts (visible_contacts.h) does for a ContactData's
+// latest(). Returns how many were appended.
+int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
+                        mjData* d, VisibleContactsOverflow* overflow);
+
+}  // namespace contactlaws
+
+#endif  // CONTACTLAWS_MUJOCO_STEP_COMMITTER_H_
