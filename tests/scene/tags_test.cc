@@ -10,19 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "contactlaws/error.h"
+#include "scene/pair_tag_error.h"
 
 namespace contactlaws {
 namespace {
-
-// The message ParsePairTag throws for data, or "" when it accepts it.
-std::string PairTagError(const std::string& data) {
-  try {
-    ParsePairTag("s.xml", "contactlaw:t", data);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(TagsTest, APairTagIsReadWhole) {
   const PairTagSpec spec = ParsePairTag(
