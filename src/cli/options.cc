@@ -150,8 +150,8 @@ void ParseLawOverrides(const std::optional<std::string>& law,
   if (restitution) overrides->restitution = ParseRestitution("--restitution", *restitution);
 }
 
-LawKind ParseLaw(std::string_view option, std::string_view name) {
-  const std::optional<LawKind> law = ParseLawName(name);
+LawId ParseLaw(std::string_view option, std::string_view name) {
+  const std::optional<LawId> law = ParseLawName(name);
   if (!law) {
     Refuse(option, name, fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(name)));
   }
@@ -186,7 +186,7 @@ std::vector<Kind> ParseNameList(std::string_view option, std::string_view text,
 
 }  // namespace
 
-std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text) {
+std::vector<LawId> ParseLawList(std::string_view option, std::string_view text) {
   return ParseNameList(option, text, "a law", LawNameList(), AllLaws(), &ParseLawName,
                        &LawSuggestion);
 }

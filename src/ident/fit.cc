@@ -165,9 +165,9 @@ namespace {
 
 // Each tag's law and friction model as written, with the overrides: read
 // without the fit's parameters, whose keys another law may refuse.
-std::vector<std::pair<LawKind, FrictionKind>> TagKinds(const Scene& scene, const Overrides& o) {
+std::vector<std::pair<LawId, FrictionKind>> TagKinds(const Scene& scene, const Overrides& o) {
   const mjModel* m = scene.model();
-  std::vector<std::pair<LawKind, FrictionKind>> tags;
+  std::vector<std::pair<LawId, FrictionKind>> tags;
   for (int i = 0; i < m->ntext; ++i) {
     const std::string_view name = m->names + m->name_textadr[i];
     if (name.rfind(kPairTagPrefix, 0) != 0) continue;

@@ -13,18 +13,18 @@
 
 namespace contactlaws {
 
-const LawInfo& Law(LawKind kind) { return Laws()[static_cast<int>(kind)]; }
+const LawInfo& Law(LawId kind) { return Laws()[static_cast<int>(kind)]; }
 
-const std::vector<LawKind>& AllLaws() {
-  static const std::vector<LawKind> kinds = [] {
-    std::vector<LawKind> all;
+const std::vector<LawId>& AllLaws() {
+  static const std::vector<LawId> kinds = [] {
+    std::vector<LawId> all;
     for (const LawInfo& law : Laws()) all.push_back(law.kind);
     return all;
   }();
   return kinds;
 }
 
-std::string_view LawName(LawKind kind) { return Law(kind).name; }
+std::string_view LawName(LawId kind) { return Law(kind).name; }
 
 const std::string& LawNameList() {
   static const std::string list = [] {
@@ -38,14 +38,14 @@ const std::string& LawNameList() {
   return list;
 }
 
-std::optional<LawKind> ParseLawName(std::string_view name) {
+std::optional<LawId> ParseLawName(std::string_view name) {
   for (const LawInfo& law : Laws()) {
     if (law.name == name) return law.kind;
   }
   return std::nullopt;
 }
 
-double HysteresisCoefficient(LawKind kind, double restitution) {
+double HysteresisCoefficient(LawId kind, double restitution) {
   const LawInfo& law = Law(kind);
   return law.hysteresis ? law.hysteresis(restitution) : 0.0;
 }
@@ -63,7 +63,7 @@ const ParamRange& RestitutionRange(const LawInfo& law) {
 
 }  // namespace
 
-std::optional<double> EffectiveRestitution(LawKind kind, double restitution) {
+std::optional<double> EffectiveRestitution(LawId kind, double restitution) {
   const LawInfo& law = Law(kind);
   if (law.family != LawFamily::kHysteresis || !RestitutionRange(law).Contains(restitution)) {
     return std::nullopt;
@@ -71,20 +71,20 @@ std::optional<double> EffectiveRestitution(LawKind kind, double restitution) {
   return ExactRebound(HysteresisCoefficient(kind, restitution));
 }
 
-bool IsElastic(LawKind kind) {
+bool IsElastic(LawId kind) {
   const LawInfo& law = Law(kind);
   return law.family == LawFamily::kHysteresis && !law.hysteresis;
 }
 
-bool ReadsRestitution(LawKind kind) {
+bool ReadsRestitution(LawId kind) {
   return !IsElastic(kind) && Law(kind).family != LawFamily::kConstantDissipation;
 }
 
-bool ReadsDissipation(LawKind kind) {
+bool ReadsDissipation(LawId kind) {
   return Law(kind).family == LawFamily::kConstantDissipation;
 }
 
-std::optional<double> ReportedRestitution(LawKind kind, double restitution) {
+std::optional<double> ReportedRestitution(LawId kind, double restitution) {
   if (IsElastic(kind)) return 1.0;
   if (!ReadsRestitution(kind)) return std::nullopt;
   return restitution;

@@ -110,7 +110,7 @@ const TagKey* FindTagKey(std::string_view name) {
   return nullptr;
 }
 
-bool Reads(const TagKey& key, LawKind law, FrictionKind friction) {
+bool Reads(const TagKey& key, LawId law, FrictionKind friction) {
   switch (key.readers) {
     case TagReaders::kEvery: return true;
     case TagReaders::kRestitutionLaws: return ReadsRestitution(law);

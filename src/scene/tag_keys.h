@@ -74,7 +74,7 @@ const std::vector<std::string_view>& TagKeyNames();
 const TagKey* FindTagKey(std::string_view name);
 
 // Whether a tag with this law and friction model reads the key's value.
-bool Reads(const TagKey& key, LawKind law, FrictionKind friction);
+bool Reads(const TagKey& key, LawId law, FrictionKind friction);
 
 }  // namespace contactlaws
 

@@ -56,7 +56,7 @@ struct PairTagSpec {
   std::string label;  // the tag name after "contactlaw:"
   std::string geom1;  // a geom name, or "group:N"
   std::string geom2;
-  std::optional<LawKind> law;
+  std::optional<LawId> law;
   std::optional<double> restitution;
   std::optional<double> stiffness;
   std::optional<double> exponent;

@@ -12,7 +12,7 @@ namespace contactlaws {
 ContactSteps::ContactSteps(double accuracy)
     : ContactSteps(StepsPerContact(accuracy), KelvinVoigtStepsPerContact(accuracy)) {}
 
-double ContactSteps::PerContact(LawKind law) const {
+double ContactSteps::PerContact(LawId law) const {
   return Law(law).family == LawFamily::kLinear ? kelvin_voigt_ : hertz_family_;
 }
 

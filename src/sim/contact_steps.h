@@ -24,9 +24,9 @@ class ContactSteps {
       : hertz_family_(hertz_family), kelvin_voigt_(kelvin_voigt) {}
 
   // Steps per contact duration of law.
-  double PerContact(LawKind law) const;
+  double PerContact(LawId law) const;
   // The step that resolves a contact of law lasting duration (s).
-  double NormalStep(LawKind law, double duration) const { return duration / PerContact(law); }
+  double NormalStep(LawId law, double duration) const { return duration / PerContact(law); }
   // The step of a tangential dynamics of TangentialDuration duration
   // (s): its period, twice that, as a contact's duration.
   double TangentialStep(double duration) const { return 2 * duration / hertz_family_; }
@@ -59,7 +59,7 @@ class PairSteps {
   double Duration(int pair, double v) const;
 
   ContactSteps steps_;
-  std::vector<LawKind> law_;
+  std::vector<LawId> law_;
   std::vector<double> floor_;  // min_impact_velocity, m/s
   // the elastic contact duration at 1 m/s, and its exponent of v: t_c is
   // proportional to v^((1 - n) / (1 + n)) (Hertz family; Kelvin-Voigt: v^0)

@@ -82,16 +82,16 @@ TEST(TagKeysTest, EachRowSetsOneField) {
 TEST(TagKeysTest, EveryKeyIsReadBySomeLawAndFrictionModel) {
   for (const TagKey& key : TagKeys()) {
     bool read = false;
-    for (const LawKind law : AllLaws()) {
+    for (const LawId law : AllLaws()) {
       for (const FrictionInfo& friction : FrictionModels()) {
         read = read || Reads(key, law, friction.kind);
       }
     }
     EXPECT_TRUE(read) << key.name;
   }
-  const LawKind hertz = *ParseLawName("hertz");
-  const LawKind constant = *ParseLawName("hunt-crossley-constant");
-  const LawKind kelvin = *ParseLawName("kelvin-voigt");
+  const LawId hertz = *ParseLawName("hertz");
+  const LawId constant = *ParseLawName("hunt-crossley-constant");
+  const LawId kelvin = *ParseLawName("kelvin-voigt");
   EXPECT_FALSE(Reads(*FindTagKey("restitution"), hertz, FrictionKind::kCoulomb));
   EXPECT_TRUE(Reads(*FindTagKey("dissipation"), constant, FrictionKind::kNone));
   EXPECT_FALSE(Reads(*FindTagKey("dissipation"), kelvin, FrictionKind::kNone));

@@ -23,7 +23,7 @@ TEST(TagsTest, APairTagIsReadWhole) {
   EXPECT_EQ(spec.label, "ball-floor");
   EXPECT_EQ(spec.geom1, "ball");
   EXPECT_EQ(spec.geom2, "group:2");
-  EXPECT_EQ(spec.law, LawKind::kFlores);
+  EXPECT_EQ(spec.law, *ParseLawName("flores"));
   EXPECT_EQ(spec.restitution, 0.9);
   EXPECT_EQ(spec.stiffness, 1.4e8);
   EXPECT_EQ(spec.exponent, 1.5);

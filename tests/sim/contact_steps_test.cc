@@ -20,8 +20,8 @@ class ContactStepsTest : public testing::MujocoTest {};
 
 TEST_F(ContactStepsTest, TheAccuracySetsTheStepsPerContactOfEachFamily) {
   const ContactSteps steps(kDefaultAccuracy);
-  const LawKind flores = *ParseLawName("flores");
-  const LawKind kelvin = *ParseLawName("kelvin-voigt");
+  const LawId flores = *ParseLawName("flores");
+  const LawId kelvin = *ParseLawName("kelvin-voigt");
   EXPECT_EQ(steps.PerContact(flores), kDefaultStepsPerContact);
   EXPECT_EQ(steps.PerContact(kelvin), kKelvinVoigtStepsAtDefault);
   EXPECT_EQ(steps.NormalStep(flores, 1e-3), 1e-3 / kDefaultStepsPerContact);
