@@ -70,19 +70,20 @@
 //      step, RK4 being stable to 2.8; its static load compresses it more
 //      than a touch at the floor speed, ~1.2x the rate for a ball's weight,
 //      ~1.5x for a stack's bottom cube), whatever the accuracy, which is
-//      about collisions. Rules 4 and 5 still hold. A ball resting on the
-//      driven table of Figs. 8-10 for most of its 10 s took 138k steps.
+//      about collisions. The tangential step and the dampers' lags still
+//      bound it. A ball resting on the driven table of Figs. 8-10 for most
+//      of its 10 s took 138k steps.
 //   7. The step is the smallest asked for, at most max_step (none by
 //      default: free flight under gravity alone is a parabola, which RK4
-//      integrates exactly, so the gap closure of rule 2 is what limits it),
-//      and grows at most by `growth` from one step to the next. A scene with
+//      integrates exactly, so the gap closure of a pair apart is what limits
+//      it), and grows at most by `growth` from one step to the next. A scene with
 //      dynamics of its own (anything but free bodies, gravity, the tags and
 //      drives: joints with springs, damping or limits, actuators, tendons,
 //      equality constraints) keeps its own opt.timestep as the flight
 //      step's bound: the author chose it for those dynamics. A pair that
 //      MuJoCo's own contact handles (untagged) asks for that step only while
 //      its bounding spheres are within MuJoCo's margin or could close
-//      gap_fraction of their gap beyond it within that step (rule 2's
+//      gap_fraction of their gap beyond it within that step (a tagged pair's
 //      closing speed and acceleration); farther, for the time to close that
 //      fraction.
 //      Under Euler or implicit integration the flight step is also bounded
@@ -134,7 +135,7 @@ struct AutoTimestepOptions {
   // under Euler or implicit integration, the flight step.
   double accuracy = kDefaultAccuracy;
   // s: an optional cap on every step (none by default: the dynamics bound
-  // the flight step, rule 5 above).
+  // the flight step, as the rule above says).
   double max_step = std::numeric_limits<double>::infinity();
   // Overrides of what the accuracy sets (0: from the accuracy): the fine
   // step is the estimated contact duration / steps_per_contact (Hertz
@@ -151,16 +152,17 @@ struct AutoTimestepOptions {
 double StepsPerContact(double accuracy);
 double KelvinVoigtStepsPerContact(double accuracy);
 
-// Rule 6's steps per elastic contact duration at the floor speed.
+// A settled contact's steps per elastic contact duration at the floor speed.
 inline constexpr double kSettledStepsPerContact = 6;
-// Rule 6: a touch slower than this many floors of v0 is a settling, not a
+// A touch slower than this many floors of v0 is a settling, not a
 // collision whose rebound a figure reads (1e-2 m/s at the default floor).
 inline constexpr double kSettledTouchFactor = 10;
-// Rule 6: a contact open this many of its elastic durations is past its
+// A contact open this many of its elastic durations is past its
 // collision (a collision lasts one, its rebound included).
 inline constexpr double kSettledDurations = 3;
 
-class ReachSweep;  // src/sim/reach_sweep.h
+class PairSteps;      // src/sim/contact_steps.h
+class ApproachSteps;  // src/sim/approach_steps.h
 class DamperRate;
 enum class DamperDirection;
 
@@ -191,20 +193,16 @@ class AutoTimestep {
   double ContactStep(const ContactData::Evaluation& e) const;
   // The law's view of an evaluated point.
   ContactState State(const ContactData::Evaluation& e) const;
-  // Rule 6: the step of a settled contact of pair.
-  double SettledStep(int pair) const;
-  // The accuracy's steps per contact duration of pair's law.
-  double LawStepsPerContact(int pair) const;
   // The step the friction of a pair in contact allows at evaluation e: the
   // period 2 TangentialDuration (stick spring, bristles or regularized curve,
   // at e's stiffness and normal force, on the pair's friction_mass), and that
   // of its rolling and torsional springs, over steps_per_contact; infinite
   // without friction.
   double TangentialStep(const ContactData::Evaluation& e) const;
-  // Rule 5's bound from the friction dampers of the points latest()[first, end)
+  // The bound from the friction dampers of the points latest()[first, end)
   // (one pair's) in d; infinite without friction.
   double FrictionLag(mjData* d, size_t first, size_t end);
-  // Rule 5's bound from the laws' normal dampers of those points on the
+  // The bound from the laws' normal dampers of those points on the
   // inertia at them (kNormalDamperLags); infinite without damping.
   double NormalLag(mjData* d, size_t first, size_t end);
   // The rate (1/s) of the dampers damping(e) (N s/m) at those points,
@@ -215,55 +213,20 @@ class AutoTimestep {
   // The bound of the flight step: the data's timestep (options()) when the
   // scene has dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;
-  // The step pair p (out of contact) allows, from the current state: the
-  // time to close a fraction of its gap, or the fine step when it is near
-  // (then *fine is set), cut to end at its predicted touch.
-  double ApproachStep(int p, bool* fine) const;
-  // The fine step of pair at impact speed v (m/s).
-  double FineStep(int pair, double v) const;
-
-  // How two geoms close, from the current state: the gap between their
-  // bounding spheres (or a plane and a sphere), m, and its closing speed (the
-  // centres' relative velocity along the line between them plus what spin
-  // can add) and acceleration (gravity, drives' top_acceleration).
-  struct Closing {
-    double gap = 0;
-    double speed = 0;
-    double accel = 0;
-  };
-  // False when a geom has no bounding sphere (a plane against a plane or a
-  // height field, ...): then no gap is known.
-  bool Closes(const std::array<int, 2>& geom, const std::array<int, 2>& body,
-              double top_acceleration, Closing* c) const;
-  // The step the untagged pair of geoms g0, g1 allows (MuJoCo's contact
-  // starts at margin, m): the scene's own step while it is within margin or
-  // could close gap_fraction of its gap beyond it within that step;
-  // otherwise the time to close that fraction.
-  double UntaggedStep(int g0, int g1, double margin) const;
-  // reach_ for a step of at most bound (s): how far each geom's surface may
-  // move towards another's within it, over gap_fraction, twice over, beyond
-  // its margin; a pair whose reaches do not overlap cannot shorten the step.
-  void SetReach(double bound);
 
   const ContactData& contacts_;
   AutoTimestepOptions options_;
   double flight_step_;  // s, FlightStep() of the data's options as they were given
-  // per pair: effective mass (kg, inf when neither body moves) and the
-  // elastic contact duration at 1 m/s with its exponent of v
+  // per pair: effective mass (kg, inf when neither body moves)
   std::vector<double> effective_mass_;
-  std::vector<double> duration_at_unit_speed_;
-  std::vector<double> duration_speed_exponent_;
-  std::vector<double> top_acceleration_;  // of the pair's driven bodies, m/s^2
+  std::unique_ptr<PairSteps> pair_steps_;   // each pair's fine and settled steps
+  std::unique_ptr<ApproachSteps> approach_;  // the steps the pairs apart allow
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
-  bool has_untagged_ = false;             // a pair MuJoCo's own contact handles exists
-  double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
-  std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
-  std::vector<double> reach_;             // per geom, m (SetReach)
   // DampersRate's: the points' positions, normals and dampers, and its rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
   std::unique_ptr<DamperRate> damper_rate_;
-  bool settled_rule_ = false;             // rule 6: RK4 only
+  bool settled_rule_ = false;             // the settled contact's step: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;
   long steps_ = 0;

@@ -25,7 +25,7 @@ namespace contactlaws {
 // Command-line style overrides applied to every tagged pair before
 // validation (contactlaws run --law ... --restitution ...).
 struct Overrides {
-  std::optional<LawKind> law;
+  std::optional<LawId> law;
   std::optional<double> restitution;
   // c (s/m) of the laws that read it (ReadsDissipation); the others ignore it,
   // as Hertz ignores the restitution
@@ -44,7 +44,7 @@ struct PairTag {
   std::string label;   // "ball-floor" for contactlaw:ball-floor
   std::string geom1;   // as written: a name or group:N
   std::string geom2;
-  LawKind law = LawKind::kHertz;
+  LawId law{};  // hertz unless set
   double restitution = 1.0;
   std::vector<int> pairs;  // indices into ContactModel::pairs()
 };

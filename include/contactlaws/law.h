@@ -27,17 +27,10 @@
 
 namespace contactlaws {
 
-// A law: the index of its row in the table of laws (Laws(), law_table.cc).
-// The named ids are the rows the code refers to; a law added to the table
-// needs no id of its own (it is found by name, ParseLawName, and Laws() gives
-// each row its index).
-enum class LawKind : int {
-  kHertz = 0,               // F = K d^n
-  kKelvinVoigt = 1,         // F = k d + c d'
-  kHuntCrossley = 2,        // the Hertz family: F = K d^n (1 + a(e) d'/v0)
-  kLankaraniNikravesh = 3,
-  kFlores = 4,
-};
+// A law: the index of its row in the table of laws (Laws(), law_table.cc),
+// found by its name (ParseLawName); no law needs an id of its own. The
+// value-initialized LawId{} is the first row, hertz.
+enum class LawId : int {};
 
 // The three forms a law can take. What a law reads and how it is evaluated
 // follows from its family (ReadsRestitution, ReadsDissipation, EvaluateLaw).
@@ -63,24 +56,24 @@ struct LawInfo {
   // The restitution is in [0, 1], or in (0, 1] when e = 0 is refused (a(e)
   // grows without bound as e -> 0).
   bool restitution_excludes_zero;
-  LawKind kind = LawKind::kHertz;  // its index in the table (set by Laws())
+  LawId kind{};  // its index in the table (set by Laws())
 };
 
-// Every law, in table order (LawKind is the index).
+// Every law, in table order (LawId is the index).
 const std::vector<LawInfo>& Laws();
-const LawInfo& Law(LawKind kind);
+const LawInfo& Law(LawId kind);
 
-// Every law's kind, in table order.
-const std::vector<LawKind>& AllLaws();
+// Every law's id, in table order.
+const std::vector<LawId>& AllLaws();
 
 // The law's name as written in tags and on the command line ("flores", ...).
-std::string_view LawName(LawKind kind);
+std::string_view LawName(LawId kind);
 
 // "hertz, kelvin-voigt, ...": every name, in table order, for messages.
 const std::string& LawNameList();
 
 // Inverse of LawName; nullopt for an unknown name.
-std::optional<LawKind> ParseLawName(std::string_view name);
+std::optional<LawId> ParseLawName(std::string_view name);
 
 // Default floor of the impact velocity v0 (m/s): keeps d'/v0 finite for a
 // contact that starts at rest (a ball settling on the floor).
@@ -90,7 +83,7 @@ inline constexpr double kDefaultMinImpactVelocity = 1e-3;
 // (ValidateLawParams), with what follows from them resolved there too
 // (ResolveLawParams). Fields a law does not use are ignored by it.
 struct LawParams {
-  LawKind kind = LawKind::kHertz;
+  LawId kind{};  // hertz unless set
   double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for the 1/e laws
   double stiffness = 0.0;         // K, N/m^n, > 0 (hertz family)
   double exponent = 1.5;          // n, dimensionless, [1, 3] (hertz family)
@@ -169,7 +162,7 @@ double RestingDamperLag(const LawParams& params, double load, double mass);
 // F = K d^n (1 + a d'/v0): 0 for hertz, the law's a(e) otherwise.
 // Not defined for kelvin-voigt nor for the constant-dissipation family, whose
 // a = c v0 does not come from e (returns 0).
-double HysteresisCoefficient(LawKind kind, double restitution);
+double HysteresisCoefficient(LawId kind, double restitution);
 
 // The restitution e_post the law rebounds with from a first impact at
 // restitution e, neglecting gravity during the contact: ExactRebound(a(e)) for
@@ -177,20 +170,20 @@ double HysteresisCoefficient(LawKind kind, double restitution);
 // no closed form), for the constant-dissipation family (its rebound,
 // ExactRebound(c v0), depends on the impact speed) and for e outside the
 // law's range.
-std::optional<double> EffectiveRestitution(LawKind kind, double restitution);
+std::optional<double> EffectiveRestitution(LawId kind, double restitution);
 
 // True for a law that ignores e and dissipates nothing (Hertz).
-bool IsElastic(LawKind kind);
+bool IsElastic(LawId kind);
 
 // Whether the law reads the restitution e (every law but Hertz and the
 // constant-dissipation family), and the dissipation c (that family alone).
-bool ReadsRestitution(LawKind kind);
-bool ReadsDissipation(LawKind kind);
+bool ReadsRestitution(LawId kind);
+bool ReadsDissipation(LawId kind);
 
 // The restitution the law reports for an input e: 1 for an elastic law
 // (Hertz), which ignores e; none for a law that reads no e and is not elastic
 // (constant dissipation); else e.
-std::optional<double> ReportedRestitution(LawKind kind, double restitution);
+std::optional<double> ReportedRestitution(LawId kind, double restitution);
 
 }  // namespace contactlaws
 

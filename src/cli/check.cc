@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include "cli/report.h"
-
 #include "cli/impact_csv.h"
+#include "cli/report.h"
+#include "sim/contact_steps.h"
 
 namespace contactlaws::cli {
 
@@ -50,7 +50,7 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
     fmt::print(out, "  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n",
-               t.what, t.Span(), 2 * t.duration / StepsPerContact(*accuracy));
+               t.what, t.Span(), ContactSteps(*accuracy).TangentialStep(t.duration));
     return false;
   }
   const double step = t.timestep();
@@ -141,13 +141,12 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
              estimate.contact_duration);
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
-    const double per_contact = Law(law.kind).family == LawFamily::kLinear
-                                   ? KelvinVoigtStepsPerContact(*accuracy)
-                                   : StepsPerContact(*accuracy);
+    const ContactSteps steps(*accuracy);
     fmt::print(out,
                "  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
                "contact, accuracy {})\n",
-               estimate.contact_duration / per_contact, per_contact, *accuracy);
+               steps.NormalStep(law.kind, estimate.contact_duration), steps.PerContact(law.kind),
+               *accuracy);
     return side_coarse;
   }
   const double steps = estimate.contact_duration / dt;

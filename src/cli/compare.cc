@@ -17,15 +17,15 @@ namespace {
 // A law that reads no restitution once (an elastic one at e = 1); every other
 // law at each restitution (the scene's if none given); each of those with
 // every friction model of --frictions (the scene's if none given).
-std::vector<RunSpec> CompareSpecs(const std::vector<LawKind>& laws,
+std::vector<RunSpec> CompareSpecs(const std::vector<LawId>& laws,
                                   const std::vector<double>& restitutions,
                                   const std::vector<FrictionKind>& frictions) {
   std::vector<RunSpec> specs;
-  auto add = [&](LawKind law, std::optional<double> e) {
+  auto add = [&](LawId law, std::optional<double> e) {
     if (frictions.empty()) specs.push_back({law, e, std::nullopt});
     for (const FrictionKind friction : frictions) specs.push_back({law, e, friction});
   };
-  for (const LawKind law : laws) {
+  for (const LawId law : laws) {
     if (!ReadsRestitution(law)) {
       add(law, IsElastic(law) ? std::optional<double>(1.0) : std::nullopt);
     } else if (restitutions.empty()) {

@@ -19,7 +19,7 @@ namespace {
 
 // One law x friction model fitted, and its scores.
 struct Fitted {
-  std::optional<LawKind> law;
+  std::optional<LawId> law;
   std::optional<FrictionKind> friction;
   // the parameters its tags read, and each one's place in --params
   std::vector<FitParameter> parameters;
@@ -113,11 +113,11 @@ int FitCommand(const FitArgs& args) {
   if (!seed) Refuse("--seed", args.seed, "must be a whole number in [0, 4294967295]");
 
   // every combination, checked before any is fitted
-  std::vector<std::optional<LawKind>> laws = {std::nullopt};
+  std::vector<std::optional<LawId>> laws = {std::nullopt};
   std::vector<std::optional<FrictionKind>> frictions = {std::nullopt};
   if (args.laws) {
     laws.clear();
-    for (LawKind law : ParseLawList("--laws", *args.laws)) laws.emplace_back(law);
+    for (LawId law : ParseLawList("--laws", *args.laws)) laws.emplace_back(law);
   }
   if (args.frictions) {
     if (args.friction) Refuse("--frictions", *args.frictions, "goes without --friction");

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "laws/param_range.h"
 #include "scene/number.h"
 #include "scene/tags.h"
 
@@ -136,7 +137,9 @@ void ParseFrictionOverrides(const std::optional<std::string>& friction,
   }
   if (mu) {
     const double value = ParseOption("--mu", *mu);
-    if (!(value >= 0)) Refuse("--mu", fmt::format("{}", value), "must be >= 0");
+    if (!kNonNegativeRange.Contains(value)) {
+      Refuse("--mu", fmt::format("{}", value), kNonNegativeRange.Requirement());
+    }
     overrides->mu = value;
   }
 }
@@ -147,8 +150,8 @@ void ParseLawOverrides(const std::optional<std::string>& law,
   if (restitution) overrides->restitution = ParseRestitution("--restitution", *restitution);
 }
 
-LawKind ParseLaw(std::string_view option, std::string_view name) {
-  const std::optional<LawKind> law = ParseLawName(name);
+LawId ParseLaw(std::string_view option, std::string_view name) {
+  const std::optional<LawId> law = ParseLawName(name);
   if (!law) {
     Refuse(option, name, fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(name)));
   }
@@ -183,7 +186,7 @@ std::vector<Kind> ParseNameList(std::string_view option, std::string_view text,
 
 }  // namespace
 
-std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text) {
+std::vector<LawId> ParseLawList(std::string_view option, std::string_view text) {
   return ParseNameList(option, text, "a law", LawNameList(), AllLaws(), &ParseLawName,
                        &LawSuggestion);
 }
@@ -197,13 +200,17 @@ std::vector<FrictionKind> ParseFrictionList(std::string_view option, std::string
 
 double ParseDissipation(std::string_view text) {
   const double value = ParseOption("--dissipation", text);
-  if (!(value >= 0)) Refuse("--dissipation", fmt::format("{}", value), "must be >= 0 (s/m)");
+  if (!kNonNegativeRange.Contains(value)) {
+    Refuse("--dissipation", fmt::format("{}", value), kNonNegativeRange.Requirement("s/m"));
+  }
   return value;
 }
 
 double ParseRestitution(std::string_view option, std::string_view text) {
   const double value = ParseOption(option, text);
-  if (!(value >= 0 && value <= 1)) Refuse(option, fmt::format("{}", value), "must be in [0, 1]");
+  if (!kUnitRange.Contains(value)) {
+    Refuse(option, fmt::format("{}", value), kUnitRange.Requirement());
+  }
   return value;
 }
 
@@ -227,8 +234,8 @@ std::vector<double> ParseRestitutionList(std::string_view option, std::string_vi
     Refuse(option, text, "must be E1,E2,... or start:stop:step");
   }
   for (size_t i = 0; i < values.size(); ++i) {
-    if (!(values[i] >= 0 && values[i] <= 1)) {
-      Refuse(option, text, fmt::format("has {}, outside [0, 1]", values[i]));
+    if (!kUnitRange.Contains(values[i])) {
+      Refuse(option, text, fmt::format("has {}, outside {}", values[i], kUnitRange.bounds));
     }
     if (std::find(values.begin(), values.begin() + i, values[i]) != values.begin() + i) {
       Refuse(option, text, fmt::format("has {} twice", values[i]));

@@ -70,10 +70,10 @@ void ParseLawOverrides(const std::optional<std::string>& law,
                        const std::optional<std::string>& restitution, Overrides* overrides);
 
 // A law name, or Refuse under option.
-LawKind ParseLaw(std::string_view option, std::string_view name);
+LawId ParseLaw(std::string_view option, std::string_view name);
 
 // "all" (every law, in table order) or "L1,L2,..." (no repeats).
-std::vector<LawKind> ParseLawList(std::string_view option, std::string_view text);
+std::vector<LawId> ParseLawList(std::string_view option, std::string_view text);
 
 // --friction MODEL and --mu X into overrides (either may be absent).
 void ParseFrictionOverrides(const std::optional<std::string>& friction,

@@ -74,7 +74,7 @@ int RestitutionCommand(const SweepArgs& args) {
   const SimulationOptions& options = in.common.simulation;
   const Scene& scene = *in.scene;
   std::vector<RunSpec> specs;
-  for (const LawKind law : in.laws) {
+  for (const LawId law : in.laws) {
     for (const double e : in.restitutions) specs.push_back({law, e, std::nullopt});
   }
   const std::vector<std::vector<TimestepAdvice>> advices =

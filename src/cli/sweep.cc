@@ -216,8 +216,8 @@ namespace {
 // --laws, it is refused as any bad input is.
 void LeaveOutLawsMissingADissipation(SweepInputs* in) {
   if (in->common.simulation.overrides.dissipation) return;
-  std::vector<LawKind> kept;
-  for (const LawKind law : in->laws) {
+  std::vector<LawId> kept;
+  for (const LawId law : in->laws) {
     if (ReadsDissipation(law)) {
       try {
         RunSpec spec{law, std::nullopt, std::nullopt};

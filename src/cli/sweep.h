@@ -22,7 +22,7 @@ namespace contactlaws::cli {
 
 // One (law, restitution) combination of a sweep.
 struct RunSpec {
-  LawKind law = LawKind::kHertz;
+  LawId law{};  // hertz unless set
   std::optional<double> restitution;  // nullopt: the scene's
   std::optional<FrictionKind> friction;  // nullopt: the scene's (compare --frictions)
 };
@@ -45,7 +45,7 @@ struct SweepArgs : CommonArgs {
 // --frictions, --restitution, the scene.
 struct SweepInputs {
   CommonOptions common;
-  std::vector<LawKind> laws;
+  std::vector<LawId> laws;
   std::vector<FrictionKind> frictions;  // empty: none given (the scene's)
   int jobs = 1;
   std::vector<double> restitutions;  // empty: none given, and no default

@@ -12,6 +12,7 @@
 
 #include "contactlaws/error.h"
 #include "scene/number.h"
+#include "scene/tag_keys.h"
 #include "scene/tags.h"
 
 namespace contactlaws {
@@ -43,35 +44,8 @@ constexpr ModelKey kModelKeys[] = {
     {"friction", ModelEdit::Kind::kMujocoFriction, mjOBJ_UNKNOWN, 0, false, kInf, ">= 0"},
 };
 
-// The tag keys whose value is not a number.
-constexpr std::string_view kWordKeys[] = {"geom1", "geom2", "law", "friction", "allow_tension"};
-
 bool InRange(const ModelKey& k, double v) {
   return (k.min_open ? v > k.min : v >= k.min) && (k.max == kInf ? v < kInf : v < k.max);
-}
-
-// Whether a tag with this law and friction reads key.
-bool Reads(std::string_view key, LawKind law, FrictionKind friction) {
-  const bool linear = Law(law).family == LawFamily::kLinear;
-  const bool any_friction = friction != FrictionKind::kNone;
-  const bool sticks = friction == FrictionKind::kCoulomb || friction == FrictionKind::kStribeck;
-  const bool andersson = friction == FrictionKind::kStribeck || friction == FrictionKind::kLuGre;
-  if (key == "restitution") return ReadsRestitution(law);
-  if (key == "dissipation") return ReadsDissipation(law);
-  if (key == "exponent") return !linear;
-  if (key == "linear_stiffness" || key == "damping") return linear;
-  if (key == "mu" || key == "mu_static" || key == "mu_kinetic" || key == "torsional_friction" ||
-      key == "rolling_friction") {
-    return any_friction;
-  }
-  if (key == "transition_velocity") return friction == FrictionKind::kRegularized;
-  if (key == "stribeck_velocity" || key == "viscous") return andersson;
-  if (key == "tangential_stiffness" || key == "tangential_damping" || key == "tangential_ratio" ||
-      key == "tangential_damping_ratio") {
-    return sticks;
-  }
-  if (key == "bristle_stiffness" || key == "bristle_damping") return friction == FrictionKind::kLuGre;
-  return true;  // stiffness, min_impact_velocity, the materials
 }
 
 }  // namespace
@@ -124,14 +98,15 @@ std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjMode
     const size_t dot = p.key.rfind('.');
     if (dot == std::string::npos) {
       // a tag key
-      const bool known = std::find(kPairKeys.begin(), kPairKeys.end(), p.key) != kPairKeys.end();
-      if (!known) {
-        const std::string_view hint = NearestWord(p.key, kPairKeys.data(), kPairKeys.size());
+      const TagKey* key = FindTagKey(p.key);
+      if (!key) {
+        const std::vector<std::string_view>& names = TagKeyNames();
+        const std::string_view hint = NearestWord(p.key, names.data(), names.size());
         fail(item, fmt::format("'{}' is not a contactlaw tag key{}, nor OBJECT.KEY (mass_scale, "
                                "inertia_scale, offset, mujoco.*)",
                                p.key, hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint)));
       }
-      if (std::find(std::begin(kWordKeys), std::end(kWordKeys), p.key) != std::end(kWordKeys)) {
+      if (key->value != TagValue::kNumber) {
         fail(item, fmt::format("'{}' is not a numeric key (--laws and --frictions choose laws and "
                                "friction models)",
                                p.key));
@@ -190,9 +165,9 @@ namespace {
 
 // Each tag's law and friction model as written, with the overrides: read
 // without the fit's parameters, whose keys another law may refuse.
-std::vector<std::pair<LawKind, FrictionKind>> TagKinds(const Scene& scene, const Overrides& o) {
+std::vector<std::pair<LawId, FrictionKind>> TagKinds(const Scene& scene, const Overrides& o) {
   const mjModel* m = scene.model();
-  std::vector<std::pair<LawKind, FrictionKind>> tags;
+  std::vector<std::pair<LawId, FrictionKind>> tags;
   for (int i = 0; i < m->ntext; ++i) {
     const std::string_view name = m->names + m->name_textadr[i];
     if (name.rfind(kPairTagPrefix, 0) != 0) continue;
@@ -217,7 +192,8 @@ std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& option
   std::vector<bool> read;
   for (const FitParameter& p : parameters) {
     bool any = !p.tag_key;
-    for (const auto& [law, friction] : tags) any = any || Reads(p.key, law, friction);
+    const TagKey* key = p.tag_key ? FindTagKey(p.key) : nullptr;
+    for (const auto& [law, friction] : tags) any = any || Reads(*key, law, friction);
     read.push_back(any);
   }
   return read;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "contactlaws/friction.h"
+#include "laws/param_range.h"
 
 namespace contactlaws {
 
@@ -80,10 +81,13 @@ std::optional<FrictionKind> ParseFrictionName(std::string_view name) {
 }
 
 std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
-  auto finite = [](double v) { return std::isfinite(v); };
-  if (!finite(p.mu_static) || p.mu_static < 0) return ParamError{"mu_static", p.mu_static, "must be >= 0"};
-  if (!finite(p.mu_kinetic) || p.mu_kinetic < 0) {
-    return ParamError{"mu_kinetic", p.mu_kinetic, "must be >= 0"};
+  // each value against its range, in this order; an unset optional passes
+  const std::pair<const char*, double> mu[] = {{"mu_static", p.mu_static},
+                                               {"mu_kinetic", p.mu_kinetic}};
+  for (const auto& [key, value] : mu) {
+    if (!kNonNegativeRange.Contains(value)) {
+      return ParamError{key, value, kNonNegativeRange.Requirement()};
+    }
   }
   if (p.mu_kinetic > p.mu_static) {
     return ParamError{"mu_kinetic", p.mu_kinetic, "must be in [0, mu_static]"};
@@ -95,7 +99,9 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
       {"bristle_stiffness", p.bristle_stiffness},
       {"tangential_stiffness", p.tangential_stiffness.value_or(1.0)}};
   for (const auto& [key, value] : positive) {
-    if (!finite(value) || !(value > 0)) return ParamError{key, value, "must be > 0"};
+    if (!kPositiveRange.Contains(value)) {
+      return ParamError{key, value, kPositiveRange.Requirement()};
+    }
   }
   const std::pair<const char*, double> non_negative[] = {
       {"tangential_damping", p.tangential_damping.value_or(0.0)},
@@ -104,11 +110,15 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
       {"torsional_friction", p.torsional},
       {"rolling_friction", p.rolling}};
   for (const auto& [key, value] : non_negative) {
-    if (!finite(value) || value < 0) return ParamError{key, value, "must be >= 0"};
+    if (!kNonNegativeRange.Contains(value)) {
+      return ParamError{key, value, kNonNegativeRange.Requirement()};
+    }
   }
   // beyond critical for the pair's mass: give tangential_damping in N s/m
   const double zeta = p.tangential_damping_ratio.value_or(0.0);
-  if (!(zeta >= 0 && zeta <= 1)) return ParamError{"tangential_damping_ratio", zeta, "must be in [0, 1]"};
+  if (!kUnitRange.Contains(zeta)) {
+    return ParamError{"tangential_damping_ratio", zeta, kUnitRange.Requirement()};
+  }
   return std::nullopt;
 }
 

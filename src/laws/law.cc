@@ -9,21 +9,22 @@
 #include "contactlaws/hertz.h"
 #include "contactlaws/hysteresis.h"
 #include "contactlaws/kelvin_voigt.h"
+#include "laws/param_range.h"
 
 namespace contactlaws {
 
-const LawInfo& Law(LawKind kind) { return Laws()[static_cast<int>(kind)]; }
+const LawInfo& Law(LawId kind) { return Laws()[static_cast<int>(kind)]; }
 
-const std::vector<LawKind>& AllLaws() {
-  static const std::vector<LawKind> kinds = [] {
-    std::vector<LawKind> all;
+const std::vector<LawId>& AllLaws() {
+  static const std::vector<LawId> kinds = [] {
+    std::vector<LawId> all;
     for (const LawInfo& law : Laws()) all.push_back(law.kind);
     return all;
   }();
   return kinds;
 }
 
-std::string_view LawName(LawKind kind) { return Law(kind).name; }
+std::string_view LawName(LawId kind) { return Law(kind).name; }
 
 const std::string& LawNameList() {
   static const std::string list = [] {
@@ -37,14 +38,14 @@ const std::string& LawNameList() {
   return list;
 }
 
-std::optional<LawKind> ParseLawName(std::string_view name) {
+std::optional<LawId> ParseLawName(std::string_view name) {
   for (const LawInfo& law : Laws()) {
     if (law.name == name) return law.kind;
   }
   return std::nullopt;
 }
 
-double HysteresisCoefficient(LawKind kind, double restitution) {
+double HysteresisCoefficient(LawId kind, double restitution) {
   const LawInfo& law = Law(kind);
   return law.hysteresis ? law.hysteresis(restitution) : 0.0;
 }
@@ -55,41 +56,35 @@ void ResolveLawParams(LawParams* params) {
 
 namespace {
 
-// A finite value in [lo, hi] (open ends where asked).
-bool InRange(double v, double lo, double hi, bool lo_open = false) {
-  if (!std::isfinite(v)) return false;
-  if (lo_open ? v <= lo : v < lo) return false;
-  return v <= hi;
-}
-
-bool RestitutionInRange(const LawInfo& law, double e) {
-  return InRange(e, 0.0, 1.0, law.restitution_excludes_zero);
+// The restitutions the law accepts.
+const ParamRange& RestitutionRange(const LawInfo& law) {
+  return law.restitution_excludes_zero ? kUnitRangeWithoutZero : kUnitRange;
 }
 
 }  // namespace
 
-std::optional<double> EffectiveRestitution(LawKind kind, double restitution) {
+std::optional<double> EffectiveRestitution(LawId kind, double restitution) {
   const LawInfo& law = Law(kind);
-  if (law.family != LawFamily::kHysteresis || !RestitutionInRange(law, restitution)) {
+  if (law.family != LawFamily::kHysteresis || !RestitutionRange(law).Contains(restitution)) {
     return std::nullopt;
   }
   return ExactRebound(HysteresisCoefficient(kind, restitution));
 }
 
-bool IsElastic(LawKind kind) {
+bool IsElastic(LawId kind) {
   const LawInfo& law = Law(kind);
   return law.family == LawFamily::kHysteresis && !law.hysteresis;
 }
 
-bool ReadsRestitution(LawKind kind) {
+bool ReadsRestitution(LawId kind) {
   return !IsElastic(kind) && Law(kind).family != LawFamily::kConstantDissipation;
 }
 
-bool ReadsDissipation(LawKind kind) {
+bool ReadsDissipation(LawId kind) {
   return Law(kind).family == LawFamily::kConstantDissipation;
 }
 
-std::optional<double> ReportedRestitution(LawKind kind, double restitution) {
+std::optional<double> ReportedRestitution(LawId kind, double restitution) {
   if (IsElastic(kind)) return 1.0;
   if (!ReadsRestitution(kind)) return std::nullopt;
   return restitution;
@@ -97,32 +92,33 @@ std::optional<double> ReportedRestitution(LawKind kind, double restitution) {
 
 std::optional<ParamError> ValidateLawParams(const LawParams& p) {
   const LawInfo& law = Law(p.kind);
-  if (ReadsRestitution(p.kind) && !RestitutionInRange(law, p.restitution)) {
-    if (law.restitution_excludes_zero) {
-      return ParamError{"restitution", p.restitution,
-                        "must be in (0, 1] for " + std::string(law.name)};
-    }
-    return ParamError{"restitution", p.restitution, "must be in [0, 1]"};
+  if (ReadsRestitution(p.kind) && !RestitutionRange(law).Contains(p.restitution)) {
+    const std::string requirement = RestitutionRange(law).Requirement();
+    return ParamError{"restitution", p.restitution,
+                      law.restitution_excludes_zero ? requirement + " for " + std::string(law.name)
+                                                    : requirement};
   }
   if (law.family != LawFamily::kLinear) {
-    if (!InRange(p.stiffness, 0.0, HUGE_VAL, /*lo_open=*/true)) {
-      return ParamError{"stiffness", p.stiffness, "must be > 0 (N/m^n)"};
+    if (!kPositiveRange.Contains(p.stiffness)) {
+      return ParamError{"stiffness", p.stiffness, kPositiveRange.Requirement("N/m^n")};
     }
-    if (!InRange(p.exponent, 1.0, 3.0)) {
-      return ParamError{"exponent", p.exponent, "must be in [1, 3]"};
+    if (!kExponentRange.Contains(p.exponent)) {
+      return ParamError{"exponent", p.exponent, kExponentRange.Requirement()};
     }
-  } else if (!InRange(p.linear_stiffness, 0.0, HUGE_VAL, /*lo_open=*/true)) {
-    return ParamError{"linear_stiffness", p.linear_stiffness, "must be > 0 (N/m)"};
+  } else if (!kPositiveRange.Contains(p.linear_stiffness)) {
+    return ParamError{"linear_stiffness", p.linear_stiffness, kPositiveRange.Requirement("N/m")};
   }
-  if (p.damping && !InRange(*p.damping, 0.0, HUGE_VAL)) {
-    return ParamError{"damping", *p.damping, "must be >= 0 (N s/m)"};
+  if (p.damping && !kNonNegativeRange.Contains(*p.damping)) {
+    return ParamError{"damping", *p.damping, kNonNegativeRange.Requirement("N s/m")};
   }
-  if (ReadsDissipation(p.kind) && !InRange(p.dissipation.value_or(NAN), 0.0, HUGE_VAL)) {
+  if (ReadsDissipation(p.kind) && !kNonNegativeRange.Contains(p.dissipation.value_or(NAN))) {
     return ParamError{"dissipation", p.dissipation.value_or(NAN),
-                      "must be given, >= 0 (s/m), for " + std::string(law.name)};
+                      "must be given, " + std::string(kNonNegativeRange.bounds) + " (s/m), for " +
+                          std::string(law.name)};
   }
-  if (!InRange(p.min_impact_velocity, 0.0, HUGE_VAL, /*lo_open=*/true)) {
-    return ParamError{"min_impact_velocity", p.min_impact_velocity, "must be > 0 (m/s)"};
+  if (!kPositiveRange.Contains(p.min_impact_velocity)) {
+    return ParamError{"min_impact_velocity", p.min_impact_velocity,
+                      kPositiveRange.Requirement("m/s")};
   }
   return std::nullopt;
 }

@@ -12,6 +12,7 @@
 #include "contactlaws/law.h"
 #include "contactlaws/settle.h"
 #include "contactlaws/simulation.h"
+#include "laws/param_range.h"
 #include "scene/number.h"
 #include "scene/tags.h"
 
@@ -59,8 +60,8 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
     if (!e) {
       result.refusal = fmt::format("{}={} is not a finite number", kRestitutionVariable, text);
       return result;
-    } else if (!(*e >= 0 && *e <= 1)) {
-      result.refusal = fmt::format("{}={} must be in [0, 1]", kRestitutionVariable, *e);
+    } else if (!kUnitRange.Contains(*e)) {
+      result.refusal = fmt::format("{}={} {}", kRestitutionVariable, *e, kUnitRange.Requirement());
       return result;
     }
     result.overrides.restitution = *e;
@@ -77,8 +78,8 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
     const std::optional<double> mu = ParseNumber(text);
     if (!mu) {
       result.refusal = fmt::format("{}={} is not a finite number", kMuVariable, text);
-    } else if (!(*mu >= 0)) {
-      result.refusal = fmt::format("{}={} must be >= 0", kMuVariable, *mu);
+    } else if (!kNonNegativeRange.Contains(*mu)) {
+      result.refusal = fmt::format("{}={} {}", kMuVariable, *mu, kNonNegativeRange.Requirement());
     } else {
       result.overrides.mu = *mu;
     }

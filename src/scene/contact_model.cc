@@ -116,10 +116,11 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
     }
   }
   base.restitution = restitution.value_or(1.0);
-  base.exponent = spec.exponent.value_or(1.5);
+  // what the tag does not give keeps LawParams' default (TagKey::fallback)
+  if (spec.exponent) base.exponent = *spec.exponent;
   base.damping = spec.damping;
-  base.min_impact_velocity = spec.min_impact_velocity.value_or(kDefaultMinImpactVelocity);
-  base.allow_tension = spec.allow_tension.value_or(false);
+  if (spec.min_impact_velocity) base.min_impact_velocity = *spec.min_impact_velocity;
+  if (spec.allow_tension) base.allow_tension = *spec.allow_tension;
   const bool materials = spec.youngs1.has_value();
   if (Law(base.kind).family == LawFamily::kLinear) {
     // linear: linear_stiffness, or stiffness when the exponent is 1 or absent

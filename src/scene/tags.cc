@@ -12,6 +12,7 @@
 
 #include "contactlaws/error.h"
 #include "scene/number.h"
+#include "scene/tag_keys.h"
 
 namespace contactlaws {
 
@@ -45,9 +46,8 @@ class TagContext {
 
   // Splits data into key=value words, refusing malformed and repeated keys
   // and keys not in allowed.
-  template <size_t N>
-  std::vector<KeyValue> Split(std::string_view data,
-                              const std::array<std::string_view, N>& allowed) const {
+  std::vector<KeyValue> Split(std::string_view data, const std::string_view* allowed,
+                              size_t count) const {
     std::vector<KeyValue> words;
     size_t i = 0;
     while (i < data.size()) {
@@ -61,8 +61,8 @@ class TagContext {
         Fail(fmt::format("'{}' is not of the form key=value", word));
       }
       KeyValue kv{word.substr(0, eq), word.substr(eq + 1)};
-      if (std::find(allowed.begin(), allowed.end(), kv.key) == allowed.end()) {
-        std::string_view hint = NearestWord(kv.key, allowed.data(), N);
+      if (std::find(allowed, allowed + count, kv.key) == allowed + count) {
+        std::string_view hint = NearestWord(kv.key, allowed, count);
         Fail(hint.empty() ? fmt::format("unknown key '{}'", kv.key)
                           : fmt::format("unknown key '{}' (did you mean '{}'?)", kv.key, hint));
       }
@@ -81,13 +81,6 @@ class TagContext {
     return *v;
   }
 
-  // A number in (0, inf).
-  double Positive(const KeyValue& kv, std::string_view unit) const {
-    double v = Number(kv);
-    if (!(v > 0.0)) FailValue(kv.key, kv.value, fmt::format("must be > 0 ({})", unit));
-    return v;
-  }
-
  private:
   std::string_view source_;
   std::string_view name_;
@@ -103,49 +96,48 @@ std::string_view Label(const TagContext& ctx, std::string_view name,
   return label;
 }
 
-// A friction key of a contactlaw tag into f; false for any other key.
-bool ParseFrictionKey(const TagContext& ctx, const KeyValue& kv, FrictionTagSpec* f) {
-  const std::string_view k = kv.key;
-  auto non_negative = [&](std::string_view unit) {
-    const double v = ctx.Number(kv);
-    if (!(v >= 0.0)) ctx.FailValue(k, kv.value, fmt::format("must be >= 0{}", unit));
-    return v;
-  };
-  if (k == "friction") {
-    f->kind = ParseFrictionName(kv.value);
-    if (!f->kind) {
-      ctx.FailValue(k, kv.value, fmt::format("is not a friction model ({}){}", FrictionNameList(),
-                                             FrictionSuggestion(kv.value)));
+// The value of one key of a contactlaw tag into spec, as its row says.
+void ParseKey(const TagContext& ctx, const TagKey& key, const KeyValue& kv, PairTagSpec* spec) {
+  switch (key.value) {
+    case TagValue::kGeom:
+      spec->*key.text = std::string(kv.value);
+      break;
+    case TagValue::kLaw:
+      spec->law = ParseLawName(kv.value);
+      if (!spec->law) {
+        ctx.FailValue(kv.key, kv.value,
+                      fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(kv.value)));
+      }
+      break;
+    case TagValue::kFriction:
+      spec->friction.kind = ParseFrictionName(kv.value);
+      if (!spec->friction.kind) {
+        ctx.FailValue(kv.key, kv.value,
+                      fmt::format("is not a friction model ({}){}", FrictionNameList(),
+                                  FrictionSuggestion(kv.value)));
+      }
+      break;
+    case TagValue::kSwitch:
+      if (kv.value == "true" || kv.value == "1") {
+        spec->allow_tension = true;
+      } else if (kv.value == "false" || kv.value == "0") {
+        spec->allow_tension = false;
+      } else {
+        ctx.FailValue(kv.key, kv.value, "must be true or false");
+      }
+      break;
+    case TagValue::kNumber: {
+      const double v = ctx.Number(kv);
+      if (!key.range->Contains(v)) {
+        ctx.FailValue(kv.key, kv.value, key.range->Requirement(key.unit));
+      }
+      (key.number ? spec->*key.number : spec->friction.*key.friction_number) = v;
+      break;
     }
-  } else if (k == "mu" || k == "mu_static" || k == "mu_kinetic") {
-    (k == "mu" ? f->mu : k == "mu_static" ? f->mu_static : f->mu_kinetic) = non_negative("");
-  } else if (k == "stribeck_velocity" || k == "transition_velocity") {
-    (k == "stribeck_velocity" ? f->stribeck_velocity : f->transition_velocity) =
-        ctx.Positive(kv, "m/s");
-  } else if (k == "tangential_stiffness" || k == "tangential_ratio") {
-    const bool ratio = k == "tangential_ratio";
-    (ratio ? f->tangential_ratio : f->tangential_stiffness) =
-        ctx.Positive(kv, ratio ? "k_t over dF_n/dd" : "N/m");
-  } else if (k == "tangential_damping") {
-    f->tangential_damping = non_negative(" (N s/m)");
-  } else if (k == "tangential_damping_ratio") {
-    const double zeta = ctx.Number(kv);
-    if (!(zeta >= 0 && zeta <= 1)) ctx.FailValue(k, kv.value, "must be in [0, 1] (1: critical)");
-    f->tangential_damping_ratio = zeta;
-  } else if (k == "bristle_stiffness") {
-    f->bristle_stiffness = ctx.Positive(kv, "1/m, per newton of normal force");
-  } else if (k == "bristle_damping") {
-    f->bristle_damping = non_negative(" (s/m, per newton of normal force)");
-  } else if (k == "viscous") {
-    f->viscous = non_negative(" (N s/m)");
-  } else if (k == "torsional_friction" || k == "rolling_friction") {
-    (k == "torsional_friction" ? f->torsional_friction : f->rolling_friction) =
-        non_negative(" (m, the torque cap over the normal force)");
-  } else {
-    return false;
   }
-  if (f->first_key.empty()) f->first_key = std::string(k);
-  return true;
+  if (key.friction_side() && spec->friction.first_key.empty()) {
+    spec->friction.first_key = std::string(kv.key);
+  }
 }
 
 // Friction keys that exclude each other or disagree.
@@ -284,58 +276,9 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
   TagContext ctx(source, name);
   PairTagSpec spec;
   spec.label = std::string(Label(ctx, name, kPairTagPrefix));
-  for (const KeyValue& kv : ctx.Split(data, kPairKeys)) {
-    const std::string_view k = kv.key;
-    if (ParseFrictionKey(ctx, kv, &spec.friction)) continue;
-    if (k == "geom1") {
-      spec.geom1 = std::string(kv.value);
-    } else if (k == "geom2") {
-      spec.geom2 = std::string(kv.value);
-    } else if (k == "law") {
-      spec.law = ParseLawName(kv.value);
-      if (!spec.law) {
-        ctx.FailValue(k, kv.value,
-                      fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(kv.value)));
-      }
-    } else if (k == "restitution") {
-      spec.restitution = ctx.Number(kv);
-      if (*spec.restitution < 0.0 || *spec.restitution > 1.0) {
-        ctx.FailValue(k, kv.value, "must be in [0, 1]");
-      }
-    } else if (k == "stiffness") {
-      spec.stiffness = ctx.Positive(kv, "N/m^n");
-    } else if (k == "exponent") {
-      spec.exponent = ctx.Number(kv);
-      if (*spec.exponent < 1.0 || *spec.exponent > 3.0) {
-        ctx.FailValue(k, kv.value, "must be in [1, 3]");
-      }
-    } else if (k == "linear_stiffness") {
-      spec.linear_stiffness = ctx.Positive(kv, "N/m");
-    } else if (k == "damping") {
-      spec.damping = ctx.Number(kv);
-      if (*spec.damping < 0.0) ctx.FailValue(k, kv.value, "must be >= 0 (N s/m)");
-    } else if (k == "dissipation") {
-      spec.dissipation = ctx.Number(kv);
-      if (*spec.dissipation < 0.0) ctx.FailValue(k, kv.value, "must be >= 0 (s/m)");
-    } else if (k == "min_impact_velocity") {
-      spec.min_impact_velocity = ctx.Positive(kv, "m/s");
-    } else if (k == "allow_tension") {
-      if (kv.value == "true" || kv.value == "1") {
-        spec.allow_tension = true;
-      } else if (kv.value == "false" || kv.value == "0") {
-        spec.allow_tension = false;
-      } else {
-        ctx.FailValue(k, kv.value, "must be true or false");
-      }
-    } else if (k == "youngs1" || k == "youngs2") {
-      (k == "youngs1" ? spec.youngs1 : spec.youngs2) = ctx.Positive(kv, "Pa");
-    } else if (k == "poisson1" || k == "poisson2") {
-      double nu = ctx.Number(kv);
-      if (!(nu > -1.0 && nu < 0.5)) {
-        ctx.FailValue(k, kv.value, "must be in (-1, 0.5)");
-      }
-      (k == "poisson1" ? spec.poisson1 : spec.poisson2) = nu;
-    }
+  const std::vector<std::string_view>& names = TagKeyNames();
+  for (const KeyValue& kv : ctx.Split(data, names.data(), names.size())) {
+    ParseKey(ctx, *FindTagKey(kv.key), kv, &spec);
   }
 
   // keys every tag needs, and keys that go together
@@ -344,9 +287,13 @@ PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
   if (!spec.law) ctx.Fail("missing key law");
   CheckFrictionKeys(ctx, spec.friction);
   // a key only some laws read, on a law that does not: it would be ignored
-  if (spec.dissipation && !ReadsDissipation(*spec.law)) {
-    ctx.Fail(fmt::format("dissipation={} is not read by law={}, which takes: {}",
-                         *spec.dissipation, LawName(*spec.law), Law(*spec.law).parameters));
+  for (const TagKey& key : TagKeys()) {
+    if (!key.refused_unread || !(spec.*key.number) ||
+        Reads(key, *spec.law, FrictionKind::kNone)) {
+      continue;
+    }
+    ctx.Fail(fmt::format("{}={} is not read by law={}, which takes: {}", key.name,
+                         *(spec.*key.number), LawName(*spec.law), Law(*spec.law).parameters));
   }
   const int materials = spec.youngs1.has_value() + spec.poisson1.has_value() +
                         spec.youngs2.has_value() + spec.poisson2.has_value();
@@ -373,7 +320,7 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
   bool has_omega = false;
   bool has_speed = false;
 
-  for (const KeyValue& kv : ctx.Split(data, kDriveKeys)) {
+  for (const KeyValue& kv : ctx.Split(data, kDriveKeys.data(), kDriveKeys.size())) {
     const std::string_view k = kv.key;
     if (k == "body") {
       spec.body = std::string(kv.value);

@@ -6,7 +6,7 @@
 //   <text name="contactlaw:LABEL"   data="key=value key=value ..."/>
 //   <text name="contactdrive:LABEL" data="key=value key=value ..."/>
 //
-// Values contain no white space. contactlaw keys: see kPairKeys; contactdrive
+// Values contain no white space. contactlaw keys: see TagKeys (tag_keys.h); contactdrive
 // keys: see kDriveKeys. Each key at most once per tag.
 
 #ifndef CONTACTLAWS_SCENE_TAGS_H_
@@ -26,17 +26,6 @@ namespace contactlaws {
 
 inline constexpr std::string_view kPairTagPrefix = "contactlaw:";
 inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
-
-inline constexpr std::array<std::string_view, 30> kPairKeys = {
-    "geom1",         "geom2",    "law",      "restitution",
-    "stiffness",     "exponent", "linear_stiffness", "damping",
-    "dissipation",   "min_impact_velocity", "allow_tension", "youngs1",
-    "poisson1",      "youngs2",  "poisson2",
-    // friction (friction.h)
-    "friction", "mu", "mu_static", "mu_kinetic", "stribeck_velocity", "transition_velocity",
-    "tangential_stiffness", "tangential_ratio", "tangential_damping",
-    "tangential_damping_ratio", "bristle_stiffness", "bristle_damping",
-    "viscous", "torsional_friction", "rolling_friction"};
 
 inline constexpr std::array<std::string_view, 7> kDriveKeys = {
     "body", "motion", "axis", "amplitude", "omega", "phase", "speed"};
@@ -67,7 +56,7 @@ struct PairTagSpec {
   std::string label;  // the tag name after "contactlaw:"
   std::string geom1;  // a geom name, or "group:N"
   std::string geom2;
-  std::optional<LawKind> law;
+  std::optional<LawId> law;
   std::optional<double> restitution;
   std::optional<double> stiffness;
   std::optional<double> exponent;

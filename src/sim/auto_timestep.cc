@@ -10,24 +10,14 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/estimate.h"
-#include "contactlaws/kinematics.h"
 #include "mujoco/damper_rate.h"
-#include "mujoco/hooks.h"
-#include "scene/model_queries.h"
-#include "sim/reach_sweep.h"
+#include "sim/approach_steps.h"
+#include "sim/contact_steps.h"
 
 namespace contactlaws {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// The time in which a gap g (m, > 0) closes at speed v and acceleration a
-// (both closing when > 0); infinite when it never does.
-double TimeToClose(double g, double v, double a) {
-  if (a > 0) return (-v + std::sqrt(v * v + 2 * a * g)) / a;
-  if (v > 0) return g / v;
-  return kInfinity;
-}
 
 // The time in which a depth d (m, > 0) separating at speed v (> 0) reaches 0
 // under an acceleration a that closes the pair (gravity: > 0); infinite when
@@ -45,11 +35,7 @@ double TimeToSeparate(double d, double v, double a) {
 // carries gravity's slowing over 1e-3 of a fine step, not over up to a whole
 // fine step (a first-order error in the rebound).
 constexpr double kSeparationOvershoot = 1e-3;
-// Likewise the step that reaches a predicted touch ends this fraction of a
-// fine step past it, in contact, whatever the rounding of the prediction.
-constexpr double kTouchOvershoot = 1e-3;
-
-// Rule 5's bound on friction's dampers, in lags 1 / lambda: RK4 damps a
+// The bound on friction's dampers, in lags 1 / lambda: RK4 damps a
 // mode of rate lambda monotonically up to 2.785 lags (its amplification at 2
 // lags is 1/3); 2 leaves room for the law's dampers on the same bodies.
 // Measured on the resting die: 3.2e-5 s (2.65 lags) stops it, 3.4e-5 s
@@ -86,17 +72,6 @@ bool HasOwnDynamics(const ContactModel& cm) {
   return false;
 }
 
-// The top acceleration of the driven bodies among body, m/s^2 (A w^2 each).
-double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body) {
-  double accel = 0;
-  for (int b : body) {
-    if (const Drive* drive = cm.FindDrive(b)) {
-      accel += std::abs(drive->amplitude) * drive->omega * drive->omega;
-    }
-  }
-  return accel;
-}
-
 }  // namespace
 
 double StepsPerContact(double accuracy) {
@@ -110,7 +85,7 @@ double KelvinVoigtStepsPerContact(double accuracy) {
 AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOptions& options)
     : contacts_(contacts),
       options_(options),
-      sweep_(std::make_unique<ReachSweep>(contacts.model().model())),
+      approach_(std::make_unique<ApproachSteps>(contacts, options.gap_fraction)),
       damper_rate_(std::make_unique<DamperRate>()) {
   if (!(options.accuracy > 0 && options.accuracy <= kMaxAccuracy) || !(options.max_step > 0) ||
       !(options.steps_per_contact >= 0) || !(options.kelvin_voigt_steps_per_contact >= 0) ||
@@ -128,18 +103,11 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
   flight_step_ = FlightStep();
   const ContactModel& cm = contacts.model();
   for (int p = 0; p < static_cast<int>(cm.pairs().size()); ++p) {
-    const GeomPair& pair = cm.pairs()[p];
-    const double mass = PairEffectiveMass(cm, p);
-    effective_mass_.push_back(mass);
-    // t_c is proportional to v^((1 - n) / (1 + n)) (Hertz family; KV: v^0)
-    const double n = Law(pair.params.kind).family == LawFamily::kLinear ? 1.0 : pair.params.exponent;
-    duration_at_unit_speed_.push_back(ElasticContactDuration(pair.params, mass, 1.0));
-    duration_speed_exponent_.push_back((1 - n) / (1 + n));
-    top_acceleration_.push_back(DriveAcceleration(cm, pair.body));
+    effective_mass_.push_back(PairEffectiveMass(cm, p));
   }
-  has_untagged_ = HasUntaggedContacts(cm);
-  scene_step_ = cm.model()->opt.timestep;
-  reach_.assign(cm.model()->ngeom, kInfinity);
+  pair_steps_ = std::make_unique<PairSteps>(
+      cm, effective_mass_,
+      ContactSteps(options_.steps_per_contact, options_.kelvin_voigt_steps_per_contact));
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
   settled_rule_ = contacts.options().integrator == mjINT_RK4;
@@ -147,27 +115,6 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
 
 AutoTimestep::~AutoTimestep() = default;
 AutoTimestep::AutoTimestep(AutoTimestep&&) noexcept = default;
-
-double AutoTimestep::FineStep(int pair, double v) const {
-  const LawParams& law = contacts_.model().pairs()[pair].params;
-  const double speed = std::max(v, law.min_impact_velocity);
-  const double duration =
-      duration_at_unit_speed_[pair] * std::pow(speed, duration_speed_exponent_[pair]);
-  return duration / LawStepsPerContact(pair);
-}
-
-double AutoTimestep::LawStepsPerContact(int pair) const {
-  return Law(contacts_.model().pairs()[pair].params.kind).family == LawFamily::kLinear
-             ? options_.kelvin_voigt_steps_per_contact
-             : options_.steps_per_contact;
-}
-
-double AutoTimestep::SettledStep(int pair) const {
-  const double floor = contacts_.model().pairs()[pair].params.min_impact_velocity;
-  const double duration =
-      duration_at_unit_speed_[pair] * std::pow(floor, duration_speed_exponent_[pair]);
-  return duration / kSettledStepsPerContact;
-}
 
 double AutoTimestep::FlightStep() const {
   const ContactModel& cm = contacts_.model();
@@ -200,9 +147,9 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
       duration = std::min(duration, M_PI * std::sqrt(pair.friction_inertia / k));
     }
   }
-  // its period 2 duration, as a contact's duration, in steps_per_contact
-  // steps (the fixed-step rule: kStepsPerContact in either)
-  return 2 * duration / options_.steps_per_contact;
+  // its period 2 duration, as a contact's duration (the fixed-step rule:
+  // kStepsPerContact in either)
+  return pair_steps_->steps().TangentialStep(duration);
 }
 
 double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
@@ -260,13 +207,13 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   const double tangential = TangentialStep(e);
   // a settled contact (it touched barely faster than the law's floor of v0
   // and moves no faster than it): no collision to resolve, only a spring to
-  // keep stable under RK4 (rule 5 keeps its damper)
-  const double fine = FineStep(e.pair, e.impact_velocity);
+  // keep stable under RK4 (the dampers' lags still bound its step)
+  const double fine = pair_steps_->Fine(e.pair, e.impact_velocity);
   if (settled_rule_ && std::abs(e.depth_rate) <= floor && e.episode >= 0) {
     const double lasted = contacts_.data()->time - contacts_.point_impacts()[e.episode].time_contact;
     const bool slow_touch = e.impact_velocity <= kSettledTouchFactor * floor;
-    if (slow_touch || lasted > kSettledDurations * fine * LawStepsPerContact(e.pair)) {
-      return std::min(SettledStep(e.pair), tangential);
+    if (slow_touch || lasted > kSettledDurations * fine * pair_steps_->PerContact(e.pair)) {
+      return std::min(pair_steps_->Settled(e.pair), tangential);
     }
   }
   // a separation slower than the law's floor of v0 (a resting contact's
@@ -277,108 +224,6 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   const double overshoot = kSeparationOvershoot * fine;
   const double separation = TimeToSeparate(e.depth, -e.depth_rate, closing) + overshoot;
   return std::min({separation, fine, tangential});
-}
-
-bool AutoTimestep::Closes(const std::array<int, 2>& g, const std::array<int, 2>& body,
-                          double top_acceleration, Closing* c) const {
-  const ContactModel& cm = contacts_.model();
-  const mjModel* m = cm.model();
-  const mjData* d = contacts_.data();
-  const double rb[2] = {m->geom_rbound[g[0]], m->geom_rbound[g[1]]};
-  mjtNum normal[3];  // from geom[0] towards geom[1]
-  if (!BoundingGap(m, d, g[0], g[1], &c->gap, normal)) {
-    return false;  // no bounding sphere (planes, height fields)
-  }
-  double spin = 0;   // what rotation adds to the closing speed
-  if (rb[0] > 0 && rb[1] > 0) {
-    for (int b = 0; b < 2; ++b) {
-      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
-    }
-  } else {
-    // a plane and the other geom's sphere
-    const int b = rb[0] > 0 ? 0 : 1;
-    spin = mju_norm3(d->cvel + 6 * body[b]) * rb[b];
-  }
-  mjtNum v[2][3], relative[3];
-  for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
-  mju_sub3(relative, v[0], v[1]);
-  c->speed = mju_dot3(relative, normal) + spin;
-  c->accel = top_acceleration + GravityClosingAcceleration(cm, body, normal);
-  return true;
-}
-
-double AutoTimestep::ApproachStep(int p, bool* fine) const {
-  const GeomPair& pair = contacts_.model().pairs()[p];
-  Closing c;
-  if (!Closes(pair.geom, pair.body, top_acceleration_[p], &c)) {
-    // always near
-    *fine = true;
-    return FineStep(p, 0.0);
-  }
-  const double gap = c.gap;
-  const double closing = c.speed;
-  const double accel = c.accel;
-  const double pair_fine = FineStep(p, SpeedAtTouch(closing, accel, gap));
-  const double allowed =
-      gap > 0 ? TimeToClose(options_.gap_fraction * gap, closing, accel) : 0.0;
-  if (allowed > pair_fine) return allowed;
-  // near: fine steps, and the ones that reach the touch end just before and
-  // just past it,
-  // so that a force that jumps at d = 0+ acts from the start of a step (a
-  // touch within a step would act for a fraction of it: an error of the
-  // first order in the step)
-  *fine = true;
-  // bounding spheres that overlap out of contact: no touch to predict
-  if (!(gap > 0)) return pair_fine;
-  const double touch = TimeToClose(gap, closing, accel);
-  // first to just before the touch (the impact speed is read there, before
-  // any force), then across it
-  const double lead = kTouchOvershoot * pair_fine;
-  if (touch > 2 * lead) return std::min(touch - lead, pair_fine);
-  return touch + lead;
-}
-
-double AutoTimestep::UntaggedStep(int g0, int g1, double margin) const {
-  const mjModel* m = contacts_.model().model();
-  const std::array<int, 2> g = CollisionOrder(m, g0, g1);  // a plane first, as GeomPair
-  const std::array<int, 2> body = {m->geom_bodyid[g[0]], m->geom_bodyid[g[1]]};
-  // both welded to the world: their gap never closes
-  if (m->body_weldid[body[0]] == 0 && m->body_weldid[body[1]] == 0) return kInfinity;
-  Closing c;
-  // MuJoCo's contact starts at its margin; a pair within reach (or without
-  // bounding spheres) needs the scene's own step
-  if (!Closes(g, body, DriveAcceleration(contacts_.model(), body), &c) ||
-      !(c.gap > margin)) {
-    return scene_step_;
-  }
-  const double allowed = TimeToClose(options_.gap_fraction * (c.gap - margin), c.speed, c.accel);
-  return std::max(scene_step_, allowed);
-}
-
-void AutoTimestep::SetReach(double bound) {
-  const ContactModel& cm = contacts_.model();
-  const mjModel* m = cm.model();
-  const mjData* d = contacts_.data();
-  const double gravity = mju_norm3(m->opt.gravity);
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (!std::isfinite(bound)) {
-      reach_[g] = kInfinity;
-      continue;
-    }
-    // what the geom's surface can move towards another's within bound: its
-    // centre's speed, what spin adds, gravity and a drive's acceleration (a
-    // pair closes at most at the sum of its geoms'), over gap_fraction,
-    // twice for rounding, beyond MuJoCo's margin
-    const int body = m->geom_bodyid[g];
-    mjtNum v[3];
-    contacts_.PointVelocity(body, d->geom_xpos + 3 * g, v);
-    double speed = mju_norm3(v);
-    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * m->geom_rbound[g];
-    double accel = DriveAcceleration(cm, {body, body}) / 2;
-    if (!Immovable(cm, body)) accel += gravity;
-    const double travel = speed * bound + 0.5 * accel * bound * bound;
-    reach_[g] = m->geom_margin[g] + 2 * travel / options_.gap_fraction;
-  }
 }
 
 double AutoTimestep::Next(mjData* d, double until) {
@@ -420,26 +265,13 @@ double AutoTimestep::Next(mjData* d, double until) {
 
   // the other pairs: the time to close a fraction of their gap, from the
   // current state
-  if (in_contact < npair || has_untagged_) {
+  if (in_contact < npair || approach_->has_untagged()) {
     mj_kinematics(m, d);
     mj_comPos(m, d);
     mj_comVel(m, d);
-    // only the pairs that could close within the step so far (growth
-    // included) can shorten it: those whose geoms' reaches overlap
-    SetReach(previous_ > 0 ? std::min(step, options_.growth * previous_) : step);
-    sweep_->Overlaps(d, reach_, [&](int g0, int g1) {
-      const int p = cm.FindPair(g0, g1);
-      if (p >= 0) {
-        if (!in_contact_[p]) step = std::min(step, ApproachStep(p, &fine));
-      } else if (!DefaultContactFilter(m, g0, g1)) {
-        // untagged: the scene's step while MuJoCo's contact can reach it
-        step = std::min(step, UntaggedStep(g0, g1, std::max(m->geom_margin[g0],
-                                                            m->geom_margin[g1])));
-      }
-    });
-    for (int i = 0; i < m->npair; ++i) {
-      step = std::min(step, UntaggedStep(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]));
-    }
+    // the pairs that could close within the step so far, growth included
+    const double reach = previous_ > 0 ? std::min(step, options_.growth * previous_) : step;
+    step = approach_->Step(d, step, reach, in_contact_, *pair_steps_, &fine);
   }
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;

@@ -27,8 +27,8 @@
 //     ends inside one); in contact a step is at most the fine step t_c / N,
 //     so the chord misses the force's curve by at most (pi / N)^2 / 8 of
 //     its peak: 4.9e-4 at the default accuracy (N = 50), 7.8e-6 at 1e-5
-//     (N = 397): within the accuracy asked. A settled contact (rule 6: 6
-//     steps per duration) has a force that barely changes.
+//     (N = 397): within the accuracy asked. A settled contact (6 steps per
+//     duration, auto_timestep.h) has a force that barely changes.
 // A row at a step's end is the exact state's, as Simulation::Sample's.
 
 #ifndef CONTACTLAWS_SIM_DENSE_ROWS_H_

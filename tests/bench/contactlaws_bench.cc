@@ -54,7 +54,7 @@ struct Stretches {
   double ball_box = 0.01;      // from the launch: its collisions begin at 1-2 ms
   std::vector<int> ball_counts = {8, 64, 512};
   // the sweep's subset: every law at one e, until the first episode ends
-  std::vector<LawKind> sweep_laws = {AllLaws().begin(), AllLaws().end()};
+  std::vector<LawId> sweep_laws = {AllLaws().begin(), AllLaws().end()};
   std::vector<double> sweep_restitutions = {0.5};
 };
 
@@ -85,7 +85,7 @@ bool CheckWarnings(benchmark::State& state, const mjData* d) {
 // Law kernels.
 
 // The paper's ball: K = 1.4e8 N/m^1.5, n = 1.5, k = 5e6 N/m, e = 0.9.
-LawParams PaperParams(LawKind kind) {
+LawParams PaperParams(LawId kind) {
   LawParams params;
   params.kind = kind;
   params.restitution = 0.9;
@@ -99,7 +99,7 @@ LawParams PaperParams(LawKind kind) {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void BM_Law(benchmark::State& state, LawKind kind) {
+void BM_Law(benchmark::State& state, LawId kind) {
   const LawParams params = PaperParams(kind);
   // varied states of one contact (depth to 1.2 mm, approach and separation at
   // up to 4.4 m/s) so that no call is the same as the one before; the index
@@ -220,7 +220,7 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
   long steps = 0;
   for (auto _ : state) {
     steps = 0;
-    for (LawKind law : s.sweep_laws) {
+    for (LawId law : s.sweep_laws) {
       for (double e : s.sweep_restitutions) {
         SimulationOptions options;
         options.overrides.law = law;
@@ -251,7 +251,7 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
 }
 
 void RegisterAll(const Stretches& s) {
-  for (LawKind kind : AllLaws()) {
+  for (LawId kind : AllLaws()) {
     benchmark::RegisterBenchmark(fmt::format("Law/{}", LawName(kind)).c_str(), BM_Law, kind);
   }
 
@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--smoke") == 0) {
       stretches.bouncing_ball = 0.01;
       stretches.ball_box = 2e-4;
-      stretches.sweep_laws = {contactlaws::LawKind::kHuntCrossley};
+      stretches.sweep_laws = {*contactlaws::ParseLawName("hunt-crossley")};
     } else {
       args.push_back(argv[i]);
     }

@@ -65,9 +65,9 @@ TEST(OptionsTest, BadRestitutionListsAreRefusedByName) {
 
 TEST(OptionsTest, LawLists) {
   EXPECT_EQ(ParseLawList("--laws", "all"),
-            std::vector<LawKind>(AllLaws().begin(), AllLaws().end()));
+            std::vector<LawId>(AllLaws().begin(), AllLaws().end()));
   EXPECT_EQ(ParseLawList("--laws", "flores,hertz"),
-            (std::vector<LawKind>{LawKind::kFlores, LawKind::kHertz}));
+            (std::vector<LawId>{*ParseLawName("flores"), *ParseLawName("hertz")}));
   EXPECT_EQ(ErrorOf([] { ParseLawList("--laws", "flores,hooke"); }),
             "--laws=flores,hooke has 'hooke', which is not a law (all, " + LawNameList() + ")");
   EXPECT_EQ(ErrorOf([] { ParseLawList("--laws", "flores,flores"); }),

@@ -103,7 +103,7 @@ TEST(ReplayTest, ARunReplayedAgainstItselfScoresZero) {
   EXPECT_LT(replayed[0].score.position_rms, 1e-12);
   EXPECT_LT(replayed[0].score.angle_rms, 1e-10);
   // and a replay of another law is far from it (the test can fail)
-  options.simulation.overrides.law = LawKind::kHertz;
+  options.simulation.overrides.law = *ParseLawName("hertz");
   EXPECT_GT(Replay(scene, data).Run(options)[0].score.position_rms, 1e-3);
 }
 

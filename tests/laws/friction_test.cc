@@ -185,7 +185,7 @@ TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
   // rounding of a few operations
   constexpr double kRounding = 1e-14;
   LawParams law;
-  law.kind = LawKind::kHuntCrossley;
+  law.kind = *ParseLawName("hunt-crossley");
   law.stiffness = 1e9;
   law.restitution = 0.9;
   ResolveLawParams(&law);

@@ -19,7 +19,7 @@ namespace {
 // Kernel arithmetic is a few flops: agree with the hand value to rounding.
 constexpr double kRoundoff = 1e-12;
 
-LawParams Hertzian(LawKind kind, double e) {
+LawParams Hertzian(LawId kind, double e) {
   LawParams p;
   p.kind = kind;
   p.restitution = e;
@@ -43,22 +43,22 @@ double Force(const LawParams& p, double depth, double rate, double v0 = kV0,
 
 TEST(LawTest, HertzByHand) {
   EXPECT_NEAR(kHertzForce, 4427.188724235731, 1e-6);
-  EXPECT_NEAR(Force(Hertzian(LawKind::kHertz, 1.0), kDepth, kRate), kHertzForce,
+  EXPECT_NEAR(Force(Hertzian(*ParseLawName("hertz"), 1.0), kDepth, kRate), kHertzForce,
               kRoundoff * kHertzForce);
   // the depth rate plays no part
-  EXPECT_EQ(Force(Hertzian(LawKind::kHertz, 1.0), kDepth, -7.0), kHertzForce);
+  EXPECT_EQ(Force(Hertzian(*ParseLawName("hertz"), 1.0), kDepth, -7.0), kHertzForce);
 }
 
 TEST(LawTest, HysteresisForceByHand) {
   // hunt-crossley at e = 0.6: a = 3 * 0.4 / 2 = 0.6; factor 1 + 0.6 * 2/4 = 1.3
-  EXPECT_DOUBLE_EQ(HysteresisCoefficient(LawKind::kHuntCrossley, 0.6), 0.6);
-  EXPECT_NEAR(Force(Hertzian(LawKind::kHuntCrossley, 0.6), kDepth, kRate), 1.3 * kHertzForce,
+  EXPECT_DOUBLE_EQ(HysteresisCoefficient(*ParseLawName("hunt-crossley"), 0.6), 0.6);
+  EXPECT_NEAR(Force(Hertzian(*ParseLawName("hunt-crossley"), 0.6), kDepth, kRate), 1.3 * kHertzForce,
               kRoundoff * kHertzForce);
 }
 
 TEST(LawTest, KelvinVoigtByHand) {
   LawParams p;
-  p.kind = LawKind::kKelvinVoigt;
+  p.kind = *ParseLawName("kelvin-voigt");
   p.linear_stiffness = 5e6;
   p.restitution = 0.5;
   // zeta = ln 2 / sqrt(pi^2 + ln^2 2) = 0.6931472 / 3.2171501 = 0.2154538
@@ -75,7 +75,7 @@ TEST(LawTest, KelvinVoigtByHand) {
 }
 
 TEST(LawTest, NoForceOutOfContact) {
-  for (LawKind kind : AllLaws()) {
+  for (LawId kind : AllLaws()) {
     LawParams p = Hertzian(kind, 0.5);
     p.linear_stiffness = 5e6;
     for (double depth : {0.0, -1e-9, -1.0}) {
@@ -90,14 +90,14 @@ TEST(LawTest, NoForceOutOfContact) {
 TEST(LawTest, HertzFamilyContinuousAtFirstTouch) {
   // F -> 0 as d -> 0+, whatever the approach speed (unlike Kelvin-Voigt):
   // every law of the table but the linear one
-  for (LawKind kind : AllLaws()) {
+  for (LawId kind : AllLaws()) {
     if (Law(kind).family == LawFamily::kLinear) continue;
     const LawParams p = Hertzian(kind, 0.3);
     EXPECT_LT(Force(p, 1e-12, kV0), 1e-8) << LawName(kind);
     EXPECT_LT(Force(p, 1e-12, -kV0), 1e-8) << LawName(kind);
   }
   LawParams kv;
-  kv.kind = LawKind::kKelvinVoigt;
+  kv.kind = *ParseLawName("kelvin-voigt");
   kv.linear_stiffness = 5e6;
   kv.restitution = 0.3;
   EXPECT_GT(Force(kv, 1e-12, kV0, kV0, 1.0), 100.0) << "Kelvin-Voigt jumps to c v0";
@@ -105,8 +105,8 @@ TEST(LawTest, HertzFamilyContinuousAtFirstTouch) {
 
 TEST(LawTest, RestitutionOneIsHertz) {
   // every law with an a(e): a(1) = 0
-  const double hertz = Force(Hertzian(LawKind::kHertz, 1.0), kDepth, kRate);
-  for (LawKind kind : AllLaws()) {
+  const double hertz = Force(Hertzian(*ParseLawName("hertz"), 1.0), kDepth, kRate);
+  for (LawId kind : AllLaws()) {
     if (Law(kind).family != LawFamily::kHysteresis || !ReadsRestitution(kind)) continue;
     EXPECT_EQ(HysteresisCoefficient(kind, 1.0), 0.0) << LawName(kind);
     EXPECT_EQ(Force(Hertzian(kind, 1.0), kDepth, kRate), hertz) << LawName(kind);
@@ -116,7 +116,7 @@ TEST(LawTest, RestitutionOneIsHertz) {
 
 TEST(LawTest, ClampedUnlessTensionAllowed) {
   // flores e = 0.5 (a = 1.6), separating at d' = -v0: factor 1 - 1.6 < 0
-  LawParams p = Hertzian(LawKind::kFlores, 0.5);
+  LawParams p = Hertzian(*ParseLawName("flores"), 0.5);
   const ContactForce clamped = EvaluateLaw(p, ContactState{kDepth, -kV0, kV0, 1.0});
   EXPECT_EQ(clamped.total, 0.0);
   // the clamp removes tension only: the ledger still sees dissipation >= 0
@@ -127,10 +127,10 @@ TEST(LawTest, ClampedUnlessTensionAllowed) {
 
 TEST(LawTest, ElasticEnergyIsTheSpringIntegral) {
   // K d^(n+1)/(n+1) for the Hertz family, k d^2 / 2 for Kelvin-Voigt
-  EXPECT_NEAR(ElasticEnergy(Hertzian(LawKind::kFlores, 0.5), kDepth),
+  EXPECT_NEAR(ElasticEnergy(Hertzian(*ParseLawName("flores"), 0.5), kDepth),
               kHertzForce * kDepth / 2.5, kRoundoff);
   LawParams kv;
-  kv.kind = LawKind::kKelvinVoigt;
+  kv.kind = *ParseLawName("kelvin-voigt");
   kv.linear_stiffness = 5e6;
   EXPECT_NEAR(ElasticEnergy(kv, kDepth), 2.5, kRoundoff);
 }
@@ -149,7 +149,7 @@ TEST(LawTest, MaterialStiffnessByHand) {
 
 TEST(LawTest, ValidationNamesKeyValueAndRange) {
   auto error = [](LawParams p) { return ValidateLawParams(p); };
-  LawParams ok = Hertzian(LawKind::kFlores, 0.9);
+  LawParams ok = Hertzian(*ParseLawName("flores"), 0.9);
   EXPECT_FALSE(error(ok).has_value());
 
   LawParams p = ok;
@@ -157,7 +157,7 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   ASSERT_TRUE(error(p));
   EXPECT_EQ(error(p)->key, "restitution");
   EXPECT_EQ(error(p)->requirement, "must be in (0, 1] for flores");
-  p.kind = LawKind::kHuntCrossley;  // e = 0 is fine for Hunt-Crossley
+  p.kind = *ParseLawName("hunt-crossley");  // e = 0 is fine for Hunt-Crossley
   EXPECT_FALSE(error(p).has_value());
   p.restitution = 1.5;
   EXPECT_EQ(error(p)->requirement, "must be in [0, 1]");
@@ -179,7 +179,7 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   EXPECT_EQ(error(p)->key, "min_impact_velocity");
 
   LawParams kv;
-  kv.kind = LawKind::kKelvinVoigt;
+  kv.kind = *ParseLawName("kelvin-voigt");
   kv.restitution = 0.5;
   EXPECT_EQ(error(kv)->key, "linear_stiffness");
   kv.linear_stiffness = 1e6;
@@ -198,7 +198,7 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   // F = K d^n (1 + a d' / v0): c = a K d^n / v0 = a W / v0 at rest under W
   constexpr double kRelativeTolerance = 1e-9;  // the finite difference of a law linear in d'
   LawParams p;
-  p.kind = LawKind::kHuntCrossley;
+  p.kind = *ParseLawName("hunt-crossley");
   p.restitution = 0.5;
   p.stiffness = 1e7;
   ResolveLawParams(&p);
@@ -212,10 +212,10 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   p.min_impact_velocity = 1e-2;
   EXPECT_NEAR(RestingDamperLag(p, load, m), 10 * expected, 10 * kRelativeTolerance * expected);
   // elastic, or no load: no damper
-  p.kind = LawKind::kHertz;
+  p.kind = *ParseLawName("hertz");
   ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, load, m)));
-  p.kind = LawKind::kHuntCrossley;
+  p.kind = *ParseLawName("hunt-crossley");
   ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, 0, m)));
 }

@@ -106,7 +106,7 @@ Outcome RunPlain(const std::string& environment, const std::string& tagged) {
   return outcome;
 }
 
-double Exact(LawKind law, double e) { return *EffectiveRestitution(law, e); }
+double Exact(LawId law, double e) { return *EffectiveRestitution(law, e); }
 
 TEST(PluginTest, PreloadedBallReboundsAtTheLawsExactRebound) {
   const std::string tagged = BallScene("flores", Tag("flores", "0.9"));
@@ -114,7 +114,7 @@ TEST(PluginTest, PreloadedBallReboundsAtTheLawsExactRebound) {
   for (const char* name : {"tagged0", "tagged1"}) {
     const Fields& run = with.runs.at(name);
     EXPECT_EQ(run.at("done"), "1") << name;
-    EXPECT_NEAR(Number(run, "rebound"), Exact(LawKind::kFlores, 0.9), kReboundTolerance) << name;
+    EXPECT_NEAR(Number(run, "rebound"), Exact(*ParseLawName("flores"), 0.9), kReboundTolerance) << name;
     // the tagged point shown (in gap), no MuJoCo constraint
     EXPECT_GE(Number(run, "gap_contacts"), 1) << name;
     EXPECT_EQ(Number(run, "solver_contacts"), 0) << name;
@@ -132,7 +132,7 @@ TEST(PluginTest, WithoutThePluginMujocoContactActs) {
   const std::string tagged = BallScene("flores", Tag("flores", "0.9"));
   const Outcome without = RunPlain("", tagged);
   const Fields& run = without.runs.at("tagged0");
-  EXPECT_GT(std::abs(Number(run, "rebound") - Exact(LawKind::kFlores, 0.9)), kMujocoDifference);
+  EXPECT_GT(std::abs(Number(run, "rebound") - Exact(*ParseLawName("flores"), 0.9)), kMujocoDifference);
   EXPECT_GE(Number(run, "solver_contacts"), 1);
   EXPECT_EQ(Number(run, "gap_contacts"), 0);
   EXPECT_EQ(without.program.err, "");
@@ -150,7 +150,7 @@ TEST(PluginTest, EnvironmentOverridesTheLawAndRestitution) {
   const std::string tagged = BallScene("flores", Tag("flores", "0.9"));
   const Outcome with = RunPlain(
       Preload() + " CONTACTLAWS_LAW=hunt-crossley CONTACTLAWS_RESTITUTION=0.5", tagged);
-  EXPECT_NEAR(Number(with.runs.at("tagged0"), "rebound"), Exact(LawKind::kHuntCrossley, 0.5),
+  EXPECT_NEAR(Number(with.runs.at("tagged0"), "rebound"), Exact(*ParseLawName("hunt-crossley"), 0.5),
               kReboundTolerance);
   EXPECT_NE(with.program.err.find("hunt-crossley, e = 0.5"), std::string::npos)
       << with.program.err;
@@ -161,7 +161,7 @@ TEST(PluginTest, AccuracyStepsWithTheAutoTimestepAtThatAccuracy) {
   const Outcome fixed = RunPlain(Preload(), tagged);
   const Outcome automatic =
       RunPlain(Preload() + fmt::format(" CONTACTLAWS_ACCURACY={}", kAccuracy), tagged);
-  const double exact = Exact(LawKind::kFlores, 0.9);
+  const double exact = Exact(*ParseLawName("flores"), 0.9);
   for (const char* name : {"tagged0", "tagged1"}) {
     const Fields& run = automatic.runs.at(name);
     EXPECT_EQ(run.at("done"), "1") << name;

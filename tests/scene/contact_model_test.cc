@@ -231,11 +231,11 @@ TEST_F(SceneTest, TorqueCapKeysOverrideTheGeomsWhereCondimHasThem) {
 
 TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   SimulationOptions options;
-  options.overrides.law = LawKind::kKelvinVoigt;
+  options.overrides.law = *ParseLawName("kelvin-voigt");
   options.overrides.restitution = 0.4;
   Simulation& sim = LoadScene("bouncing_ball.xml", options);
   const LawParams& p = sim.contact_model().pairs().at(0).params;
-  EXPECT_EQ(p.kind, LawKind::kKelvinVoigt);
+  EXPECT_EQ(p.kind, *ParseLawName("kelvin-voigt"));
   EXPECT_EQ(p.linear_stiffness, 5e6);
   EXPECT_EQ(p.restitution, 0.4);
 
@@ -264,7 +264,7 @@ TEST_F(SceneTest, TheHysteresisCoefficientIsResolvedWithThePairsParameters) {
   options.overrides = {};  // the tag's flores at e = 0.9: a = 8 (1 - e) / (5 e)
   const LawParams& flores =
       LoadScene("bouncing_ball.xml", options).contact_model().pairs()[0].params;
-  EXPECT_EQ(flores.hysteresis, HysteresisCoefficient(LawKind::kFlores, 0.9));
+  EXPECT_EQ(flores.hysteresis, HysteresisCoefficient(*ParseLawName("flores"), 0.9));
   EXPECT_NEAR(flores.hysteresis, 8 * 0.1 / (5 * 0.9), 1e-15);
 }
 

@@ -10,19 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "contactlaws/error.h"
+#include "scene/pair_tag_error.h"
 
 namespace contactlaws {
 namespace {
-
-// The message ParsePairTag throws for data, or "" when it accepts it.
-std::string PairTagError(const std::string& data) {
-  try {
-    ParsePairTag("s.xml", "contactlaw:t", data);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(TagsTest, APairTagIsReadWhole) {
   const PairTagSpec spec = ParsePairTag(
@@ -32,7 +23,7 @@ TEST(TagsTest, APairTagIsReadWhole) {
   EXPECT_EQ(spec.label, "ball-floor");
   EXPECT_EQ(spec.geom1, "ball");
   EXPECT_EQ(spec.geom2, "group:2");
-  EXPECT_EQ(spec.law, LawKind::kFlores);
+  EXPECT_EQ(spec.law, *ParseLawName("flores"));
   EXPECT_EQ(spec.restitution, 0.9);
   EXPECT_EQ(spec.stiffness, 1.4e8);
   EXPECT_EQ(spec.exponent, 1.5);

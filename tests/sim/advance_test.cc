@@ -80,7 +80,7 @@ TEST(ReferenceTest, IndependentIntegrationConvergesAndMatchesTheClosedForm) {
   // integrates to first order, measured 3.5e-6 in e_post; the others 1e-10),
   // and with gravity off it gives the closed-form rebound
   Drop drop;
-  for (LawKind law : testing::kPaperLaws) {
+  for (LawId law : testing::kPaperLaws) {
     const Reference a = IntegrateDrop(drop, law, 0.3);
     const Reference fine = IntegrateDrop(drop, law, 0.3, 40000);
     constexpr double kConverged = 1e-5;
@@ -89,11 +89,11 @@ TEST(ReferenceTest, IndependentIntegrationConvergesAndMatchesTheClosedForm) {
     EXPECT_NEAR(a.max_force / fine.max_force, 1.0, kConverged) << LawName(law);
     EXPECT_NEAR(a.contact_duration / fine.contact_duration, 1.0, kConverged) << LawName(law);
   }
-  const Reference a = IntegrateDrop(drop, LawKind::kFlores, 0.3);
+  const Reference a = IntegrateDrop(drop, *ParseLawName("flores"), 0.3);
   drop.gravity = 1e-9;  // effectively off; v0 comes from a fall at g
   drop.fall = 0.9 * 9.81 / drop.gravity;
-  const Reference b = IntegrateDrop(drop, LawKind::kFlores, 0.3);
-  EXPECT_NEAR(b.restitution_post, ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.3)),
+  const Reference b = IntegrateDrop(drop, *ParseLawName("flores"), 0.3);
+  EXPECT_NEAR(b.restitution_post, ExactRebound(HysteresisCoefficient(*ParseLawName("flores"), 0.3)),
               1e-7);
   EXPECT_GT(std::abs(a.restitution_post - b.restitution_post), 1e-4)
       << "gravity must matter at the measured size";
@@ -118,8 +118,8 @@ TEST(ReferenceTest, SweepAgreesWithTheIndependentIntegration) {
   const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";
   const Scene scene(path);
   const Drop drop;
-  std::map<LawKind, double> worst;  // largest e_post error per law, printed
-  for (LawKind law : testing::kPaperLaws) {
+  std::map<LawId, double> worst;  // largest e_post error per law, printed
+  for (LawId law : testing::kPaperLaws) {
     for (double e : kPaperSweep) {
       const Impact sim = SweepFirstImpact(scene, law, e, 1e-5);
       const Reference ref = IntegrateDrop(drop, law, e);

@@ -40,7 +40,7 @@ Errors SweepErrors(const Scene& scene, double accuracy) {
   Errors worst;
   AutoTimestepOptions options;
   options.accuracy = accuracy;
-  for (LawKind law : testing::kPaperLaws) {
+  for (LawId law : testing::kPaperLaws) {
     for (double e : testing::kPaperSweep) {
       const Reference r = IntegrateDrop(drop, law, e);
       long steps = 0;

@@ -44,8 +44,8 @@ TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSt
   const Drop drop;
   long fixed_steps = 0;
   long auto_steps = 0;
-  std::map<LawKind, double> worst;
-  for (LawKind law : testing::kPaperLaws) {
+  std::map<LawId, double> worst;
+  for (LawId law : testing::kPaperLaws) {
     for (double e : {0.1, 0.5, 0.9}) {
       const std::string what = fmt::format("{} e = {}", LawName(law), e);
       long steps = 0;
@@ -54,7 +54,7 @@ TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSt
       const Impact automatic =
           SweepFirstImpact(scene, law, e, std::nullopt, AutoTimestepOptions{}, &steps);
       auto_steps += steps;
-      const double tolerance = law == LawKind::kKelvinVoigt ? kKelvinVoigtRebound : kRebound;
+      const double tolerance = law == *ParseLawName("kelvin-voigt") ? kKelvinVoigtRebound : kRebound;
       const double error = std::abs(automatic.restitution_post() - fixed.restitution_post());
       worst[law] = std::max(worst[law], error);
       EXPECT_LT(error, tolerance) << what;
@@ -158,7 +158,7 @@ TEST(AutoTimestepTest, SpinCostsNoAccuracy) {
               R"(<keyframe><key qpos="0 0 1 1 0 0 0" qvel="0 0 0 30 20 0"/></keyframe><custom>)");
   xml.replace(xml.find("restitution=0.9"), 15, "restitution=0.5 friction=none");
   const Scene spinning("spin.xml", LoadModelString(xml, "spin.xml"));
-  for (const LawKind law : {LawKind::kFlores, LawKind::kHuntCrossley}) {
+  for (const LawId law : {*ParseLawName("flores"), *ParseLawName("hunt-crossley")}) {
     const Impact fixed = SweepFirstImpact(spinning, law, 0.5, 1e-5);
     const Impact automatic = SweepFirstImpact(spinning, law, 0.5, std::nullopt,
                                               AutoTimestepOptions{});

@@ -85,7 +85,7 @@ TEST_F(CradleTest, HertzKeepsMomentumAndEnergy) {
 // d'/v0 in the hundreds (v0 the touch speed of touching balls) it would lose
 // nearly all. Every chained contact is named in one warning line.
 TEST_F(CradleTest, ADissipativeLawKeepsMomentumAndLosesNoMoreThanItsRestitutionAllows) {
-  const double e_post = ExactRebound(HysteresisCoefficient(LawKind::kHuntCrossley, 0.9));
+  const double e_post = ExactRebound(HysteresisCoefficient(*ParseLawName("hunt-crossley"), 0.9));
   for (const int balls : {3, 5}) {
     Simulation& sim =
         MakeSimulation(CradleXml(balls, "law=hunt-crossley restitution=0.9 stiffness=1e7"));

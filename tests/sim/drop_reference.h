@@ -26,9 +26,9 @@ inline constexpr double kPaperSweep[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8,
 
 // The paper's five laws: the ones the independent integration below writes
 // out. The laws added since are held to the closed form (SweepTest).
-inline const std::vector<LawKind> kPaperLaws = {LawKind::kHertz, LawKind::kKelvinVoigt,
-                                                LawKind::kHuntCrossley,
-                                                LawKind::kLankaraniNikravesh, LawKind::kFlores};
+inline const std::vector<LawId> kPaperLaws = {*ParseLawName("hertz"), *ParseLawName("kelvin-voigt"),
+                                                *ParseLawName("hunt-crossley"),
+                                                *ParseLawName("lankarani-nikravesh"), *ParseLawName("flores")};
 
 // The sweep as `contactlaws restitution` runs it: a scene with options (the
 // overrides of one run), to the end of its first contact episode.
@@ -51,7 +51,7 @@ inline Impact SweepFirstImpact(const Scene& scene, const SimulationOptions& opti
 }
 
 // Each (law, e) of the sweep.
-inline Impact SweepFirstImpact(const Scene& scene, LawKind law, double e,
+inline Impact SweepFirstImpact(const Scene& scene, LawId law, double e,
                                std::optional<double> timestep = std::nullopt,
                                std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
                                long* steps = nullptr) {
@@ -86,27 +86,27 @@ struct Reference {
   double contact_duration = 0;
 };
 
-inline double ReferenceForce(const Drop& drop, LawKind law, double e, double v0, double d,
+inline double ReferenceForce(const Drop& drop, LawId law, double e, double v0, double d,
                       double rate) {
   // d = 0 is the first touch (the integration starts there, separation ends
   // it before any evaluation at d <= 0): Kelvin-Voigt's force is c v0 from it
   if (d < 0) return 0;
   double f = 0;
-  if (law == LawKind::kKelvinVoigt) {
+  if (law == *ParseLawName("kelvin-voigt")) {
     // c = 2 zeta sqrt(k m), zeta from e for a linear oscillator
     const double zeta = -std::log(e) / std::sqrt(M_PI * M_PI + std::log(e) * std::log(e));
     f = drop.linear_stiffness * d + 2 * zeta * std::sqrt(drop.linear_stiffness * drop.mass) * rate;
   } else {
     double a = 0;  // paper eqs. 44 (flores), Hunt-Crossley, Lankarani-Nikravesh
-    if (law == LawKind::kHuntCrossley) a = 1.5 * (1 - e);
-    if (law == LawKind::kLankaraniNikravesh) a = 0.75 * (1 - e * e);
-    if (law == LawKind::kFlores) a = 8 * (1 - e) / (5 * e);
+    if (law == *ParseLawName("hunt-crossley")) a = 1.5 * (1 - e);
+    if (law == *ParseLawName("lankarani-nikravesh")) a = 0.75 * (1 - e * e);
+    if (law == *ParseLawName("flores")) a = 8 * (1 - e) / (5 * e);
     f = drop.stiffness * std::pow(d, drop.exponent) * (1 + a * rate / v0);
   }
   return std::max(f, 0.0);
 }
 
-inline Reference IntegrateDrop(const Drop& drop, LawKind law, double e, int steps = 20000) {
+inline Reference IntegrateDrop(const Drop& drop, LawId law, double e, int steps = 20000) {
   Reference r;
   const double v0 = std::sqrt(2 * drop.gravity * drop.fall);
   r.impact_velocity = v0;

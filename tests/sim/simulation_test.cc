@@ -22,7 +22,7 @@ class PhysicsTest : public testing::MujocoTest {};
 constexpr double kStiffness = 1.4e8;  // the paper's K, N/m^1.5
 constexpr double kSpeed = 4.2;        // m/s, about the paper's 0.9 m fall
 
-std::string LawTag(LawKind law, double e) {
+std::string LawTag(LawId law, double e) {
   return fmt::format("law={} restitution={} stiffness={} exponent=1.5", LawName(law), e,
                      kStiffness);
 }
@@ -37,8 +37,8 @@ std::string LawTag(LawKind law, double e) {
 constexpr double kReboundTolerance = 2e-4;
 
 TEST_F(PhysicsTest, HertzFamilyReboundMatchesClosedForm) {
-  for (LawKind law : {LawKind::kHuntCrossley, LawKind::kLankaraniNikravesh,
-                      LawKind::kFlores}) {
+  for (LawId law : {*ParseLawName("hunt-crossley"), *ParseLawName("lankarani-nikravesh"),
+                      *ParseLawName("flores")}) {
     for (int tenths = 1; tenths <= 10; ++tenths) {
       const double e = tenths / 10.0;
       Simulation& sim = MakeSimulation(DropXml(LawTag(law, e), kSpeed));
@@ -58,7 +58,7 @@ TEST_F(PhysicsTest, HertzMaxDepthMatchesClosedForm) {
   // integrator's energy error near the turning point is ~1e-4 relative.
   constexpr double kDepthTolerance = 1e-3;  // relative
   for (double v : {0.5, 2.0, kSpeed}) {
-    Simulation& sim = MakeSimulation(DropXml(LawTag(LawKind::kHertz, 1.0), v));
+    Simulation& sim = MakeSimulation(DropXml(LawTag(*ParseLawName("hertz"), 1.0), v));
     const Impact impact = FirstImpact(sim);
     const double expected = std::pow(5 * 1.0 * v * v / (4 * kStiffness), 0.4);
     EXPECT_NEAR(impact.max_depth / expected, 1.0, kDepthTolerance) << "v = " << v;
@@ -89,7 +89,7 @@ TEST_F(LedgerTest, HertzConservesEnergy) {
   const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml";
   for (int integrator : {mjINT_RK4, mjINT_EULER}) {
     SimulationOptions options;
-    options.overrides.law = LawKind::kHertz;
+    options.overrides.law = *ParseLawName("hertz");
     options.integrator = integrator;
     Simulation sim(LoadModelFile(path), "bouncing_ball.xml", options);
     mj_forward(sim.model(), sim.data());
@@ -128,7 +128,7 @@ TEST_F(LedgerTest, DissipationMatchesTheKineticEnergyLost) {
   const double steps[2] = {1e-5, 1e-6};
   for (int i = 0; i < 2; ++i) {
     Simulation& sim =
-        MakeSimulation(DropXml(LawTag(LawKind::kFlores, 0.5), 2.0, "Euler", steps[i]));
+        MakeSimulation(DropXml(LawTag(*ParseLawName("flores"), 0.5), 2.0, "Euler", steps[i]));
     const Impact impact = FirstImpact(sim);
     sim.Step();  // one more step: the ledger's trapezoid reaches the separation
     mj_forward(sim.model(), sim.data());
@@ -164,7 +164,7 @@ class TwoSpheresTest : public testing::MujocoTest {
 
 TEST_F(TwoSpheresTest, MomentumAndPaperEquations13To15) {
   constexpr double m1 = 1, m2 = 3, v1 = 2, v2 = -1;
-  Simulation& sim = MakeSimulation(Xml(LawTag(LawKind::kFlores, 0.7)));
+  Simulation& sim = MakeSimulation(Xml(LawTag(*ParseLawName("flores"), 0.7)));
   const Impact impact = FirstImpact(sim);
   EXPECT_NEAR(impact.impact_velocity, v1 - v2, 1e-12);  // no force before touch
   const double* qvel = sim.data()->qvel;
@@ -174,7 +174,7 @@ TEST_F(TwoSpheresTest, MomentumAndPaperEquations13To15) {
   // eqs. 13-14 with c_r the measured rebound (tolerance as the rebound's,
   // times the velocities' scale 3 m/s)
   const double c = impact.restitution_post();
-  EXPECT_NEAR(c, ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.7)), 2e-4);
+  EXPECT_NEAR(c, ExactRebound(HysteresisCoefficient(*ParseLawName("flores"), 0.7)), 2e-4);
   EXPECT_NEAR(qvel[0], ((m1 - c * m2) * v1 + (1 + c) * m2 * v2) / (m1 + m2), 6e-4);
   EXPECT_NEAR(qvel[6], ((m2 - c * m1) * v2 + (1 + c) * m1 * v1) / (m1 + m2), 6e-4);
   // eq. 15: energy dissipated (ledger accurate to O(h / tau), see LedgerTest)
@@ -213,7 +213,7 @@ TEST_F(PhysicsTest, RungeKuttaEulerAndImplicitAgree) {
   // The memory is committed once per accepted step, so RK4's four hook
   // calls give the same physics. Tolerance: each integrator's own error,
   // <= 6e-5 for Euler (above), smaller for RK4.
-  for (LawKind law : {LawKind::kHuntCrossley, LawKind::kFlores}) {
+  for (LawId law : {*ParseLawName("hunt-crossley"), *ParseLawName("flores")}) {
     double e_post[3];
     const char* integrators[3] = {"Euler", "RK4", "implicit"};
     for (int i = 0; i < 3; ++i) {
@@ -241,7 +241,7 @@ TEST_F(PhysicsTest, MaterialStiffnessFromTheGeoms) {
   // and it acts: the rebound and the Hertz-family depth bound for that K
   const Impact impact = FirstImpact(sim);
   EXPECT_NEAR(impact.restitution_post(),
-              ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.8)), kReboundTolerance);
+              ExactRebound(HysteresisCoefficient(*ParseLawName("flores"), 0.8)), kReboundTolerance);
   EXPECT_LT(impact.max_depth, std::pow(5.0 / (4 * expected), 0.4));
   EXPECT_GT(impact.max_depth, 0.5 * std::pow(5.0 / (4 * expected), 0.4));
 }
@@ -264,7 +264,7 @@ TEST_F(PhysicsTest, GroupTagsCoverEveryPair) {
   while (sim.time() < 0.05) sim.Step();
   const std::vector<Impact>& impacts = sim.contacts().impacts();
   ASSERT_EQ(impacts.size(), 3u);
-  const double exact = ExactRebound(HysteresisCoefficient(LawKind::kHuntCrossley, 0.6));
+  const double exact = ExactRebound(HysteresisCoefficient(*ParseLawName("hunt-crossley"), 0.6));
   for (const Impact& impact : impacts) {
     EXPECT_FALSE(impact.open);
     EXPECT_NEAR(impact.restitution_post(), exact, kReboundTolerance);
@@ -293,7 +293,7 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   EXPECT_DOUBLE_EQ(sim.data()->qpos[2], 1.0);
   EXPECT_DOUBLE_EQ(m->opt.timestep, 1e-5);
   const GeomPair& pair = sim.contact_model().pairs().at(0);
-  EXPECT_EQ(pair.params.kind, LawKind::kFlores);
+  EXPECT_EQ(pair.params.kind, *ParseLawName("flores"));
   EXPECT_EQ(pair.params.restitution, 0.9);
   EXPECT_EQ(pair.params.stiffness, 1.4e8);
   EXPECT_EQ(pair.params.exponent, 1.5);
@@ -308,7 +308,7 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   // the Hertz duration 2.94 delta_max / v0 = 1.33 ms, lengthened by damping
   EXPECT_NEAR(tau, 1.3e-3, 0.2e-3);
   EXPECT_NEAR(impact.restitution_post(),
-              ExactRebound(HysteresisCoefficient(LawKind::kFlores, 0.9)),
+              ExactRebound(HysteresisCoefficient(*ParseLawName("flores"), 0.9)),
               9.81 * tau / impact.impact_velocity);
 }
 

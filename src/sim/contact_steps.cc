@@ -1,0 +1,44 @@
+// Copyright contactlaws authors.
+
+#include "sim/contact_steps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contactlaws/estimate.h"
+
+namespace contactlaws {
+
+ContactSteps::ContactSteps(double accuracy)
+    : ContactSteps(StepsPerContact(accuracy), KelvinVoigtStepsPerContact(accuracy)) {}
+
+double ContactSteps::PerContact(LawId law) const {
+  return Law(law).family == LawFamily::kLinear ? kelvin_voigt_ : hertz_family_;
+}
+
+PairSteps::PairSteps(const ContactModel& cm, const std::vector<double>& effective_mass,
+                     const ContactSteps& steps)
+    : steps_(steps) {
+  for (size_t p = 0; p < cm.pairs().size(); ++p) {
+    const LawParams& law = cm.pairs()[p].params;
+    law_.push_back(law.kind);
+    floor_.push_back(law.min_impact_velocity);
+    const double n = Law(law.kind).family == LawFamily::kLinear ? 1.0 : law.exponent;
+    duration_at_unit_speed_.push_back(ElasticContactDuration(law, effective_mass[p], 1.0));
+    duration_speed_exponent_.push_back((1 - n) / (1 + n));
+  }
+}
+
+double PairSteps::Duration(int pair, double v) const {
+  return duration_at_unit_speed_[pair] * std::pow(v, duration_speed_exponent_[pair]);
+}
+
+double PairSteps::Fine(int pair, double v) const {
+  return Duration(pair, std::max(v, floor_[pair])) / PerContact(pair);
+}
+
+double PairSteps::Settled(int pair) const {
+  return Duration(pair, floor_[pair]) / kSettledStepsPerContact;
+}
+
+}  // namespace contactlaws
