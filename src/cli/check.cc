@@ -11,6 +11,7 @@
 #include "cli/report.h"
 
 #include "cli/impact_csv.h"
+#include "sim/estimate.h"
 
 namespace contactlaws::cli {
 

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/kinematics.h"
-#include "contactlaws/visible_contacts.h"
+#include "mujoco/visible_contacts.h"
 #include "mujoco/hooks.h"
 #include "mujoco/narrowphase.h"
 

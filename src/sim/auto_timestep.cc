@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 #include "mujoco/damper_rate.h"
 #include "mujoco/hooks.h"
 #include "sim/reach_sweep.h"

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 
 #include <algorithm>
 #include <cmath>
