@@ -160,9 +160,11 @@ inline constexpr double kSettledTouchFactor = 10;
 // collision (a collision lasts one, its rebound included).
 inline constexpr double kSettledDurations = 3;
 
-class ReachSweep;  // src/sim/reach_sweep.h
-class DamperRate;
+namespace internal {
+class ReachSweep;              // src/sim/reach_sweep.h
+class DamperRate;              // src/mujoco/damper_rate.h
 enum class DamperDirection;
+}  // namespace internal
 
 class AutoTimestep {
  public:
@@ -210,7 +212,7 @@ class AutoTimestep {
   // The rate (1/s) of the dampers damping(e) (N s/m) at those points,
   // resisting direction's part of their relative velocity.
   template <typename Damping>
-  double DampersRate(mjData* d, size_t first, size_t end, DamperDirection direction,
+  double DampersRate(mjData* d, size_t first, size_t end, internal::DamperDirection direction,
                      const Damping& damping);
   // The bound of the flight step: the data's timestep (options()) when the
   // scene has dynamics of its own, the accuracy's under Euler or implicit.
@@ -258,11 +260,11 @@ class AutoTimestep {
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
   bool has_untagged_ = false;             // a pair MuJoCo's own contact handles exists
   double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
-  std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
+  std::unique_ptr<internal::ReachSweep> sweep_;     // the pairs near enough to matter
   std::vector<double> reach_;             // per geom, m (SetReach)
   // DampersRate's: the points' positions, normals and dampers, and its rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
-  std::unique_ptr<DamperRate> damper_rate_;
+  std::unique_ptr<internal::DamperRate> damper_rate_;
   bool settled_rule_ = false;             // rule 6: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;
