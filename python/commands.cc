@@ -13,6 +13,8 @@
 #include "cli/commands.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
+#include "sim/summary.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::python {
 namespace {

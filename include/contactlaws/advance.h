@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "contactlaws/auto_timestep.h"
-#include "contactlaws/contact_memory.h"
+#include "contactlaws/impact.h"
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {

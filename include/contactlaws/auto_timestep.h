@@ -163,8 +163,10 @@ inline constexpr double kSettledDurations = 3;
 
 class PairSteps;      // src/sim/contact_steps.h
 class ApproachSteps;  // src/sim/approach_steps.h
-class DamperRate;
+namespace internal {
+class DamperRate;     // src/mujoco/damper_rate.h
 enum class DamperDirection;
+}  // namespace internal
 
 class AutoTimestep {
  public:
@@ -208,7 +210,7 @@ class AutoTimestep {
   // The rate (1/s) of the dampers damping(e) (N s/m) at those points,
   // resisting direction's part of their relative velocity.
   template <typename Damping>
-  double DampersRate(mjData* d, size_t first, size_t end, DamperDirection direction,
+  double DampersRate(mjData* d, size_t first, size_t end, internal::DamperDirection direction,
                      const Damping& damping);
   // The bound of the flight step: the data's timestep (options()) when the
   // scene has dynamics of its own, the accuracy's under Euler or implicit.
@@ -225,7 +227,7 @@ class AutoTimestep {
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
   // DampersRate's: the points' positions, normals and dampers, and its rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
-  std::unique_ptr<DamperRate> damper_rate_;
+  std::unique_ptr<internal::DamperRate> damper_rate_;
   bool settled_rule_ = false;             // the settled contact's step: RK4 only
   double previous_ = 0;
   long fine_steps_ = 0;

@@ -1,32 +1,34 @@
 // Copyright contactlaws authors.
 //
-// Everything a program needs to use the contact laws with MuJoCo 2.2.
+// The installed API, in one include: the contact laws and friction models as
+// pure kernels, a tagged scene loaded and stepped with them (alone, in your
+// own loop, or with the auto timestep), and the identification of a scene's
+// parameters from measured trajectories. docs/library.md lists what each
+// header gives.
 
 #ifndef CONTACTLAWS_CONTACTLAWS_H_
 #define CONTACTLAWS_CONTACTLAWS_H_
 
-#include "contactlaws/advance.h"
-#include "contactlaws/auto_timestep.h"
-#include "contactlaws/contact_data.h"
-#include "contactlaws/contact_memory.h"
-#include "contactlaws/contact_model.h"
-#include "contactlaws/error.h"
-#include "contactlaws/estimate.h"
+// the kernels: plain numbers in, forces out
+#include "contactlaws/friction.h"
 #include "contactlaws/hertz.h"
 #include "contactlaws/hysteresis.h"
 #include "contactlaws/kelvin_voigt.h"
-#include "contactlaws/kinematics.h"
 #include "contactlaws/law.h"
+// a scene: its model, its tags, its data and runs
+#include "contactlaws/advance.h"
+#include "contactlaws/auto_timestep.h"
+#include "contactlaws/contact_data.h"
+#include "contactlaws/contact_model.h"
+#include "contactlaws/error.h"
+#include "contactlaws/impact.h"
 #include "contactlaws/model_io.h"
-#include "contactlaws/run_report.h"
-#include "contactlaws/settle.h"
+#include "contactlaws/point_evaluation.h"
 #include "contactlaws/simulation.h"
-#include "contactlaws/summary.h"
-#include "contactlaws/timestep_advice.h"
-#include "contactlaws/visible_contacts.h"
-#include "contactlaws/measured.h"
-#include "contactlaws/score.h"
-#include "contactlaws/replay.h"
+// identification
 #include "contactlaws/fit.h"
+#include "contactlaws/measured.h"
+#include "contactlaws/replay.h"
+#include "contactlaws/score.h"
 
 #endif  // CONTACTLAWS_CONTACTLAWS_H_

@@ -26,12 +26,14 @@
 #include "contactlaws/measured.h"
 #include "contactlaws/score.h"
 #include "contactlaws/simulation.h"
-#include "contactlaws/work_spread.h"
 
 namespace contactlaws {
 
 namespace internal {
 class Binding;  // ident/binding.h: the data's columns bound to the scene
+// ident/work_spread.h: work items spread over the processes of a cluster job
+// (the program's MPI ranks)
+class WorkSpread;
 }  // namespace internal
 
 // Where a trajectory's simulation starts.
@@ -90,8 +92,9 @@ struct ReplayOptions {
   std::optional<double> length;
   int jobs = 1;
   // Trajectories spread over processes too (each computes its share, every
-  // process gets every result); null: this process replays them all.
-  WorkSpread* spread = nullptr;
+  // process gets every result): the program's; null, as a library user
+  // leaves it: this process replays them all.
+  internal::WorkSpread* spread = nullptr;
   // Called between steps: true stops the replay (the trajectories not
   // finished are marked so).
   std::function<bool()> should_stop;

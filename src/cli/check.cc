@@ -11,6 +11,7 @@
 #include "cli/impact_csv.h"
 #include "cli/report.h"
 #include "sim/contact_steps.h"
+#include "sim/estimate.h"
 
 namespace contactlaws::cli {
 

@@ -9,7 +9,7 @@
 #ifndef CONTACTLAWS_CLI_CLUSTER_H_
 #define CONTACTLAWS_CLI_CLUSTER_H_
 
-#include "contactlaws/work_spread.h"
+#include "ident/work_spread.h"
 
 #include <cstdlib>
 

@@ -10,6 +10,8 @@
 #include "cli/impact_csv.h"
 #include "cli/report.h"
 #include "cli/sweep.h"
+#include "sim/summary.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 namespace {

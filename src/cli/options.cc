@@ -3,7 +3,12 @@
 #include "cli/options.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -36,6 +41,36 @@ double Number(std::string_view option, std::string_view text, std::string_view w
 }
 
 double Round12(double v) { return std::round(v * 1e12) / 1e12; }
+
+// --columns' words, in the order of the trajectory's column groups.
+constexpr std::array<const char*, 5> kColumnGroupNames = {"bodies", "joints", "pairs", "friction",
+                                                          "energy"};
+
+// "bodies,joints,pairs,friction,energy" (any of them, no repeats) as
+// ColumnGroups; nullopt, with the word at fault in *bad, for anything else.
+std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad) {
+  ColumnGroups groups{false, false, false, false, false};
+  const std::pair<const char*, bool ColumnGroups::*> names[] = {
+      {kColumnGroupNames[0], &ColumnGroups::bodies},
+      {kColumnGroupNames[1], &ColumnGroups::joints},
+      {kColumnGroupNames[2], &ColumnGroups::pairs},
+      {kColumnGroupNames[3], &ColumnGroups::friction},
+      {kColumnGroupNames[4], &ColumnGroups::energy}};
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    const std::string_view word = text.substr(start, end - start);
+    auto found = std::find_if(std::begin(names), std::end(names),
+                              [&](const auto& n) { return word == n.first; });
+    if (found == std::end(names) || groups.*found->second) {
+      *bad = std::string(word);
+      return std::nullopt;
+    }
+    groups.*found->second = true;
+    start = end + 1;
+  }
+  return groups;
+}
 
 }  // namespace
 

@@ -27,6 +27,7 @@
 #include "render/frame_sink.h"
 #include "render/tracking_camera.h"
 #include "scene/number.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "cli/cluster.h"
 #include "cli/mujoco_warnings.h"
+#include "sim/run_report.h"
 
 namespace contactlaws::cli {
 

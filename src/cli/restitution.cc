@@ -8,6 +8,7 @@
 #include "cli/impact_csv.h"
 #include "cli/report.h"
 #include "cli/sweep.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 namespace {

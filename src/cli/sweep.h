@@ -17,6 +17,8 @@
 #include "cli/impact_csv.h"
 #include "cli/options.h"
 #include "contactlaws/contactlaws.h"
+#include "sim/summary.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 

@@ -14,6 +14,8 @@
 
 #include "contactlaws/error.h"
 #include "ident/binding.h"
+#include "ident/work_spread.h"
+#include "sim/settle.h"
 
 namespace contactlaws {
 

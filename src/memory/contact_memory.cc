@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/contact_memory.h"
+#include "memory/contact_memory.h"
 
 #include <algorithm>
 #include <cmath>

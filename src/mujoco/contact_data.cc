@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 #include "mujoco/hook_session.h"
 #include "mujoco/hooks.h"
 #include "mujoco/point_evaluator.h"

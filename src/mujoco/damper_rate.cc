@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 using RowMatrix = Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -57,4 +57,4 @@ double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair,
   return std::max(w.solver.eigenvalues().maxCoeff(), 0.0);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

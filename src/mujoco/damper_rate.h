@@ -26,7 +26,7 @@
 
 #include "contactlaws/contact_model.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 // Which part of the points' relative velocity the dampers resist.
 enum class DamperDirection { kTangential, kNormal };
@@ -50,6 +50,6 @@ class DamperRate {
   std::unique_ptr<Workspace> w_;
 };
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_DAMPER_RATE_H_

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "contactlaws/friction.h"
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 
 namespace contactlaws {
 namespace {

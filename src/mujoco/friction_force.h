@@ -14,7 +14,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "contactlaws/contact_memory.h"
+#include "memory/contact_memory.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws {

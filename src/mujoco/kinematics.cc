@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 
 #include <limits>
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 #include "mujoco/friction_force.h"
 
 namespace contactlaws {

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 
 namespace contactlaws {
 namespace {

@@ -17,7 +17,7 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contact_data.h"
-#include "contactlaws/contact_memory.h"
+#include "memory/contact_memory.h"
 #include "contactlaws/contact_model.h"
 #include "mujoco/hook_session.h"
 #include "mujoco/step_start.h"

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/visible_contacts.h"
+#include "mujoco/visible_contacts.h"
 
 #include <cmath>
 #include <cstdio>

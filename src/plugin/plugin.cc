@@ -10,7 +10,7 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/law.h"
-#include "contactlaws/settle.h"
+#include "sim/settle.h"
 #include "contactlaws/simulation.h"
 #include "laws/param_range.h"
 #include "scene/number.h"

@@ -27,7 +27,7 @@
 #include "contactlaws/auto_timestep.h"
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
-#include "contactlaws/visible_contacts.h"
+#include "mujoco/visible_contacts.h"
 
 namespace contactlaws::plugin {
 

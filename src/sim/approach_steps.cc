@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "contactlaws/estimate.h"
-#include "contactlaws/kinematics.h"
+#include "sim/estimate.h"
+#include "mujoco/kinematics.h"
 #include "mujoco/hooks.h"
 #include "scene/model_queries.h"
 #include "sim/reach_sweep.h"
@@ -43,7 +43,7 @@ double TimeToClose(double g, double v, double a) {
 ApproachSteps::ApproachSteps(const ContactData& contacts, double gap_fraction)
     : contacts_(contacts),
       gap_fraction_(gap_fraction),
-      sweep_(std::make_unique<ReachSweep>(contacts.model().model())) {
+      sweep_(std::make_unique<internal::ReachSweep>(contacts.model().model())) {
   const ContactModel& cm = contacts.model();
   for (const GeomPair& pair : cm.pairs()) {
     top_acceleration_.push_back(DriveAcceleration(cm, pair.body));

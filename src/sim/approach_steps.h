@@ -19,7 +19,9 @@
 
 namespace contactlaws {
 
+namespace internal {
 class ReachSweep;  // sim/reach_sweep.h
+}  // namespace internal
 
 // The time in which a gap g (m, > 0) closes at speed v and acceleration a
 // (both closing when > 0); infinite when it never does.
@@ -77,7 +79,7 @@ class ApproachSteps {
   std::vector<double> top_acceleration_;  // of each pair's driven bodies, m/s^2
   bool has_untagged_ = false;
   double scene_step_ = 0;                 // s, the model's opt.timestep as it was given
-  std::unique_ptr<ReachSweep> sweep_;     // the pairs near enough to matter
+  std::unique_ptr<internal::ReachSweep> sweep_;     // the pairs near enough to matter
   std::vector<double> reach_;             // per geom, m (SetReach)
 };
 

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 #include "mujoco/damper_rate.h"
 #include "sim/approach_steps.h"
 #include "sim/contact_steps.h"
@@ -86,7 +86,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
     : contacts_(contacts),
       options_(options),
       approach_(std::make_unique<ApproachSteps>(contacts, options.gap_fraction)),
-      damper_rate_(std::make_unique<DamperRate>()) {
+      damper_rate_(std::make_unique<internal::DamperRate>()) {
   if (!(options.accuracy > 0 && options.accuracy <= kMaxAccuracy) || !(options.max_step > 0) ||
       !(options.steps_per_contact >= 0) || !(options.kelvin_voigt_steps_per_contact >= 0) ||
       !(options.gap_fraction > 0) || !(options.gap_fraction < 1) || !(options.growth >= 1)) {
@@ -156,7 +156,7 @@ double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   if (pair.friction.kind == FrictionKind::kNone) return kInfinity;
-  const double rate = DampersRate(d, first, end, DamperDirection::kTangential,
+  const double rate = DampersRate(d, first, end, internal::DamperDirection::kTangential,
                                   [&](const ContactData::Evaluation& e) {
     const double k = e.friction_state.stiffness;
     const double c = TangentialDamping(pair.friction, pair.params, State(e), k, pair.friction_mass);
@@ -167,7 +167,7 @@ double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
 
 double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end) {
   const LawParams& law = contacts_.model().pairs()[contacts_.latest()[first].pair].params;
-  const double rate = DampersRate(d, first, end, DamperDirection::kNormal,
+  const double rate = DampersRate(d, first, end, internal::DamperDirection::kNormal,
                                   [&](const ContactData::Evaluation& e) {
     return DampingCoefficient(law, State(e));
   });
@@ -175,7 +175,8 @@ double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end) {
 }
 
 template <typename Damping>
-double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end, DamperDirection direction,
+double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
+                                 internal::DamperDirection direction,
                                  const Damping& damping) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 
 namespace contactlaws {
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/contact_memory.h"
+#include "memory/contact_memory.h"
 #include "contactlaws/error.h"
 
 namespace contactlaws {

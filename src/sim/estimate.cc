@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/hertz.h"
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 #include "contactlaws/model_io.h"
 #include "mujoco/narrowphase.h"
 

@@ -2,7 +2,7 @@
 
 #include "sim/reach_sweep.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 ReachSweep::ReachSweep(const mjModel* m) : m_(m), lower_(m->ngeom), upper_(m->ngeom) {
   for (int g = 0; g < m->ngeom; ++g) (m->geom_rbound[g] > 0 ? order_ : unbounded_).push_back(g);
@@ -22,4 +22,4 @@ void ReachSweep::Sort(const mjData* d, const std::vector<double>& reach) {
   }
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

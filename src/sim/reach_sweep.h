@@ -16,7 +16,7 @@
 
 #include <mujoco/mujoco.h>
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class ReachSweep {
  public:
@@ -65,6 +65,6 @@ void ReachSweep::Overlaps(const mjData* d, const std::vector<double>& reach, Vis
   }
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_SIM_REACH_SWEEP_H_

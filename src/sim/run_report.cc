@@ -1,10 +1,10 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/run_report.h"
+#include "sim/run_report.h"
 
 #include <fmt/format.h>
 
-#include "contactlaws/timestep_advice.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws {
 namespace {

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/settle.h"
+#include "sim/settle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 #include "contactlaws/model_io.h"
 #include "contactlaws/simulation.h"
 #include "mujoco/narrowphase.h"

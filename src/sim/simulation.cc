@@ -2,15 +2,14 @@
 
 #include "contactlaws/simulation.h"
 
-#include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
+#include "sim/settle.h"
 
 namespace contactlaws {
 
@@ -220,30 +219,6 @@ void Simulation::Row(mjData* d, const std::vector<TagReading>& readings, double 
     e.dissipated = dissipated;
     row->insert(row->end(), {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
   }
-}
-
-std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad) {
-  ColumnGroups groups{false, false, false, false, false};
-  const std::pair<const char*, bool ColumnGroups::*> names[] = {
-      {kColumnGroupNames[0], &ColumnGroups::bodies},
-      {kColumnGroupNames[1], &ColumnGroups::joints},
-      {kColumnGroupNames[2], &ColumnGroups::pairs},
-      {kColumnGroupNames[3], &ColumnGroups::friction},
-      {kColumnGroupNames[4], &ColumnGroups::energy}};
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t end = std::min(text.find(',', start), text.size());
-    const std::string_view word = text.substr(start, end - start);
-    auto found = std::find_if(std::begin(names), std::end(names),
-                              [&](const auto& n) { return word == n.first; });
-    if (found == std::end(names) || groups.*found->second) {
-      *bad = std::string(word);
-      return std::nullopt;
-    }
-    groups.*found->second = true;
-    start = end + 1;
-  }
-  return groups;
 }
 
 bool Simulation::Undriven() const {

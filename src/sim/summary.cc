@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/summary.h"
+#include "sim/summary.h"
 
 #include <algorithm>
 #include <map>

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/timestep_advice.h"
+#include "sim/timestep_advice.h"
 
 #include <algorithm>
 #include <cmath>

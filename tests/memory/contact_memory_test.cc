@@ -3,7 +3,7 @@
 // Per-contact memory on its own (no MuJoCo): episodes opened, advanced and
 // closed, and the dissipation ledger, against values worked by hand.
 
-#include "contactlaws/contact_memory.h"
+#include "memory/contact_memory.h"
 
 #include <algorithm>
 #include <vector>

@@ -14,7 +14,7 @@
 
 #include "mujoco_test_util.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 class DamperRateTest : public testing::MujocoTest {
@@ -84,4 +84,4 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
 }
 
 }  // namespace
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

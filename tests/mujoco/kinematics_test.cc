@@ -3,7 +3,7 @@
 // The kinematics of the hooks: forces applied along the dof chain, driven
 // bodies exact at any time.
 
-#include "contactlaws/kinematics.h"
+#include "mujoco/kinematics.h"
 
 #include <cmath>
 #include <string>

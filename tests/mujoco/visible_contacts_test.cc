@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mujoco/visible_contacts.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {

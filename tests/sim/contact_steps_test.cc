@@ -12,6 +12,7 @@
 
 #include "contactlaws/contactlaws.h"
 #include "mujoco_test_util.h"
+#include "sim/estimate.h"
 
 namespace contactlaws {
 namespace {

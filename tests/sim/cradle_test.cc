@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "contactlaws/hysteresis.h"
-#include "contactlaws/run_report.h"
+#include "sim/run_report.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {

@@ -2,7 +2,7 @@
 //
 // The contact estimates against the simulated contact and closed forms.
 
-#include "contactlaws/estimate.h"
+#include "sim/estimate.h"
 
 #include <cmath>
 

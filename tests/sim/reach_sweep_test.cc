@@ -19,7 +19,7 @@
 
 #include "contactlaws/contactlaws.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 TEST(ReachSweepTest, VisitsExactlyThePairsWhoseGrownSpheresOverlap) {
@@ -72,4 +72,4 @@ TEST(ReachSweepTest, VisitsExactlyThePairsWhoseGrownSpheresOverlap) {
 }
 
 }  // namespace
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

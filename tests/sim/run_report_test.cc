@@ -3,7 +3,7 @@
 // ChainedContactWarnings: a pulse through touching bodies is named, once per
 // tag; bodies placed touching that settle into their contacts are not.
 
-#include "contactlaws/run_report.h"
+#include "sim/run_report.h"
 
 #include <string>
 #include <vector>

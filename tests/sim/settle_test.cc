@@ -4,7 +4,7 @@
 // contacts (positions only), or are refused in one line; settled, they stay
 // at rest under the auto timestep.
 
-#include "contactlaws/settle.h"
+#include "sim/settle.h"
 
 #include <cmath>
 #include <string>

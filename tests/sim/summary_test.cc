@@ -2,7 +2,7 @@
 //
 // Run summaries computed by hand.
 
-#include "contactlaws/summary.h"
+#include "sim/summary.h"
 
 #include <vector>
 

@@ -6,8 +6,8 @@
 // program chooses the transport (MPI in src/cli/cluster_mpi.cc). Inside a
 // process, items are still spread over threads (ReplayOptions::jobs).
 
-#ifndef CONTACTLAWS_WORK_SPREAD_H_
-#define CONTACTLAWS_WORK_SPREAD_H_
+#ifndef CONTACTLAWS_IDENT_WORK_SPREAD_H_
+#define CONTACTLAWS_IDENT_WORK_SPREAD_H_
 
 #include <time.h>
 
@@ -15,7 +15,9 @@
 #include <vector>
 
 namespace contactlaws {
+namespace internal {
 
+// Declared in replay.h (ReplayOptions::spread), implemented by the program.
 class WorkSpread {
  public:
   virtual ~WorkSpread() = default;
@@ -39,6 +41,12 @@ inline double ThreadSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+}  // namespace internal
+
+// The names the program's own code (the ranks of src/cli/cluster*) uses.
+using internal::ThreadSeconds;
+using internal::WorkSpread;
+
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_WORK_SPREAD_H_
+#endif  // CONTACTLAWS_IDENT_WORK_SPREAD_H_

@@ -3,14 +3,14 @@
 // Whether a scene's timestep resolves its contacts, said before a run, and the
 // likely cause of a run that diverged.
 
-#ifndef CONTACTLAWS_TIMESTEP_ADVICE_H_
-#define CONTACTLAWS_TIMESTEP_ADVICE_H_
+#ifndef CONTACTLAWS_SIM_TIMESTEP_ADVICE_H_
+#define CONTACTLAWS_SIM_TIMESTEP_ADVICE_H_
 
 #include <string>
 #include <vector>
 
-#include "contactlaws/contact_memory.h"
-#include "contactlaws/estimate.h"
+#include "memory/contact_memory.h"
+#include "sim/estimate.h"
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {
@@ -64,4 +64,4 @@ std::string PairName(const Simulation& sim, int pair_index);
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_TIMESTEP_ADVICE_H_
+#endif  // CONTACTLAWS_SIM_TIMESTEP_ADVICE_H_

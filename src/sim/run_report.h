@@ -2,8 +2,8 @@
 //
 // What a finished run has to say about its contacts beyond the impact log.
 
-#ifndef CONTACTLAWS_RUN_REPORT_H_
-#define CONTACTLAWS_RUN_REPORT_H_
+#ifndef CONTACTLAWS_SIM_RUN_REPORT_H_
+#define CONTACTLAWS_SIM_RUN_REPORT_H_
 
 #include <string>
 #include <vector>
@@ -21,4 +21,4 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim);
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_RUN_REPORT_H_
+#endif  // CONTACTLAWS_SIM_RUN_REPORT_H_

@@ -4,8 +4,8 @@
 // how many impacts, the first impact's post-restitution (eq. 46), its depth,
 // force and duration, and when the bodies came to rest.
 
-#ifndef CONTACTLAWS_SUMMARY_H_
-#define CONTACTLAWS_SUMMARY_H_
+#ifndef CONTACTLAWS_SIM_SUMMARY_H_
+#define CONTACTLAWS_SIM_SUMMARY_H_
 
 #include <optional>
 #include <vector>
@@ -41,4 +41,4 @@ RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time);
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_SUMMARY_H_
+#endif  // CONTACTLAWS_SIM_SUMMARY_H_

@@ -18,14 +18,12 @@
 // sliding at the end, or the relaxation not converging within
 // kSettleDuration): Settle refuses in one line.
 
-#ifndef CONTACTLAWS_SETTLE_H_
-#define CONTACTLAWS_SETTLE_H_
+#ifndef CONTACTLAWS_SIM_SETTLE_H_
+#define CONTACTLAWS_SIM_SETTLE_H_
 
-#include <string>
+#include "contactlaws/simulation.h"
 
 namespace contactlaws {
-
-class Simulation;
 
 // Two tagged geoms this close (m) at the scene's positions are placed
 // touching: a placement written to the micrometre, or exactly at d = 0,
@@ -38,17 +36,6 @@ inline constexpr double kSettleResidual = 1e-5;
 // The relaxation gives up after this much simulated time, s.
 inline constexpr double kSettleDuration = 5.0;
 
-// What Settle did.
-struct SettleReport {
-  int bodies = 0;          // moved: the bodies in contact at the start
-  std::string body;        // the one moved farthest ("" when none)
-  double distance = 0;     // m, how far it moved
-  double angle = 0;        // rad, the largest turn of any of them
-  double relaxation = 0;   // s of relaxation taken
-  // "settled 3 bodies: the farthest, box2, by 2.1e-05 m (turns <= 1e-9 rad)"
-  std::string Line() const;
-};
-
 // Moves sim's bodies in contact at its current state into their static
 // equilibrium (positions only; sim's data is left there with zero
 // velocities and the contact memory as the relaxation left it: Simulation
@@ -58,4 +45,4 @@ SettleReport Settle(Simulation* sim);
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_SETTLE_H_
+#endif  // CONTACTLAWS_SIM_SETTLE_H_

@@ -12,8 +12,8 @@
 // mj_collision (the next mj_step or mj_forward) clears them with the rest of
 // the list.
 
-#ifndef CONTACTLAWS_VISIBLE_CONTACTS_H_
-#define CONTACTLAWS_VISIBLE_CONTACTS_H_
+#ifndef CONTACTLAWS_MUJOCO_VISIBLE_CONTACTS_H_
+#define CONTACTLAWS_MUJOCO_VISIBLE_CONTACTS_H_
 
 #include <mujoco/mujoco.h>
 
@@ -31,4 +31,4 @@ int AppendVisibleContacts(const ContactData& contacts, mjData* d,
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_VISIBLE_CONTACTS_H_
+#endif  // CONTACTLAWS_MUJOCO_VISIBLE_CONTACTS_H_

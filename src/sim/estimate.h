@@ -4,8 +4,8 @@
 // last, and the timestep that resolves it. `contactlaws check` prints these;
 // they are estimates from the elastic part of the law, stated as such.
 
-#ifndef CONTACTLAWS_ESTIMATE_H_
-#define CONTACTLAWS_ESTIMATE_H_
+#ifndef CONTACTLAWS_SIM_ESTIMATE_H_
+#define CONTACTLAWS_SIM_ESTIMATE_H_
 
 #include <array>
 #include <limits>
@@ -146,4 +146,4 @@ RestingEstimate EstimateResting(const ContactModel& model, int pair,
 
 }  // namespace contactlaws
 
-#endif  // CONTACTLAWS_ESTIMATE_H_
+#endif  // CONTACTLAWS_SIM_ESTIMATE_H_
