@@ -1,11 +1,13 @@
 // Copyright contactlaws authors.
 //
-// cluster.h with MPI. The first time a count of items is spread, item k goes
-// to rank k mod ranks; every exchange then hands out every rank the seconds
-// each item took, and the next spread of that count gives the items, longest
-// first, each to the rank with the least work so far (the cost of a
-// trajectory changes little from one evaluation of a fit to the next). Every
-// rank computes the same plan from the same seconds: no message decides it.
+// cluster.h with MPI. The first time a count of items is spread, the items
+// go longest first by their expected cost (Expect), each to the rank with the
+// least work so far, or in turn (item k to rank k mod ranks) when none is
+// expected; every exchange then hands out every rank the seconds each item
+// took, and the next spread of that count is planned from them alike (the
+// cost of a trajectory changes little from one evaluation of a fit to the
+// next). Every rank computes the same plan from the same costs: no message
+// decides it.
 // Results are exchanged by two allgathers, so every rank holds every result
 // and the reductions that follow run in item order on each: the same bits
 // whatever the ranks and whoever computed what.
@@ -87,6 +89,11 @@ struct Timing {
 
 class MpiSpread final : public WorkSpread {
  public:
+  void Expect(const std::vector<double>& cost) override {
+    const int count = static_cast<int>(cost.size());
+    if (plans_.find(count) == plans_.end()) plans_[count] = LongestFirst(cost, Size());
+  }
+
   bool Mine(int k, int count) const override { return Owner(k, count) == Rank(); }
 
   void Share(std::vector<std::string>* items, const std::vector<double>& seconds) override {
