@@ -132,30 +132,47 @@ held = [str(k) for k in range(len(cost)) if owner[k] == 1]
 print(",".join(held[:20]) + (",..." if len(held) > 20 else ""))
 PLAN
 )"
-status=0
-mpirun --oversubscribe -np 2 "$cli" replay "$scene" --start first --timestep 6.756756756756757e-4 \
-  --data "$tmp/all.csv" --jobs 1 --output "$tmp/killed" \
-  > /dev/null 2> "$tmp/killed.err" &
-launcher=$!
-# once both ranks run and catch SIGTERM (their stop handler is set; the 300
-# tosses then take each rank more than a second): the one started last
 catches_sigterm() {  # PID: bit 15 of its caught-signal mask
   local mask
   mask="$(awk '/^SigCgt:/ {print $2}' "/proc/$1/status" 2> /dev/null)"
   [ -n "$mask" ] && (( (16#$mask >> 14) & 1 ))
 }
-for _ in $(seq 300); do
-  ranks=($(pgrep -P "$launcher" -f "$cli" || true))
-  if [ "${#ranks[@]}" -ge 2 ] && catches_sigterm "${ranks[0]}" && catches_sigterm "${ranks[1]}"; then
-    break
-  fi
-  sleep 0.05
+# killed at once (most likely while MPI_Init runs beside the reading: rank 0
+# names every other rank) and 0.8 s later (computing: rank 0 names the
+# rank that did not arrive); the 300 tosses take each rank over a second
+for delay in 0 0.8; do
+  status=0
+  mpirun --oversubscribe -np 2 "$cli" replay "$scene" --start first \
+    --timestep 6.756756756756757e-4 --data "$tmp/all.csv" --jobs 1 --output "$tmp/killed" \
+    > /dev/null 2> "$tmp/killed.err" &
+  launcher=$!
+  # once both ranks run and catch SIGTERM (their stop handler is set): the
+  # one started last
+  for _ in $(seq 300); do
+    ranks=($(pgrep -P "$launcher" -f "$cli" || true))
+    if [ "${#ranks[@]}" -ge 2 ] && catches_sigterm "${ranks[0]}" && catches_sigterm "${ranks[1]}"; then
+      break
+    fi
+    sleep 0.05
+  done
+  sleep "$delay"
+  kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
+  wait "$launcher" || status=$?
+  [ "$status" -ne 0 ] || fail "a rank killed after ${delay} s left exit status 0"
+  [ "$(grep -cF "contactlaws: exchange 1: rank 1 (items $held of 300) did not arrive" \
+       "$tmp/killed.err")" = 1 ] ||
+    fail "killed after ${delay} s: not one line names rank 1 and its items: $(cat "$tmp/killed.err")"
+  [ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
+  ls "$tmp/killed" | grep -q tmp && fail "a killed job left a .tmp file"
 done
-kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
-wait "$launcher" || status=$?
-[ "$status" -ne 0 ] || fail "a killed rank left exit status 0"
-[ "$(grep -cF "contactlaws: exchange 1: rank 1 (items $held of 300) did not arrive" \
-     "$tmp/killed.err")" = 1 ] || fail "not one line names rank 1 and its items: $(cat "$tmp/killed.err")"
-[ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
-ls "$tmp/killed" | grep -q tmp && fail "a killed job left a .tmp file"
+
+# the launcher's count of ranks (read before MPI_Init returns) against MPI's:
+# one line, the job ended
+status=0
+mpi 2 env OMPI_COMM_WORLD_SIZE=3 "$cli" "${replay[@]}" --data "$tmp/two.csv" --jobs 1 \
+  > /dev/null 2> "$tmp/size.err" || status=$?
+[ "$status" -ne 0 ] || fail "a wrong OMPI_COMM_WORLD_SIZE left exit status 0"
+[ "$(grep -c "^contactlaws: the launcher gives" "$tmp/size.err")" = 1 ] &&
+  grep -q "^contactlaws: the launcher gives rank 0 of 3 (OMPI_COMM_WORLD_RANK), MPI rank 0 of 2$" \
+  "$tmp/size.err" || fail "no line for a wrong OMPI_COMM_WORLD_SIZE: $(cat "$tmp/size.err")"
 echo "mpi_test: ok"
