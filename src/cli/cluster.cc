@@ -9,7 +9,7 @@
 
 namespace contactlaws::cli {
 
-bool JoinCluster(int*, char***) {
+bool JoinCluster() {
   if (const char* rank = LauncherRankVariable()) {
     fmt::print(stderr,
                "contactlaws: launched by mpirun ({} is set) but built without MPI: "

@@ -24,10 +24,11 @@ inline const char* LauncherRankVariable() {
   return nullptr;
 }
 
-// Joins the job (MPI_Init) and, on ranks other than 0, sends standard output
-// to /dev/null. Returns false, having printed one line, when the program was
-// launched by mpirun but built without MPI.
-bool JoinCluster(int* argc, char*** argv);
+// Joins the job (MPI_Init, on a thread of its own: the command goes on
+// meanwhile) and, on ranks other than 0, sends standard output to /dev/null.
+// Returns false, having printed one line, when the program was launched by
+// mpirun but built without MPI.
+bool JoinCluster();
 // The threads each rank runs (--jobs), for the timing line.
 void SetThreadsPerRank(int jobs);
 // Leaves the job (MPI_Finalize) once every rank leaves. An exit_code other

@@ -1,11 +1,15 @@
 // Copyright contactlaws authors.
 //
-// cluster.h with MPI. The first time a count of items is spread, item k goes
-// to rank k mod ranks; every exchange then hands out every rank the seconds
-// each item took, and the next spread of that count gives the items, longest
-// first, each to the rank with the least work so far (the cost of a
-// trajectory changes little from one evaluation of a fit to the next). Every
-// rank computes the same plan from the same seconds: no message decides it.
+// cluster.h with MPI. The first time a count of items is spread, the items
+// go longest first by their expected cost (Expect), each to the rank with the
+// least work so far, or in turn (item k to rank k mod ranks) when none is
+// expected; every exchange then hands out every rank the seconds each item
+// took, and the next spread of that count is planned from them alike (the
+// cost of a trajectory changes little from one evaluation of a fit to the
+// next). Every rank computes the same plan from the same costs: no message
+// decides it.
+// MPI_Init runs on a thread of its own, beside the command's reading and first
+// items (the rank and ranks from the launcher's environment, checked later).
 // Results are exchanged by two allgathers, so every rank holds every result
 // and the reductions that follow run in item order on each: the same bits
 // whatever the ranks and whoever computed what.
@@ -14,11 +18,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <mutex>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -27,21 +34,118 @@
 #include "cli/cluster.h"
 #include "cli/commands.h"
 #include "contactlaws/error.h"
+#include "scene/number.h"
 
 namespace contactlaws::cli {
 namespace {
 
-int Rank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
+// How long rank 0 waits, once a stop came, for the ranks that have not
+// reached an exchange, s: a stopped rank arrives within a step of a
+// rollout; mpirun kills every rank 1 s after its SIGTERM
+// (odls_base_sigkill_timeout), and rank 0 must name the missing ranks first.
+constexpr double kGrace = 0.5;
+
+// MPI's own thread: MPI_Init_thread and, once told, MPI_Finalize (the
+// standard asks both of one thread). Between the two, the main thread makes
+// every other call, one at a time (MPI_THREAD_SERIALIZED).
+class MpiThread {
+ public:
+  void Start() {
+    thread_ = std::thread([this] {
+      int provided = 0;
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+      std::unique_lock<std::mutex> lock(mutex_);
+      provided_ = provided;
+      initialized_ = true;
+      changed_.notify_all();
+      changed_.wait(lock, [this] { return finalize_; });
+      MPI_Finalize();
+    });
+  }
+  // Waits for MPI_Init: the thread level MPI provides, or nothing when a
+  // stop came (Ctrl-C, or mpirun ending the job because a rank died before
+  // joining it) and MPI_Init had not returned kGrace later.
+  std::optional<int> AwaitInit() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    std::optional<std::chrono::steady_clock::time_point> stopped_at;
+    const auto initialized = [this] { return initialized_; };
+    while (!changed_.wait_for(lock, std::chrono::milliseconds(20), initialized)) {
+      if (!stop_signal.load(std::memory_order_relaxed)) continue;
+      const auto now = std::chrono::steady_clock::now();
+      if (!stopped_at) stopped_at = now;
+      if (now - *stopped_at > std::chrono::duration<double>(kGrace)) return std::nullopt;
+    }
+    return provided_;
+  }
+  void Finalize() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    finalize_ = true;
+    lock.unlock();
+    changed_.notify_all();
+    thread_.join();
+  }
+
+ private:
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool initialized_ = false;
+  bool finalize_ = false;
+  int provided_ = 0;
+};
+
+MpiThread mpi_thread;
+bool joined = false;     // launched as a rank of a job
+bool mpi_ready = false;  // MPI_Init returned and was checked
+int rank = 0;            // from the launcher's environment
+int size = 0;            // from the launcher's environment; 0 until known
+const char* size_variable = nullptr;
+
+// This rank, and the ranks when the launcher's environment gives them
+// beside it (srun's PMIx gives only the rank), as MPI_Init will.
+void ReadLaunch(const char* rank_variable) {
+  rank = static_cast<int>(ParseWholeNumber(std::getenv(rank_variable), 0, 1 << 30).value_or(-1));
+  const char* sizes[][2] = {{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"},
+                            {"PMI_RANK", "PMI_SIZE"}};
+  for (const auto& [r, s] : sizes) {
+    if (std::string(r) != rank_variable || !std::getenv(s)) continue;
+    size_variable = s;
+    size = static_cast<int>(ParseWholeNumber(std::getenv(s), 1, 1 << 30).value_or(0));
+  }
 }
 
-int Size() {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
+// Waits for MPI_Init (on the main thread, before any other MPI call), and
+// ends the job in one line if MPI's world is not the launcher's. False when
+// the job was stopped before MPI_Init returned (MpiThread::AwaitInit).
+bool AwaitMpi() {
+  if (mpi_ready) return true;
+  const std::optional<int> provided = mpi_thread.AwaitInit();
+  if (!provided) return false;
+  mpi_ready = true;
+  int mpi_rank = 0, mpi_size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &mpi_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &mpi_size);
+  std::string wrong;
+  if (*provided < MPI_THREAD_SERIALIZED) {
+    wrong = fmt::format("MPI provides thread level {}, below MPI_THREAD_SERIALIZED (MPI_Init "
+                        "runs on a thread of its own)", *provided);
+  } else if (mpi_rank != rank || (size_variable && mpi_size != size)) {
+    wrong = fmt::format("the launcher gives rank {} of {} ({}), MPI rank {} of {}", rank,
+                        size_variable ? std::to_string(size) : "?", LauncherRankVariable(),
+                        mpi_rank, mpi_size);
+  }
+  if (!wrong.empty()) {
+    // what every rank sees alike, rank 0 alone says
+    if (mpi_rank == 0 || mpi_rank != rank) fmt::print(stderr, "contactlaws: {}\n", wrong);
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, kExitRefused);
+  }
+  size = mpi_size;
+  return true;
 }
+
+int Rank() { return rank; }
+int Size() { return size; }  // known before any item is spread (ClusterSpread)
 
 // Each item's rank: longest first, to the rank with the least seconds so far
 // (the lowest rank on a tie), which is within 4/3 of the best balance
@@ -60,12 +164,6 @@ std::vector<int> LongestFirst(const std::vector<double>& seconds, int ranks) {
   }
   return owner;
 }
-
-// How long rank 0 waits, once a stop came, for the ranks that have not
-// reached an exchange, s: a stopped rank arrives within a step of a
-// rollout; mpirun kills every rank 1 s after its SIGTERM
-// (odls_base_sigkill_timeout), and rank 0 must name the missing ranks first.
-constexpr double kGrace = 0.5;
 
 // Items as "1,3,5" (at most 20, then "...").
 std::string ItemList(const std::vector<int>& items) {
@@ -87,10 +185,20 @@ struct Timing {
 
 class MpiSpread final : public WorkSpread {
  public:
+  void Expect(const std::vector<double>& cost) override {
+    const int count = static_cast<int>(cost.size());
+    if (plans_.find(count) == plans_.end()) plans_[count] = LongestFirst(cost, Size());
+  }
+
   bool Mine(int k, int count) const override { return Owner(k, count) == Rank(); }
 
   void Share(std::vector<std::string>* items, const std::vector<double>& seconds) override {
     const int count = static_cast<int>(items->size());
+    if (!AwaitMpi()) {
+      // rank 0 alone tells the job's end, and cannot know which ranks joined
+      if (Rank() != 0) std::_Exit(kExitInterrupted);
+      throw Error(Missing(count, nullptr));
+    }
     // this rank's items: [seconds][length][bytes], in item order
     std::string mine;
     for (int k = 0; k < count; ++k) {
@@ -169,12 +277,13 @@ class MpiSpread final : public WorkSpread {
   }
 
   // "exchange 2: rank 1 (items 1,3 of 4) did not arrive ...", naming each
-  // rank whose arrival is still pending; empty when none is.
+  // rank whose arrival is still pending (every other rank when the job was
+  // stopped before MPI_Init returned: arrivals null); empty when none is.
   std::string Missing(int count, std::vector<MPI_Request>* arrivals) const {
     std::string ranks;
     for (int r = 1; r < Size(); ++r) {
       int arrived = 0;
-      MPI_Test(&(*arrivals)[r], &arrived, MPI_STATUS_IGNORE);
+      if (arrivals) MPI_Test(&(*arrivals)[r], &arrived, MPI_STATUS_IGNORE);
       if (arrived) continue;
       std::vector<int> held;
       for (int k = 0; k < count; ++k) {
@@ -185,8 +294,9 @@ class MpiSpread final : public WorkSpread {
     }
     if (ranks.empty()) return ranks;
     return fmt::format("exchange {}: {} did not arrive after the stop (died, or ended by "
-                       "mpirun); items count from 0 in input order, nothing written",
-                       static_cast<long>(timing_.exchanges) + 1, ranks);
+                       "mpirun{}); items count from 0 in input order, nothing written",
+                       static_cast<long>(timing_.exchanges) + 1, ranks,
+                       arrivals ? "" : ", before MPI_Init returned");
   }
 
   int Owner(int k, int count) const {
@@ -204,9 +314,8 @@ MpiSpread& TheSpread() {
 }
 
 bool spread_used = false;  // the command spread its work (and reports its timing)
-bool joined = false;
 int threads_per_rank = 1;
-double joined_at = 0;
+std::chrono::steady_clock::time_point joined_at;
 
 // Rank 0's timing line on stderr: every rank's times, gathered.
 void PrintTiming() {
@@ -229,21 +338,23 @@ void PrintTiming() {
              "contactlaws: timing: {} ranks x {} thread{}, wall {:.3f} s; busy (CPU) per rank "
              "min {:.3f} mean {:.3f} max {:.3f} s (max/mean {:.3f}); waiting for the slowest "
              "{:.3f} s (rank mean); exchange {:.6f} s in {} allgathers\n",
-             size, threads_per_rank, threads_per_rank == 1 ? "" : "s", MPI_Wtime() - joined_at,
+             size, threads_per_rank, threads_per_rank == 1 ? "" : "s",
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - joined_at).count(),
              busy_min, busy_mean, busy_max, busy_mean > 0 ? busy_max / busy_mean : 1.0,
              waiting / size, all[2], static_cast<long>(all[3]));
 }
 
 }  // namespace
 
-bool JoinCluster(int* argc, char*** argv) {
+bool JoinCluster() {
   // launched alone: the only process, without MPI's start-up
-  if (!LauncherRankVariable()) return true;
-  int provided = 0;
-  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  const char* rank_variable = LauncherRankVariable();
+  if (!rank_variable) return true;
+  joined_at = std::chrono::steady_clock::now();
   joined = true;
-  joined_at = MPI_Wtime();
+  ReadLaunch(rank_variable);
   if (Rank() != 0) std::freopen("/dev/null", "w", stdout);
+  mpi_thread.Start();
   return true;
 }
 
@@ -251,6 +362,12 @@ void SetThreadsPerRank(int jobs) { threads_per_rank = std::max(1, jobs); }
 
 void LeaveCluster(int exit_code) {
   if (!joined) return;
+  if (!AwaitMpi()) {
+    // stopped before MPI_Init returned: no MPI call can end this rank
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::_Exit(exit_code ? exit_code : kExitInterrupted);
+  }
   // an incomplete or interrupted run is known to every rank alike (every
   // rank holds every result and status); any other failure may be this
   // rank's alone
@@ -264,11 +381,14 @@ void LeaveCluster(int exit_code) {
   // rank exits non-zero
   MPI_Barrier(MPI_COMM_WORLD);
   if (spread_used) PrintTiming();
-  MPI_Finalize();
+  mpi_thread.Finalize();
 }
 
 WorkSpread* ClusterSpread() {
-  if (!joined || Size() == 1) return nullptr;
+  if (!joined) return nullptr;
+  // the launcher does not say how many ranks
+  if (!size_variable && !AwaitMpi()) throw Error("stopped before MPI_Init returned");
+  if (Size() == 1) return nullptr;
   spread_used = true;
   return &TheSpread();
 }

@@ -419,7 +419,7 @@ int Main(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace contactlaws::cli;
-  if (!JoinCluster(&argc, &argv)) return kExitRefused;
+  if (!JoinCluster()) return kExitRefused;
   const int status = Main(argc, argv);
   LeaveCluster(status);
   return status;

@@ -267,6 +267,15 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   const int count = static_cast<int>(data_.trajectories.size());
   std::vector<ReplayedTrajectory> results(count);
   std::vector<double> seconds(count);  // each rollout's, for the spread's balance
+  if (options.spread) {
+    // a rollout's cost before it is measured: its simulated duration
+    std::vector<double> duration(count);
+    for (int i = 0; i < count; ++i) {
+      const std::vector<double>& time = data_.trajectories[i].time;
+      duration[i] = time.back() - time[StartSample(i, options)];
+    }
+    options.spread->Expect(duration);
+  }
   // the first rollout on this thread: the tags are checked (and refused) here
   Rollout first(*this, options);
   const int threads = std::max(1, std::min(options.jobs, count));

@@ -21,6 +21,11 @@ namespace internal {
 class WorkSpread {
  public:
   virtual ~WorkSpread() = default;
+  // The expected cost of each item of the next spread of cost.size() items
+  // (any unit, the same on every process), known before any is computed:
+  // a first spread hands the items out by it, longest first, rather than in
+  // turn. The seconds of an earlier Share of the same count take precedence.
+  virtual void Expect(const std::vector<double>& cost) = 0;
   // Whether this process computes item k of count.
   virtual bool Mine(int k, int count) const = 0;
   // items and seconds have one entry per item; this process's entries hold

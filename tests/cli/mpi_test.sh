@@ -74,10 +74,10 @@ grep -v "^contactlaws: timing: " "$tmp/two_np3.err" &&
   fail "idle ranks wrote: $(cat "$tmp/two_np3.err")"
 
 # fit: 2 and 3 ranks give the fit of 1, to the bit (every file it writes),
-# the trajectories of every evaluation after the first handed out by the
-# last one's costs (five tosses on 3 ranks: with costs as their samples,
-# 109 108 101 104 99, longest first puts 0 | 1,4 | 2,3 against k mod 3's
-# 0,3 | 1,4 | 2)
+# the trajectories of the first evaluation handed out by their durations,
+# of every later one by the last one's seconds (five tosses on 3 ranks: with
+# costs as their samples, 109 108 101 104 99, longest first puts 0 | 1,4 |
+# 2,3 against k mod 3's 0,3 | 1,4 | 2)
 fit=(fit "$scene" --data "$tmp/five.csv" --start refit --timestep 6.756756756756757e-4
      --params restitution=0.3:0.9 --budget 4 --quiet)
 "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit1" > /dev/null
@@ -113,31 +113,66 @@ grep -q interrupted "$tmp/fit_int/ranking.csv" || fail "ranking.csv does not say
 
 # a rank killed mid-run: the job ends non-zero, rank 0 names the rank and
 # the trajectories it held in one line, and no output file appears (rank 0
-# writes only by renaming a finished PATH.tmp, and removes it on the error)
-status=0
-mpirun --oversubscribe -np 2 "$cli" "${replay[@]}" --data "$tmp/all.csv" --jobs 1 \
-  --output "$tmp/killed" \
-  > /dev/null 2> "$tmp/killed.err" &
-launcher=$!
-# once both ranks run and catch SIGTERM (their stop handler is set; the 300
-# tosses then take each rank more than a second): the one started last
+# writes only by renaming a finished PATH.tmp, and removes it on the error).
+# The 300 tosses are handed out before any is replayed by their measured
+# durations (--start first: from the first sample to the last), longest
+# first, each to the rank with the least so far: rank 1 holds the items
+# this computes (in turn, k mod 2, it would hold 1,3,5,...)
+held="$(python3 - "$tmp/all.csv" <<'PLAN'
+import csv, sys
+times = {}
+for row in csv.DictReader(open(sys.argv[1])):
+    times.setdefault(row["trajectory"], []).append(float(row["time"]))
+cost = [t[-1] - t[0] for t in times.values()]
+load, owner = [0.0, 0.0], [0] * len(cost)
+for k in sorted(range(len(cost)), key=lambda k: -cost[k]):
+    owner[k] = min(range(2), key=load.__getitem__)
+    load[owner[k]] += cost[k]
+held = [str(k) for k in range(len(cost)) if owner[k] == 1]
+print(",".join(held[:20]) + (",..." if len(held) > 20 else ""))
+PLAN
+)"
 catches_sigterm() {  # PID: bit 15 of its caught-signal mask
   local mask
   mask="$(awk '/^SigCgt:/ {print $2}' "/proc/$1/status" 2> /dev/null)"
   [ -n "$mask" ] && (( (16#$mask >> 14) & 1 ))
 }
-for _ in $(seq 300); do
-  ranks=($(pgrep -P "$launcher" -f "$cli" || true))
-  if [ "${#ranks[@]}" -ge 2 ] && catches_sigterm "${ranks[0]}" && catches_sigterm "${ranks[1]}"; then
-    break
-  fi
-  sleep 0.05
+# killed at once (most likely while MPI_Init runs beside the reading: rank 0
+# names every other rank) and 0.8 s later (computing: rank 0 names the
+# rank that did not arrive); the 300 tosses take each rank over a second
+for delay in 0 0.8; do
+  status=0
+  mpirun --oversubscribe -np 2 "$cli" replay "$scene" --start first \
+    --timestep 6.756756756756757e-4 --data "$tmp/all.csv" --jobs 1 --output "$tmp/killed" \
+    > /dev/null 2> "$tmp/killed.err" &
+  launcher=$!
+  # once both ranks run and catch SIGTERM (their stop handler is set): the
+  # one started last
+  for _ in $(seq 300); do
+    ranks=($(pgrep -P "$launcher" -f "$cli" || true))
+    if [ "${#ranks[@]}" -ge 2 ] && catches_sigterm "${ranks[0]}" && catches_sigterm "${ranks[1]}"; then
+      break
+    fi
+    sleep 0.05
+  done
+  sleep "$delay"
+  kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
+  wait "$launcher" || status=$?
+  [ "$status" -ne 0 ] || fail "a rank killed after ${delay} s left exit status 0"
+  [ "$(grep -cF "contactlaws: exchange 1: rank 1 (items $held of 300) did not arrive" \
+       "$tmp/killed.err")" = 1 ] ||
+    fail "killed after ${delay} s: not one line names rank 1 and its items: $(cat "$tmp/killed.err")"
+  [ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
+  ls "$tmp/killed" | grep -q tmp && fail "a killed job left a .tmp file"
 done
-kill -9 "$(pgrep -P "$launcher" -f "$cli" | tail -1)"
-wait "$launcher" || status=$?
-[ "$status" -ne 0 ] || fail "a killed rank left exit status 0"
-[ "$(grep -c "^contactlaws: exchange 1: rank 1 (items 1,3,5,.* of 300) did not arrive" \
-     "$tmp/killed.err")" = 1 ] || fail "not one line names rank 1 and its items: $(cat "$tmp/killed.err")"
-[ -e "$tmp/killed/replay.csv" ] && fail "a killed job wrote replay.csv"
-ls "$tmp/killed" | grep -q tmp && fail "a killed job left a .tmp file"
+
+# the launcher's count of ranks (read before MPI_Init returns) against MPI's:
+# one line, the job ended
+status=0
+mpi 2 env OMPI_COMM_WORLD_SIZE=3 "$cli" "${replay[@]}" --data "$tmp/two.csv" --jobs 1 \
+  > /dev/null 2> "$tmp/size.err" || status=$?
+[ "$status" -ne 0 ] || fail "a wrong OMPI_COMM_WORLD_SIZE left exit status 0"
+[ "$(grep -c "^contactlaws: the launcher gives" "$tmp/size.err")" = 1 ] &&
+  grep -q "^contactlaws: the launcher gives rank 0 of 3 (OMPI_COMM_WORLD_RANK), MPI rank 0 of 2$" \
+  "$tmp/size.err" || fail "no line for a wrong OMPI_COMM_WORLD_SIZE: $(cat "$tmp/size.err")"
 echo "mpi_test: ok"
