@@ -158,6 +158,9 @@ class ContactData {
   TagReading Reading(int tag) const;
   // J, latest evaluation: the laws' springs and the stick springs of friction
   double ElasticEnergy() const;
+  // J, the energy of the law's spring at point e's depth (computed when
+  // asked: the hooks' four evaluations a step do not need it)
+  double LawEnergy(const PointEvaluation& e) const;
   // J, integrated (trapezoid) over committed steps, up to the latest evaluation
   double DissipatedEnergy() const;
 

@@ -43,7 +43,6 @@ struct PointEvaluation {
   double touch_velocity = 0;   // touch: d' at the step before first touch
   double touch_power = 0;      // touch: the law's dissipated power at touch, W
   double force = 0;
-  double elastic_energy = 0;
   double dissipated_power = 0;
   double pos[3] = {0, 0, 0};     // contact point, world frame
   double normal[3] = {0, 0, 0};  // from geom[0] to geom[1]

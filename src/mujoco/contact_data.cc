@@ -124,8 +124,12 @@ TagReading ContactData::Reading(int tag) const {
 
 double ContactData::ElasticEnergy() const {
   double energy = 0;
-  for (const PointEvaluation& e : latest()) energy += e.elastic_energy + e.friction_energy;
+  for (const PointEvaluation& e : latest()) energy += LawEnergy(e) + e.friction_energy;
   return energy;
+}
+
+double ContactData::LawEnergy(const PointEvaluation& e) const {
+  return contactlaws::ElasticEnergy(model_.pairs()[e.pair].params, e.depth);
 }
 
 double ContactData::DissipatedEnergy() const {

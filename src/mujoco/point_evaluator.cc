@@ -105,7 +105,6 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   e.impact_velocity = state.impact_velocity;
   const ContactForce f = EvaluateLaw(pair.params, state);
   e.force = f.total;
-  e.elastic_energy = contactlaws::ElasticEnergy(pair.params, e.depth);
   e.dissipated_power = f.dissipated_power(e.depth_rate);
   mju_copy3(e.pos, con.pos);
   mju_copy3(e.normal, normal);

@@ -44,7 +44,7 @@ void DenseRows::Capture(State* state) {
   const std::vector<PointEvaluation>& points = sim_->contacts().latest();
   state->spring = state->spring_rate = state->friction_spring = 0;
   for (const PointEvaluation& e : points) {
-    state->spring += e.elastic_energy;
+    state->spring += sim_->contacts().LawEnergy(e);
     state->spring_rate += e.force * e.depth_rate - e.dissipated_power;
     state->friction_spring += e.friction_energy;
   }

@@ -62,7 +62,7 @@ class DenseRows {
     double time = -1;
     std::vector<mjtNum> qpos, qvel, qacc;
     std::vector<TagReading> readings;
-    double spring = 0;            // J, the laws' springs (PointEvaluation::elastic_energy)
+    double spring = 0;            // J, the laws' springs (ContactData::LawEnergy)
     double spring_rate = 0;       // W, its rate: the springs' force times d'
     double friction_spring = 0;   // J, the friction springs
     double dissipated = 0;        // J, the ledger's
