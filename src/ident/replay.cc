@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <numeric>
 #include <string_view>
 #include <thread>
 
@@ -267,15 +268,19 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   const int count = static_cast<int>(data_.trajectories.size());
   std::vector<ReplayedTrajectory> results(count);
   std::vector<double> seconds(count);  // each rollout's, for the spread's balance
-  if (options.spread) {
-    // a rollout's cost before it is measured: its simulated duration
-    std::vector<double> duration(count);
-    for (int i = 0; i < count; ++i) {
-      const std::vector<double>& time = data_.trajectories[i].time;
-      duration[i] = time.back() - time[StartSample(i, options)];
-    }
-    options.spread->Expect(duration);
+  // a rollout's cost before it is measured: its simulated duration. The
+  // threads take the longest first, so that none is left with a long one
+  // at the end (each result goes to its own index: the same bits)
+  std::vector<double> duration(count);
+  for (int i = 0; i < count; ++i) {
+    const std::vector<double>& time = data_.trajectories[i].time;
+    duration[i] = time.back() - time[StartSample(i, options)];
   }
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return duration[a] > duration[b]; });
+  if (options.spread) options.spread->Expect(duration);
   // the first rollout on this thread: the tags are checked (and refused) here
   Rollout first(*this, options);
   const int threads = std::max(1, std::min(options.jobs, count));
@@ -285,7 +290,8 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
     try {
       std::unique_ptr<Rollout> own;
       if (!rollout) rollout = (own = std::make_unique<Rollout>(*this, options)).get();
-      for (int i = next++; i < count; i = next++) {
+      for (int k = next++; k < count; k = next++) {
+        const int i = order[k];
         if (options.spread && !options.spread->Mine(i, count)) continue;
         if (options.should_stop && options.should_stop()) {
           results[i].status = ReplayedTrajectory::Status::kInterrupted;
