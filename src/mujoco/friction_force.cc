@@ -41,15 +41,13 @@ void RotationSince(const mjData* d, int body, const double q0[4], mjtNum rotatio
 }
 
 // The slip and spin of body[1] relative to body[0] at the contact point (the
-// world and driven bodies do not turn), into e.
+// world and driven bodies do not turn), into e: e->slip holds body[1]'s
+// velocity relative to body[0] there (PointEvaluator::EvaluatePoint), which
+// becomes its part in the tangent plane.
 void SlipAndSpin(const ContactModel& model, const mjData* d, const GeomPair& pair,
                  const mjContact& con, PointEvaluation* e) {
   const int b0 = pair.body[0];
   const int b1 = pair.body[1];
-  mjtNum v0[3], v1[3];
-  PointVelocity(model, d, b0, con.pos, v0);
-  PointVelocity(model, d, b1, con.pos, v1);
-  mju_sub3(e->slip, v1, v0);
   Project(con.frame, e->slip);
   const mjtNum* w0 = model.FindDrive(b0) ? nullptr : d->cvel + 6 * b0;
   const mjtNum* w1 = model.FindDrive(b1) ? nullptr : d->cvel + 6 * b1;

@@ -19,8 +19,10 @@
 
 namespace contactlaws {
 
-// The friction at point con of pair, whose normal law e holds: records its
-// slip and spin in *e, and for a pair with friction adds the friction force
+// The friction at point con of pair, whose normal law e holds (and in
+// e->slip, body[1]'s velocity relative to body[0] at the point, as
+// PointEvaluator::EvaluatePoint leaves it): records its slip (in the tangent
+// plane) and spin in *e, and for a pair with friction adds the friction force
 // and torque to d->qfrc_passive and records them in *e, with the state to
 // commit (episodes: the committed memory of e's open episode).
 void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,

@@ -73,6 +73,9 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   PointVelocity(model_, d, pair.body[1], con.pos, v1);
   mju_sub3(relative, v0, v1);
   e.depth_rate = mju_dot3(relative, normal);
+  // the slip before its projection into the tangent plane (SlipAndSpin):
+  // the same two velocities, computed once
+  mju_sub3(e.slip, v1, v0);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
   if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
