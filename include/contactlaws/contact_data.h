@@ -65,10 +65,11 @@ class StepCapture;
 class StepCommitter;
 class StepStartVelocities;
 
-// MuJoCo 2.2.2's own contact filter for a geom pair (not exported by the
-// library): 1 discards. Installing mjcb_contactfilter replaces it for every
-// pair, so untagged pairs go through this copy of the rule.
-int DefaultContactFilter(const mjModel* m, int g1, int g2);
+namespace internal {
+// MuJoCo's hooks (src/mujoco/hooks.cc): the only callers of ClaimPair and
+// ApplyForces.
+struct HookCalls;
+}  // namespace internal
 
 // What did not fit in d->contact (m->nconmax entries in MuJoCo 2.2.2) over
 // the calls that shared this record (AppendVisibleContacts). The first point
@@ -164,6 +165,13 @@ class ContactData {
   // J, integrated (trapezoid) over committed steps, up to the latest evaluation
   double DissipatedEnergy() const;
 
+  // World-frame velocity of a point fixed to body (driven bodies: their
+  // prescribed motion). Needs cvel (mj_forward, or inside the hooks).
+  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const;
+
+ private:
+  friend struct internal::HookCalls;
+
   // Called by the contact filter hook for each pair the broadphase proposes:
   // true, and recorded for ApplyForces, when the pair is tagged. O(1); no
   // allocation.
@@ -174,11 +182,6 @@ class ContactData {
   // when the pass was skipped, e.g. mj_forwardSkip past positions).
   void ApplyForces();
 
-  // World-frame velocity of a point fixed to body (driven bodies: their
-  // prescribed motion). Needs cvel (mj_forward, or inside the hooks).
-  void PointVelocity(int body, const mjtNum point[3], mjtNum vel[3]) const;
-
- private:
   const ContactModel& model_;
   mjData* d_;
   mjModel view_;  // the model's header with this data's options: model_view()

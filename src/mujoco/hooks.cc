@@ -105,9 +105,20 @@ struct RestoreAtUnload {
   }
 } restore_at_unload;
 
+}  // namespace
+
+namespace internal {
+struct HookCalls {
+  static bool ClaimPair(ContactData* cd, int g1, int g2) { return cd->ClaimPair(g1, g2); }
+  static void ApplyForces(ContactData* cd) { cd->ApplyForces(); }
+};
+}  // namespace internal
+
+namespace {
+
 int FilterHook(const mjModel* m, mjData* d, int g1, int g2) {
   // tagged: no MuJoCo constraint, the passive hook applies the law
-  if (ContactData* cd = Lookup(m, d); cd && cd->ClaimPair(g1, g2)) return 1;
+  if (ContactData* cd = Lookup(m, d); cd && internal::HookCalls::ClaimPair(cd, g1, g2)) return 1;
   mjfConFilt previous = GetRegistry().previous_filter.load(std::memory_order_acquire);
   return previous ? previous(m, d, g1, g2) : DefaultContactFilter(m, g1, g2);
 }
@@ -116,7 +127,7 @@ void PassiveHook(const mjModel* m, mjData* d) {
   if (mjfGeneric previous = GetRegistry().previous_passive.load(std::memory_order_acquire)) {
     previous(m, d);
   }
-  if (ContactData* cd = Lookup(m, d)) cd->ApplyForces();
+  if (ContactData* cd = Lookup(m, d)) internal::HookCalls::ApplyForces(cd);
 }
 
 }  // namespace

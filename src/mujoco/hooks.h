@@ -16,6 +16,11 @@ namespace contactlaws {
 class ContactData;
 class ContactModel;
 
+// MuJoCo 2.2.2's own contact filter for a geom pair (not exported by the
+// library): 1 discards. Installing mjcb_contactfilter replaces it for every
+// pair, so untagged pairs go through this copy of the rule.
+int DefaultContactFilter(const mjModel* m, int g1, int g2);
+
 // Throws Error when d already has a ContactData.
 void RegisterContactData(mjData* d, ContactData* contact_data);
 void UnregisterContactData(mjData* d);

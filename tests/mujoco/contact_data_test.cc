@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mujoco/hooks.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mujoco/hooks.h"
 #include "mujoco/thread_test_util.h"
 
 namespace contactlaws {
