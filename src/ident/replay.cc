@@ -153,10 +153,11 @@ class Replay::Rollout {
     }
   }
 
-  ReplayedTrajectory Run(int i) {
+  // Trajectory i from its start sample (StartSample).
+  ReplayedTrajectory Run(int i, int start) {
     const MeasuredTrajectory& t = replay_.data_.trajectories[i];
     ReplayedTrajectory result;
-    result.start = replay_.binding_->StartSample(i, options_);
+    result.start = start;
     Start(t, result.start);
     if (options_.simulation.settle) {
       // the measured positions into their static equilibrium; Settle leaves
@@ -271,10 +272,12 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   // a rollout's cost before it is measured: its simulated duration. The
   // threads take the longest first, so that none is left with a long one
   // at the end (each result goes to its own index: the same bits)
+  std::vector<int> first_sample(count);  // each trajectory's start (StartSample)
   std::vector<double> duration(count);
   for (int i = 0; i < count; ++i) {
     const std::vector<double>& time = data_.trajectories[i].time;
-    duration[i] = time.back() - time[StartSample(i, options)];
+    first_sample[i] = StartSample(i, options);
+    duration[i] = time.back() - time[first_sample[i]];
   }
   std::vector<int> order(count);
   std::iota(order.begin(), order.end(), 0);
@@ -298,7 +301,7 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
           continue;
         }
         const double start = ThreadSeconds();
-        results[i] = rollout->Run(i);
+        results[i] = rollout->Run(i, first_sample[i]);
         seconds[i] = ThreadSeconds() - start;
       }
     } catch (...) {
