@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
 
 #include "cli_test_util.h"
 
@@ -303,16 +304,35 @@ TEST(RenderTest, OverlayShowsTheSlowMotion) {
   EXPECT_LT(changed.bottom, kHeight * 3 / 8);
 }
 
+// The timestep a scene's <option> gives (MuJoCo's default without one).
+double SceneTimestep(const std::string& path) {
+  char error[512] = "";
+  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
+  if (!m) return 0;
+  const double timestep = m->opt.timestep;
+  mj_deleteModel(m);
+  return timestep;
+}
+
 // Every scene of mjcf/ (their visuals: textures, skybox, shadows) draws:
-// two small frames each.
+// two small frames each. The run is at most 500 of the scene's own steps
+// (Chung & Ooi's test 4 steps at 1e-8 s: 0.05 s of it is 5 million steps);
+// its video lasts 1.5 frames at 20 fps, two frames whatever the rounding of
+// duration x fps x slowmo.
 TEST(RenderTest, ShippedScenesDraw) {
+  constexpr double kVideoSeconds = 0.075;
+  constexpr double kMostSteps = 500;
   int scenes = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf")) {
     if (entry.path().extension() != ".xml") continue;
+    const double timestep = SceneTimestep(entry.path().string());
+    ASSERT_GT(timestep, 0) << entry.path();
+    const double duration = std::min(kVideoSeconds, kMostSteps * timestep);
     const std::string dir = ::testing::TempDir() + "/render_" + entry.path().stem().string();
-    const Result r = RunCli(fmt::format("render {} --duration 0.05 --fps 20 --width 64 "
-                                        "--height 48 --output {}/", entry.path().string(), dir));
+    const Result r = RunCli(fmt::format("render {} --duration {} --fps 20 --slowmo {} --width 64 "
+                                        "--height 48 --output {}/", entry.path().string(),
+                                        duration, kVideoSeconds / duration, dir));
     EXPECT_EQ(r.status, 0) << entry.path() << r.output;
     EXPECT_EQ(ReadPng(Frame(dir, 1)).width, 64) << entry.path();
     ++scenes;
