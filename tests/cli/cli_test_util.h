@@ -18,6 +18,7 @@
 
 #include "mujoco_test_util.h"
 #include "process_util.h"
+#include "test_programs.h"
 
 namespace contactlaws::testing {
 

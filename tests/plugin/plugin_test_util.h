@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "process_util.h"
+#include "test_programs.h"
 
 namespace contactlaws::testing {
 
