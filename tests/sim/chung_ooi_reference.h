@@ -100,6 +100,22 @@ inline constexpr FigurePoint kTest6BetaAlloy[] = {
     {2.9956, -0.0497},  {3.6344, -0.1001}, {4.5154, -0.1396}, {5.7489, -0.1748}, {7.8194, -0.2077},
     {11.8943, -0.2582}, {24.0088, -0.3416}};
 
+// Test 8 (the inputs: chung_ooi_test), from the same directory
+// (benchmark8_graph1.dat, the paper's curves as Kratos digitized them): beta
+// against x as in test 6, for a sphere onto a sphere of 5 times its radius,
+// case A (the larger sphere 1000 times stiffer) and case B (of one
+// material). They part from x = 7.8 on.
+inline constexpr FigurePoint kTest8BetaCaseA[] = {
+    {0.1872, -0.8152},  {0.3583, -0.6262}, {0.5508, -0.4394}, {0.7647, -0.2378}, {0.9786, -0.0173},
+    {1.2139, 0.0961},   {1.4920, 0.1108},  {1.7701, 0.0898},  {2.0909, 0.0583},  {2.5187, 0.0058},
+    {2.9893, -0.0488},  {3.6310, -0.1034}, {4.5080, -0.1391}, {5.7701, -0.1622}, {7.8449, -0.2042},
+    {11.9091, -0.2483}, {23.9733, -0.3176}};
+inline constexpr FigurePoint kTest8BetaCaseB[] = {
+    {0.1872, -0.8152},  {0.3583, -0.6262}, {0.5508, -0.4394}, {0.7647, -0.2378}, {0.9786, -0.0173},
+    {1.2139, 0.0961},   {1.4920, 0.1108},  {1.7701, 0.0898},  {2.0909, 0.0583},  {2.5187, 0.0058},
+    {2.9893, -0.0488},  {3.6310, -0.1034}, {4.5080, -0.1391}, {5.7701, -0.1622}, {7.8449, -0.1055},
+    {11.9091, -0.1076}, {23.9947, -0.1055}};
+
 }  // namespace contactlaws::testing
 
 #endif  // CONTACTLAWS_TESTS_SIM_CHUNG_OOI_REFERENCE_H_
