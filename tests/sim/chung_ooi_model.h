@@ -84,6 +84,15 @@ inline double InertiaA(const ImpactCase& c) {
 // B's mass over A's: A's velocity per B's, the other way (0 for the plane).
 inline double Share(const ImpactCase& c) { return Mass(c.material, kRadius) / MassA(c); }
 
+// Test 4's impact: 3.9 m/s at `degrees` from the normal, test 4's mu and e
+// (ImpactCase's defaults).
+inline ImpactCase Test4Impact(const Material& m, double degrees) {
+  ImpactCase c{m};
+  c.vn = 3.9 * std::cos(degrees * M_PI / 180);
+  c.vt = 3.9 * std::sin(degrees * M_PI / 180);
+  return c;
+}
+
 // The normal law of the tag below: law=exact, its e, Hertz's K of the materials.
 inline LawParams NormalLaw(const ImpactCase& c) {
   LawParams law;

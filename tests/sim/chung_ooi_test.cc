@@ -129,16 +129,18 @@ class ChungOoiTest : public testing::MujocoTest {
   }
 
   // Tests 6 and 8: c at the paper's v_n 0.2 m/s, mu 0.4, e 0.5, spinning so
-  // that its contact point slips at v_t,c = 3.5 mu (1 + e) v_n / x, against
-  // the model (Expect), and against the paper's beta = -v_t,c' / v_t,c at p
-  // where the rigid sphere slides throughout (x <= 1, beta = x - 1), within
-  // 2% of beta's scale 1; beyond, printed, not held (docs/friction.md).
-  // Returns the largest deviation, over its bound.
+  // that its contact point slips at v_t,c = kSliding v_n / x, against the
+  // model (Expect), and against the paper's beta = -v_t,c' / v_t,c at p where
+  // the rigid sphere slides throughout (x <= 1, beta = x - 1), within 2% of
+  // beta's scale 1; beyond, printed, not held (docs/friction.md). Returns the
+  // largest deviation, over its bound.
+  static constexpr double kSpinMu = 0.4, kSpinE = 0.5;
+  static constexpr double kSliding = 3.5 * kSpinMu * (1 + kSpinE);  // v_t,c / v_n
   double ExpectBeta(ImpactCase c, const testing::FigurePoint& p, const char* label) {
-    c.mu = 0.4;
-    c.e = 0.5;
+    c.mu = kSpinMu;
+    c.e = kSpinE;
     c.vn = 0.2;
-    c.w = -3.5 * c.mu * (1 + c.e) * c.vn / p.x / kRadius;
+    c.w = -kSliding * c.vn / p.x / kRadius;
     const double worst = Expect(c, label);
     const double beta = -last_.tangent_out * last_.restitution / last_.tangent_in;
     const bool held = p.x <= 1;
@@ -177,10 +179,7 @@ TEST_F(ChungOoiTest, Test4ObliqueImpactAtConstantSpeed) {
   double worst = 0;  // the largest deviation, over its bound
   for (const Material& m : kMaterials) {
     for (int degrees = 5; degrees < 90; degrees += 10) {
-      const double angle = degrees * M_PI / 180;
-      ImpactCase c{m};
-      c.vn = 3.9 * std::cos(angle);
-      c.vt = 3.9 * std::sin(angle);
+      const ImpactCase c = Test4Impact(m, degrees);
       worst = std::max(worst, Expect(c, fmt::format("test 4 at {} deg", degrees).c_str()));
       const double et = Simulate(c).vt / c.vt;
       const double reference = ReferenceImpact(c).vt / c.vt;
@@ -195,17 +194,14 @@ TEST_F(ChungOoiTest, Test4ObliqueImpactAtConstantSpeed) {
 // paper's DEM-code curves of v_t'/v_t and the spin, both materials, and one
 // DEM code's (Kratos') results, alumina, 5 ... 85 degrees. The spin is
 // compared as w' R (the reference's at its R; Hertz-Mindlin's normalized
-// rebound does not depend on R). Bounds, the 2%: of v_t'/v_t; of
-// the largest w' R of the curve for the spin, which falls to 0 at either
-// end. The paper's curves are held from 15 (v_t'/v_t) and 20 degrees (the
-// spin) on: below, read off a slope of up to 0.05 per degree, they part
-// from the DEM code's results, which the simulation matches there.
+// rebound does not depend on R). Bounds, 2%: of v_t'/v_t; of the curve's
+// largest w' R for the spin. The paper's curves are held from 15 (v_t'/v_t)
+// and 20 degrees (the spin) on: below, read off a slope of up to 0.05 per
+// degree, they part from the DEM code's results, which the simulation holds.
 TEST_F(ChungOoiTest, Test4AgainstThePublishedCurves) {
   constexpr double kRatio = kRadius / testing::kChungOoiTest4Radius;
   auto rebound = [&](const Material& m, double degrees) {
-    ImpactCase c{m};
-    c.vn = 3.9 * std::cos(degrees * M_PI / 180);
-    c.vt = 3.9 * std::sin(degrees * M_PI / 180);
+    const ImpactCase c = Test4Impact(m, degrees);
     const Rebound r = Simulate(c);
     return std::pair{r.vt / c.vt, std::abs(r.w) * kRatio};  // e_t; w' at the reference's R
   };
@@ -250,65 +246,70 @@ TEST_F(ChungOoiTest, Test4AgainstThePublishedCurves) {
   std::printf("test 4 against the published: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 5 with the paper's inputs (chung_ooi_reference.h): steel onto the
-// rigid plane at v_n 5 m/s, mu 0.3, e 1, no spin, v_t at the figure's x =
-// v_t / (mu v_n), against the model's integration (Expect) at every x, and
-// against the paper's curves where the rigid sphere slides throughout (x >=
-// 3.5 (1 + e) = 7): the contact point's rebound tangent over mu within 2% of
-// x (the incident one's scale, as Expect's), the spin R w' / (mu v_n) within
-// 2% of its gross-sliding 5/2 (1 + e) = 5. Below, the paper's curves
-// reverse the contact point (-0.75 at x 1) where this model, its
-// integration here and Kratos' computed test 4 rebound forward: they are
-// the no-slip spring at half Mindlin's stiffness without the unloading
-// correction (chung_ooi_model_test); printed, not held (docs/friction.md).
+// Test 5 with the paper's inputs (chung_ooi_reference.h): steel and
+// polyethylene onto the rigid plane at v_n 5 m/s, mu 0.3, e 1, no spin, v_t
+// for x = v_t / (mu v_n), against the model (Expect), and against the
+// paper's curves where the rigid sphere slides throughout (x >= 3.5 (1 + e)
+// = 7): v_t,c' / (mu v_n') within 2% of x, R w' / (mu v_n) within 2% of its
+// 5/2 (1 + e) = 5. Below, the curves reverse the contact point where this
+// model rebounds it forward: they are another spring (chung_ooi_model_test);
+// printed, not held (docs/friction.md).
 TEST_F(ChungOoiTest, Test5ConstantNormalVelocityVaryingTangential) {
   double worst = 0;  // the largest deviation, over its bound
-  for (const bool spin : {false, true}) {
-    const std::vector<testing::FigurePoint> points =
-        spin ? std::vector(std::begin(testing::kTest5SpinSteel), std::end(testing::kTest5SpinSteel))
-             : std::vector(std::begin(testing::kTest5ReboundSteel),
-                           std::end(testing::kTest5ReboundSteel));
-    for (const testing::FigurePoint& p : points) {
-      ImpactCase c{kSteel};
+  constexpr double kFrom = 3.5 * (1 + 1.0);  // x of gross sliding at e 1
+  // one curve from x = from_x on; spin: R w'/(mu v_n), else v_t,c'/(mu v_n')
+  auto run = [&](const Material& m, const auto& curve, bool spin, double from_x) {
+    for (const testing::FigurePoint& p : curve) {
+      if (p.x < from_x) continue;
+      ImpactCase c{m};
       c.mu = 0.3;
       c.e = 1;
       c.vn = 5;
       c.vt = p.x * c.mu * c.vn;
       worst = std::max(worst, Expect(c, "test 5"));
       const double got = spin ? last_.w * kRadius / (c.mu * c.vn) : last_.tangent_out / c.mu;
-      const bool held = p.x >= 3.5 * (1 + c.e);
+      const bool held = p.x >= kFrom;
       std::printf("test 5 against the paper, %s at x %.3f: %.4f for %.4f%s\n",
                   spin ? "R w'/(mu v_n)" : "v_t,c'/(mu v_n')", p.x, got, p.y,
                   held ? "" : " (not held)");
       if (!held) continue;
       const double error = std::abs(got - p.y) / (kBound * (spin ? 5.0 : p.x));
-      EXPECT_LE(error, 1) << (spin ? "spin" : "rebound") << " at x " << p.x << ": " << got
-                          << " for " << p.y;
+      EXPECT_LE(error, 1) << m.name << (spin ? " spin" : " rebound") << " at x " << p.x << ": "
+                          << got << " for " << p.y;
       worst = std::max(worst, error);
     }
-  }
+  };
+  run(kSteel, testing::kTest5ReboundSteel, /*spin=*/false, 0);
+  run(kSteel, testing::kTest5SpinSteel, /*spin=*/true, 0);
+  // polyethylene where its curves are held (steel runs the model below)
+  run(kPolyethylene, testing::kTest5ReboundPolyethylene, /*spin=*/false, kFrom);
+  run(kPolyethylene, testing::kTest5SpinPolyethylene, /*spin=*/true, kFrom);
   std::printf("test 5: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 6 with the paper's inputs: aluminium alloy onto the rigid plane
-// (ExpectBeta). Beyond gross sliding the paper's beta falls to -0.34 (x
-// 24), where this model's tangential damper (the normal law's ratio at e
-// 0.5) leaves +0.02.
+// Test 6 with the paper's inputs: aluminium alloy and nylon onto the rigid
+// plane (ExpectBeta). Beyond gross sliding the paper's beta falls to -0.34
+// (x 24), where this model's tangential damper leaves +0.02.
 TEST_F(ChungOoiTest, Test6ConstantNormalVelocityVaryingSpin) {
   double worst = 0;  // the largest deviation, over its bound
   for (const testing::FigurePoint& p : testing::kTest6BetaAlloy) {
     worst = std::max(worst, ExpectBeta(ImpactCase{kAlloy}, p, "test 6"));
   }
+  // nylon's curve of y = v_t,c'/v_n' against t = v_t,c/v_n, as beta = -e y / t at x =
+  // kSliding / t, where held (x <= 1)
+  for (const testing::FigurePoint& q : testing::kTest6ReboundTangentNylon) {
+    if (q.x < kSliding) continue;
+    const testing::FigurePoint p{kSliding / q.x, -kSpinE * q.y / q.x};
+    worst = std::max(worst, ExpectBeta(ImpactCase{kNylon}, p, "test 6 (nylon)"));
+  }
   std::printf("test 6: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 7 with the paper's inputs (Kratos' scene; LIGGGHTS-PFM's and PySPH's
-// take the same): two spheres of one radius and material (aluminium alloy,
-// copper), each at 0.2 m/s along the line of centres, mu 0.4, e 0.5,
-// spinning in opposite senses at w R = v tan(theta), theta 5, 45, 85 degrees.
-// Their surfaces meet at one speed: nothing slips, no tangential force acts,
-// and the benchmark's answer is v_t' = 0 and w' = w (the curves Kratos
-// tabulates as the paper's; docs/friction.md). Held to it and to the model.
+// Test 7 with the paper's inputs (Kratos', LIGGGHTS-PFM's, PySPH's scenes):
+// two spheres of one size, aluminium alloy or copper, each at 0.2 m/s, mu
+// 0.4, e 0.5, spinning in opposite senses at w R = v tan 5, 45, 85 degrees.
+// Their surfaces meet at one speed: no tangential force, and the answer is
+// v_t' = 0 and w' = w (Kratos' curves of the paper; docs/friction.md).
 TEST_F(ChungOoiTest, Test7TwoEqualSpheresSpinningOppositely) {
   double worst = 0;  // the largest deviation, over its bound
   for (const Material& m : {kAlloy, kCopper}) {
@@ -327,12 +328,11 @@ TEST_F(ChungOoiTest, Test7TwoEqualSpheresSpinningOppositely) {
   std::printf("test 7: largest deviation %.3f of the bound\n", worst);
 }
 
-// Test 8 with the paper's inputs (Kratos', LIGGGHTS-PFM's and PySPH's
-// scenes): test 6's impact (ExpectBeta) onto a resting sphere of 5 times
-// the sphere's radius and 1000 times its density, 1000 times stiffer (case
-// A) or of the same material (case B); aluminium alloy and nylon. Against
-// the paper's curves of both cases (chung_ooi_reference.h) to x = 1, and at
-// their last x, where the cases part, printed.
+// Test 8 with the paper's inputs (the same scenes): test 6's impact
+// (ExpectBeta) onto a resting sphere of 5 times the radius and 1000 times
+// the density, 1000 times stiffer (case A) or of the same material (case
+// B); aluminium alloy and nylon. The paper's curves of both cases
+// (chung_ooi_reference.h) to x = 1, and printed at their last x.
 TEST_F(ChungOoiTest, Test8SphereOntoASphereFiveTimesLarger) {
   double worst = 0;  // the largest deviation, over its bound
   for (const Material& m : {kAlloy, kNylon}) {
