@@ -32,6 +32,14 @@ inline constexpr Material kAlumina{"alumina", 380e9, 0.23, 4000};
 inline constexpr Material kAlloy{"aluminium alloy", 70e9, 0.33, 2700};
 // test 5's (chung_ooi_reference.h)
 inline constexpr Material kSteel{"steel", 208e9, 0.30, 7850};
+// The second materials of tests 5 to 8 as the DEM codes' scripts of the
+// benchmark give them: polyethylene (test 5; PySPH's chung_test_5.py and
+// LIGGGHTS-PFM's test05 agree), nylon (tests 6 and 8; LIGGGHTS-PFM's test06
+// and test08, PySPH's chung_test_8.py), copper (test 7; PySPH's
+// chung_test_7.py, LIGGGHTS-PFM's test07).
+inline constexpr Material kPolyethylene{"polyethylene", 1.0e9, 0.40, 1400};
+inline constexpr Material kNylon{"nylon", 2.5e9, 0.40, 1000};
+inline constexpr Material kCopper{"copper", 120e9, 0.35, 8900};
 inline constexpr double kRadius = 2.55e-3;  // m
 // the rigid plane: 1000x the sphere's Young modulus, its Poisson ratio (Yade's
 // benchmark scripts do the same)
@@ -49,6 +57,9 @@ struct ImpactCase {
   double vn = 3.9, vt = 0, w = 0;  // body B's, m/s and rad/s
   double ra = INFINITY;            // A's radius: a plane when infinite
   double wa = 0;                   // A's spin, rad/s
+  // the sphere A's Young modulus and density over B's (the plane is kRigid
+  // times stiffer and does not move)
+  double a_stiffer = 1, a_denser = 1;
 };
 
 struct Rebound {
@@ -60,14 +71,35 @@ inline double Mass(const Material& m, double r) { return m.density * 4.0 / 3.0 *
 inline double Inertia(const Material& m, double r) { return 0.4 * Mass(m, r) * r * r; }
 inline double Effective(double a, double b) { return std::isinf(a) ? b : a * b / (a + b); }
 
+// Body A's Young modulus (Pa), mass and moment of inertia: infinite for the plane.
+inline double YoungsA(const ImpactCase& c) {
+  return (std::isinf(c.ra) ? kRigid : c.a_stiffer) * c.material.youngs;
+}
+inline double MassA(const ImpactCase& c) {
+  return std::isinf(c.ra) ? INFINITY : c.a_denser * Mass(c.material, c.ra);
+}
+inline double InertiaA(const ImpactCase& c) {
+  return std::isinf(c.ra) ? INFINITY : 0.4 * MassA(c) * c.ra * c.ra;
+}
+// B's mass over A's: A's velocity per B's, the other way (0 for the plane).
+inline double Share(const ImpactCase& c) { return Mass(c.material, kRadius) / MassA(c); }
+
+// Test 4's impact: 3.9 m/s at `degrees` from the normal, test 4's mu and e
+// (ImpactCase's defaults).
+inline ImpactCase Test4Impact(const Material& m, double degrees) {
+  ImpactCase c{m};
+  c.vn = 3.9 * std::cos(degrees * M_PI / 180);
+  c.vt = 3.9 * std::sin(degrees * M_PI / 180);
+  return c;
+}
+
 // The normal law of the tag below: law=exact, its e, Hertz's K of the materials.
 inline LawParams NormalLaw(const ImpactCase& c) {
   LawParams law;
   law.kind = *ParseLawName("exact");
   law.restitution = c.e;
-  const double youngs_a = std::isinf(c.ra) ? kRigid * c.material.youngs : c.material.youngs;
   law.stiffness = HertzSphereStiffness(c.ra, kRadius,
-                                       MaterialCompliance(youngs_a, c.material.poisson),
+                                       MaterialCompliance(YoungsA(c), c.material.poisson),
                                        MaterialCompliance(c.material.youngs, c.material.poisson));
   ResolveLawParams(&law);  // a(e), as ContactModel resolves every pair's
   return law;
@@ -75,7 +107,7 @@ inline LawParams NormalLaw(const ImpactCase& c) {
 
 // The effective mass along the normal, kg.
 inline double NormalMass(const ImpactCase& c) {
-  return Effective(std::isinf(c.ra) ? INFINITY : Mass(c.material, c.ra), Mass(c.material, kRadius));
+  return Effective(MassA(c), Mass(c.material, kRadius));
 }
 
 inline double ContactDuration(const ImpactCase& c) {
@@ -107,12 +139,12 @@ inline Rebound ReferenceImpact(const ImpactCase& c, const TangentialSpring& spri
   const LawParams law = NormalLaw(c);
   const double nu = m.poisson;
   const double shear = m.youngs / (2 * (1 + nu));
-  const double shear_a = (plane ? kRigid : 1) * shear;
+  const double shear_a = YoungsA(c) / (2 * (1 + nu));
   const double g_star = 1 / ((2 - nu) / shear + (2 - nu) / shear_a);
   const double r_star = Effective(c.ra, kRadius);
   const double mb = Mass(m, kRadius), ib = Inertia(m, kRadius);
-  const double ma = plane ? INFINITY : Mass(m, c.ra), ia = plane ? INFINITY : Inertia(m, c.ra);
-  const double share = plane ? 0 : mb / ma;
+  const double ma = MassA(c), ia = InertiaA(c);
+  const double share = Share(c);
   double vb = c.vt, wb = c.w, va = -share * c.vt, wa = c.wa;
   double vbn = -c.vn, van = share * c.vn;
   double depth = 0, spring = 0, k_prev = 0;
@@ -160,9 +192,8 @@ struct Quantities {
 };
 
 inline Quantities Measure(const ImpactCase& c, const Rebound& r) {
-  const bool plane = std::isinf(c.ra);
-  const double share = plane ? 0 : Mass(c.material, kRadius) / Mass(c.material, c.ra);
-  const double la = plane ? 0 : c.ra;
+  const double share = Share(c);
+  const double la = std::isinf(c.ra) ? 0 : c.ra;
   const double slip_in = (c.vt - c.w * kRadius) - (-share * c.vt + c.wa * la);
   const double approach = c.vn * (1 + share);
   const double slip_out = (r.vt - r.w * kRadius) - (-share * r.vt + r.wa * la);
@@ -184,8 +215,8 @@ inline std::optional<Rebound> SlidingRebound(const ImpactCase& c) {
   const bool plane = std::isinf(c.ra);
   const Material& m = c.material;
   const double mb = Mass(m, kRadius), ib = Inertia(m, kRadius);
-  const double ma = plane ? INFINITY : Mass(m, c.ra), ia = plane ? INFINITY : Inertia(m, c.ra);
-  const double share = plane ? 0 : mb / ma;
+  const double ma = MassA(c), ia = InertiaA(c);
+  const double share = Share(c);
   const double la = plane ? 0 : c.ra;
   const double slip = (c.vt - c.w * kRadius) - (-share * c.vt + c.wa * la);
   const double j = (1 + c.e) * NormalMass(c) * c.vn * (1 + share);

@@ -83,9 +83,7 @@ TEST(ChungOoiModelTest, Test4CurvesAreNotTheHalfStiffnessSpring) {
   double worst = 0;  // the largest deviation, relative
   for (const testing::CurvePoint& p : testing::kTest4TangentialRestitutionAlumina) {
     if (p.degrees < 14.9) continue;
-    chung_ooi::ImpactCase c{chung_ooi::kAlumina};
-    c.vn = 3.9 * std::cos(p.degrees * M_PI / 180);
-    c.vt = 3.9 * std::sin(p.degrees * M_PI / 180);
+    const chung_ooi::ImpactCase c = chung_ooi::Test4Impact(chung_ooi::kAlumina, p.degrees);
     const double et = chung_ooi::ReferenceImpact(c, {0.5, false}).vt / c.vt;
     worst = std::max(worst, std::abs(et - p.value) / p.value);
     std::printf("test 4 at %.1f deg, 4 G* a uncorrected: v_t'/v_t %.3f for the paper's %.3f\n",

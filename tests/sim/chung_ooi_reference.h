@@ -90,6 +90,23 @@ inline constexpr FigurePoint kTest5SpinSteel[] = {
     {1.6879, 2.0938},  {2.0000, 2.5240},  {2.3295, 2.9784},  {2.9884, 3.9037},  {3.3179, 4.2932},
     {3.9942, 4.8368},  {5.0000, 5.0068},  {6.0058, 5.0062},  {10.0116, 5.0041}, {20.0000, 4.9905}};
 
+// Test 5, polyethylene (chung_ooi_model.h), the same two curves as PySPH
+// digitized them: dineshadepu/pysph, branch dem (ad11343b),
+// pysph/examples/dem/discontinuous_dem/test_chung_paper/chung_test_5_
+// normalized_recoil_angle_vs_normalized_incident_angle_polyethylene.csv and
+// ..._post_collision_ang_vel_..._polyethylene.csv, BSD-3 licence (PySPH's).
+// The spin negated: PySPH's tangential axis points the other way (its steel
+// spin curve is negative where Kratos' is positive). Sorted by x.
+inline constexpr FigurePoint kTest5ReboundPolyethylene[] = {
+    {0.0492, -0.0460}, {0.3331, -0.3389}, {0.6736, -0.5272}, {1.0144, -0.9038}, {1.3359, -1.1130},
+    {1.6767, -1.4895}, {1.9796, -1.7824}, {2.3391, -2.0962}, {2.9638, -2.7238}, {3.3421, -2.9540},
+    {4.0222, -2.8912}, {5.0408, -2.0335}, {5.9647, -1.0502}, {10.0003, 2.9665}, {12.3197, 5.3305}};
+inline constexpr FigurePoint kTest5SpinPolyethylene[] = {
+    {0.1138, 0.1463},  {0.2840, 0.4522},  {0.6252, 0.9043},  {0.9665, 1.3298},
+    {1.2790, 1.7952},  {1.6776, 2.2073},  {2.0187, 2.6727},  {2.3314, 3.1116},
+    {3.0421, 4.0689},  {3.2690, 4.4945},  {3.9536, 4.9198},  {4.9834, 4.9856},
+    {5.9562, 4.9850},  {9.9621, 4.9557},  {17.4585, 4.9507}, {20.0050, 4.9490}};
+
 // Test 6: aluminium alloy (E 70 GPa, nu 0.33, rho 2700), v_n 0.2 m/s, mu
 // 0.4, e 0.5, no tangential speed, the spin giving the contact point v_t,c
 // for x = 3.5 mu (1 + e) v_n / v_t,c. The contact point's tangential
@@ -99,6 +116,31 @@ inline constexpr FigurePoint kTest6BetaAlloy[] = {
     {1.1894, 0.0974},   {1.4537, 0.1193},  {1.7401, 0.0996},  {2.0925, 0.0579},  {2.4890, 0.0052},
     {2.9956, -0.0497},  {3.6344, -0.1001}, {4.5154, -0.1396}, {5.7489, -0.1748}, {7.8194, -0.2077},
     {11.8943, -0.2582}, {24.0088, -0.3416}};
+
+// Test 6, nylon (chung_ooi_model.h), Kratos' benchmark6_graph2.dat (its
+// second set): the tangent of the contact point's rebound angle v_t,c'/v_n'
+// against the incident one's, v_t,c/v_n.
+inline constexpr FigurePoint kTest6ReboundTangentNylon[] = {
+    {0.0848, 0.0216}, {0.1798, 0.0485}, {0.2613, 0.0487}, {0.3632, 0.0891}, {0.4650, 0.0625},
+    {0.5736, 0.0359}, {0.6958, -0.0308}, {0.8383, -0.1242}, {0.9944, -0.2310}, {1.1912, -0.3244},
+    {1.4220, -0.3775}, {1.7344, -0.3769}, {2.1420, 0.0523}, {2.7471, 1.2717}, {3.7329, 3.2548},
+    {5.6706, 7.1273}, {6.1057, 7.9983}};
+
+// Test 8 (the inputs: chung_ooi_test), from the same directory
+// (benchmark8_graph1.dat, the paper's curves as Kratos digitized them): beta
+// against x as in test 6, for a sphere onto a sphere of 5 times its radius,
+// case A (the larger sphere 1000 times stiffer) and case B (of one
+// material). They part from x = 7.8 on.
+inline constexpr FigurePoint kTest8BetaCaseA[] = {
+    {0.1872, -0.8152},  {0.3583, -0.6262}, {0.5508, -0.4394}, {0.7647, -0.2378}, {0.9786, -0.0173},
+    {1.2139, 0.0961},   {1.4920, 0.1108},  {1.7701, 0.0898},  {2.0909, 0.0583},  {2.5187, 0.0058},
+    {2.9893, -0.0488},  {3.6310, -0.1034}, {4.5080, -0.1391}, {5.7701, -0.1622}, {7.8449, -0.2042},
+    {11.9091, -0.2483}, {23.9733, -0.3176}};
+inline constexpr FigurePoint kTest8BetaCaseB[] = {
+    {0.1872, -0.8152},  {0.3583, -0.6262}, {0.5508, -0.4394}, {0.7647, -0.2378}, {0.9786, -0.0173},
+    {1.2139, 0.0961},   {1.4920, 0.1108},  {1.7701, 0.0898},  {2.0909, 0.0583},  {2.5187, 0.0058},
+    {2.9893, -0.0488},  {3.6310, -0.1034}, {4.5080, -0.1391}, {5.7701, -0.1622}, {7.8449, -0.1055},
+    {11.9091, -0.1076}, {23.9947, -0.1055}};
 
 }  // namespace contactlaws::testing
 
