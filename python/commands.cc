@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
+#include "sim/start_contact.h"
 #include "sim/summary.h"
 #include "sim/timestep_advice.h"
 
@@ -61,9 +62,12 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   // the arena sized as the command line sizes it (the same work per step)
   const Scene scene(args.scene, cli::LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
-  std::vector<std::string> warnings;
+  // a start deep in contact, whatever the step; a fixed step's own
+  std::vector<std::string> warnings = DeepStartWarnings(*sim, StartContacts(sim.get()));
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
-  if (!common.auto_timestep) warnings = TimestepWarnings(*sim, advice);
+  if (!common.auto_timestep) {
+    for (std::string& w : TimestepWarnings(*sim, advice)) warnings.push_back(std::move(w));
+  }
 
   const std::vector<std::string> columns = sim->Columns();
   auto values = std::make_unique<std::vector<double>>();

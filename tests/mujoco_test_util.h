@@ -117,6 +117,22 @@ inline std::string CubeOnFloorXml(double timestep, double z, std::string_view ta
                      timestep, z, tag_keys);
 }
 
+// A 6 cm cube of 0.2 kg on a floor (plane-box: 4 corners), its bottom `depth`
+// m into the floor, sliding at 1.2 m/s: zhiying-qishao e = 0.3, K 1e7 N/m^1.5,
+// coulomb mu 0.2, at a fixed 5e-5 s (the lead's slide.xml block).
+inline std::string SlidingBlockXml(double depth) {
+  return fmt::format(R"(<mujoco>
+  <option timestep="5e-5" integrator="RK4"/>
+  <worldbody><geom name="floor" type="plane" size="2 2 0.1"/>
+    <body name="block" pos="0 0 {0}"><freejoint/>
+      <geom name="block" type="box" size="0.03 0.03 0.03" mass="0.2"/></body></worldbody>
+  <keyframe><key qpos="0 0 {0} 1 0 0 0" qvel="1.2 0.3 0 0 0 0"/></keyframe>
+  <custom><text name="contactlaw:block-floor" data="geom1=block geom2=floor
+    law=zhiying-qishao restitution=0.3 stiffness=1e7 friction=coulomb mu=0.2"/></custom>
+</mujoco>)",
+                     0.03 - depth);
+}
+
 // A ball (radius 0.1 m, mass `mass` kg) with its centre at `height` m above a
 // floor plane (default: 0.1 mm from touching), moving down at `speed` m/s,
 // gravity off unless asked: the 1-D impact of the closed forms.

@@ -47,6 +47,22 @@ def test_run_gives_the_command_lines_files(tmp_path, scene, options):
         assert float(fields[5]) == pytest.approx(row[6], rel=5e-6)
 
 
+def test_a_block_starting_deep_warns_as_the_command_line_does(tmp_path):
+    # a 0.2 kg cube 0.1 mm into its floor: 40 N against its 1.962 N weight
+    scene = tmp_path / "deep.xml"
+    scene.write_text("""<mujoco><worldbody><geom name="floor" type="plane" size="2 2 0.1"/>
+      <body name="block" pos="0 0 0.0299"><freejoint/>
+        <geom name="block" type="box" size="0.03 0.03 0.03" mass="0.2"/></body></worldbody>
+      <custom><text name="contactlaw:block-floor" data="geom1=block geom2=floor
+        law=zhiying-qishao restitution=0.3 stiffness=1e7"/></custom></mujoco>""")
+    printed = cli("run", str(scene), "--duration", "0.001", "--timestep", "auto").stderr
+    with pytest.warns(UserWarning) as caught:
+        contactlaws.run(scene, duration=0.001, timestep="auto")
+    deep = [str(w.message) for w in caught if "deep in contact" in str(w.message)]
+    assert len(deep) == 1 and deep[0].split(": ", 1)[1] in printed
+    assert "starts 0.0001 m deep in contact: its law pushes with 40 N" in deep[0]
+
+
 def test_refused_values_raise_the_command_lines_message():
     refused = cli("run", BALL, "--restitution=1.5", check=False)
     assert refused.returncode == 2

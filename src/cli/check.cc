@@ -12,6 +12,8 @@
 #include "cli/report.h"
 #include "sim/contact_steps.h"
 #include "sim/estimate.h"
+#include "sim/start_contact.h"
+#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 
@@ -80,10 +82,42 @@ bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate&
   return !ok;
 }
 
+// A start's lag this much shorter than the one at rest binds the step: beyond
+// DampingCoefficient's rounding (a block placed at its static depth has the
+// same lag to 1e-15).
+constexpr double kShorterLag = 1e-6;  // relative
+
+// The lag of the law's damping where the tag's pairs start in contact (the
+// shortest, at their points' depths: StartContacts) when it is shorter than
+// rest_lag, the one at rest (s); true when the timestep is too coarse for it.
+// Nothing for a tag none of whose pairs starts in contact deeper than
+// kTouchingGap.
+bool PrintStart(const Simulation& sim, int tag, const std::vector<StartContact>& starts,
+                double rest_lag, bool automatic, std::FILE* out) {
+  const StartContact* shortest = nullptr;
+  for (const StartContact& s : starts) {
+    if (sim.contact_model().pairs()[s.pair].tag != tag) continue;
+    if (!shortest || s.lag < shortest->lag) shortest = &s;
+  }
+  if (!shortest || !(shortest->lag < rest_lag * (1 - kShorterLag))) return false;
+  const bool ok = automatic || sim.model()->opt.timestep <= shortest->timestep();
+  fmt::print(out,
+             "  at the start: damping lag {:.3g} s at the depth {:.4g} m of {}, its law's force "
+             "{:.4g} N against the load {:.4g} N: {} (needs timestep <= {:.3g} s{})\n",
+             shortest->lag, shortest->depth, PairName(sim, shortest->pair), shortest->force,
+             shortest->load,
+             automatic ? "--timestep auto keeps to it"
+             : ok      ? "ok"
+                       : "TOO COARSE",
+             shortest->timestep(), ok ? "" : ", or --settle");
+  return !ok;
+}
+
 // Tag t resolved, its estimated contact and the timestep it needs; true when
 // the timestep is too coarse for the estimate.
-bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
-              std::optional<double> accuracy, std::FILE* out) {
+bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
+              std::optional<double> impact_velocity, std::optional<double> accuracy,
+              std::FILE* out) {
   const mjModel* m = sim->model();
   const ContactModel& cm = sim->contact_model();
   const double dt = m->opt.timestep;
@@ -130,7 +164,10 @@ bool PrintTag(Simulation* sim, int t, std::optional<double> impact_velocity,
   // both lines are printed, whatever the first says
   const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy, out);
   const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value(), out);
-  const bool side_coarse = friction_coarse || resting_coarse;  // beside the duration
+  const bool start_coarse = PrintStart(*sim, t, starts, EstimateResting(cm, worst, estimate).lag,
+                                       accuracy.has_value(), out);
+  // beside the duration
+  const bool side_coarse = friction_coarse || resting_coarse || start_coarse;
   if (!std::isfinite(estimate.contact_duration)) {
     fmt::print(out,
                "  contact duration: not estimated (nothing brings the geoms together, or "
@@ -200,13 +237,15 @@ int CheckCommand(const CheckArgs& args) {
   std::unique_ptr<Simulation> sim = scene.Make(options);
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
-  mj_forward(sim->model(), sim->data());
+  const std::vector<StartContact> starts = StartContacts(sim.get());  // calls mj_forward
   std::FILE* out = args.report;
   PrintSettings(*sim, out);
   int coarse = 0;
   const int tags = static_cast<int>(sim->contact_model().tags().size());
   fmt::print(out, "\n{} contactlaw tag(s)\n", tags);
-  for (int t = 0; t < tags; ++t) coarse += PrintTag(sim.get(), t, impact_velocity, accuracy, out);
+  for (int t = 0; t < tags; ++t) {
+    coarse += PrintTag(sim.get(), t, starts, impact_velocity, accuracy, out);
+  }
   PrintDrives(*sim, out);
   if (coarse) {
     fmt::print(out, "\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);

@@ -27,6 +27,7 @@
 #include "render/frame_sink.h"
 #include "render/tracking_camera.h"
 #include "scene/number.h"
+#include "sim/start_contact.h"
 #include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
@@ -99,6 +100,9 @@ int RenderCommand(const RenderArgs& args) {
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
   ReportSettle(*sim);
+  for (const std::string& w : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
+    Warn(scene.path(), w);
+  }
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
   if (!plan.common.auto_timestep) {
     for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);

@@ -13,6 +13,7 @@
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
+#include "sim/start_contact.h"
 #include "sim/summary.h"
 #include "sim/timestep_advice.h"
 
@@ -64,6 +65,9 @@ int RunCommand(const RunArgs& args) {
   if (args.output) trajectory.emplace(*args.output);
   if (args.impacts) impacts.emplace(*args.impacts);
 
+  for (const std::string& w : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
+    Warn(scene.path(), w);
+  }
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
   if (!auto_timestep) {
     for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);

@@ -21,6 +21,7 @@
 #include "cli/parallel.h"
 #include "cli/report.h"
 #include "scene/number.h"
+#include "sim/start_contact.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -289,6 +290,10 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
   for (const RunSpec& spec : specs) {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
     WarnAboutTags(sim->contact_model(), &warned);
+    // the scene's start, whatever the run: once each
+    for (const std::string& text : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
+      if (warned.insert(text).second) Warn(scene.path(), text);
+    }
     advices.push_back(AdviseTimestep(sim.get()));
     if (auto_timestep) continue;  // the steps will resolve the contacts
     for (const std::string& text : TimestepWarnings(*sim, advices.back())) {

@@ -195,12 +195,7 @@ double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
 }
 
 ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
-  ContactState state;
-  state.depth = e.depth;
-  state.depth_rate = e.depth_rate;
-  state.impact_velocity = e.impact_velocity;
-  state.effective_mass = effective_mass_[e.pair];
-  return state;
+  return PointState(e, effective_mass_[e.pair]);
 }
 
 double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
@@ -251,7 +246,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   // DampingCoefficient)
   for (const ContactData::Evaluation& e : contacts_.latest()) {
     double& c = pair_damping_[e.pair];
-    if (c > 0) step = std::min(step, effective_mass_[e.pair] / c);
+    step = std::min(step, DamperLag(effective_mass_[e.pair], c));
     c = 0;
   }
   // and friction's dampers, on the inertia at the points (the points come

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sim/estimate.h"
 
@@ -14,6 +15,28 @@ ContactSteps::ContactSteps(double accuracy)
 
 double ContactSteps::PerContact(LawId law) const {
   return Law(law).family == LawFamily::kLinear ? kelvin_voigt_ : hertz_family_;
+}
+
+ContactState PointState(const PointEvaluation& e, double effective_mass) {
+  ContactState state;
+  state.depth = e.depth;
+  state.depth_rate = e.depth_rate;
+  state.impact_velocity = e.impact_velocity;
+  state.effective_mass = effective_mass;
+  return state;
+}
+
+double DamperLag(double effective_mass, double damping) {
+  return damping > 0 ? effective_mass / damping : std::numeric_limits<double>::infinity();
+}
+
+double PairDamping(const ContactData& contacts, int pair, double effective_mass) {
+  const LawParams& law = contacts.model().pairs()[pair].params;
+  double damping = 0;
+  for (const PointEvaluation& e : contacts.latest()) {
+    if (e.pair == pair) damping += DampingCoefficient(law, PointState(e, effective_mass));
+  }
+  return damping;
 }
 
 PairSteps::PairSteps(const ContactModel& cm, const std::vector<double>& effective_mass,

@@ -3,7 +3,8 @@
 // The steps the auto timestep (auto_timestep.h) gives a contact, as functions
 // of the accuracy's steps per contact: the step that resolves a normal
 // contact of a known duration, the step of its tangential dynamics and that
-// of a settled contact. `check` reports them from the same functions.
+// of a settled contact, and the lag of a pair's law damping. `check` reports
+// them from the same functions.
 
 #ifndef CONTACTLAWS_SIM_CONTACT_STEPS_H_
 #define CONTACTLAWS_SIM_CONTACT_STEPS_H_
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "contactlaws/auto_timestep.h"
+#include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws {
@@ -35,6 +37,20 @@ class ContactSteps {
   double hertz_family_;
   double kelvin_voigt_;
 };
+
+// The law's view of an evaluated point of a pair of effective mass m (kg):
+// its depth, depth rate and v0.
+ContactState PointState(const PointEvaluation& e, double effective_mass);
+
+// The lag m / c (s) of a pair's law damping: its points' dampers
+// (DampingCoefficient at PointState) act in parallel, c (N s/m) their sum,
+// on the pair's effective mass m (kg). Infinite without damping. The auto
+// timestep keeps a contact's steps within one lag; a fixed step is warned
+// beyond kFixedStepDamperLags (estimate.h).
+double DamperLag(double effective_mass, double damping);
+
+// c of pair's points at the latest evaluation of contacts, added (N s/m).
+double PairDamping(const ContactData& contacts, int pair, double effective_mass);
 
 // The fine and settled steps of each pair of a model: its elastic contact
 // duration (as a power of the impact speed) over ContactSteps.

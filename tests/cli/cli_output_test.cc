@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -177,6 +178,62 @@ TEST(CliOutputTest, AContactThatWouldHangAtRestIsWarnedBeforeTheRunAndInCheck) {
   EXPECT_EQ(RunCli("run " + raised + " --duration 0.001").output.find("at rest"), std::string::npos);
   const Result fine = RunCli("check " + raised);
   EXPECT_NE(fine.output.find("at rest: damping lag 0.000159 s"), std::string::npos) << fine.output;
+}
+
+// Occurrences of what in text.
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The lead's slide.xml block, 0.1 mm into its floor: 40 N against its 1.962 N
+// weight (zhiying-qishao, 4 corners). Its runs warn once and point to
+// --settle; check takes the damper's lag at that depth (20.4x shorter than at
+// rest) and flags 5e-5 s. At its static depth neither happens.
+TEST(CliOutputTest, ABlockStartingDeepIsWarnedOnceAndCheckTakesTheStartsDepth) {
+  const std::string deep = testing::WriteScene("starts_deep", testing::SlidingBlockXml(1e-4));
+  const std::string warning =
+      "contactlaw:block-floor (block, floor): starts 0.0001 m deep in contact: its law pushes "
+      "with 40 N against the 1.962 N that presses it (20.4 times, beyond the 2.5 times of a "
+      "body placed touching; at rest under that load its 4 points would be 1.34e-05 m deep)";
+  const Result run = RunCli("run " + deep + " --duration 0.001");
+  EXPECT_EQ(Count(run.output, warning), 1) << run.output;
+  EXPECT_NE(run.output.find("--settle moves the bodies in contact into the static equilibrium"),
+            std::string::npos)
+      << run.output;
+  const Result compare = RunCli("compare " + deep + " --laws zhiying-qishao --restitution "
+                                "0.3,0.6 --duration 0.001 --quiet --output-dir " +
+                                ::testing::TempDir() + "/starts_deep");
+  EXPECT_EQ(Count(compare.output, warning), 1) << compare.output;
+  const Result settled = RunCli("run " + deep + " --duration 0.001 --settle");
+  EXPECT_EQ(settled.output.find("deep in contact"), std::string::npos) << settled.output;
+
+  const Result check = RunCli("check " + deep);
+  EXPECT_NE(check.output.find("  at rest: damping lag 3.68e-05 s under the weight 1.962 N at the "
+                              "v0 floor 0.001 m/s: ok"),
+            std::string::npos)
+      << check.output;
+  EXPECT_NE(check.output.find("  at the start: damping lag 1.81e-06 s at the depth 0.0001 m of "
+                              "contactlaw:block-floor (block, floor), its law's force 40 N "
+                              "against the load 1.962 N: TOO COARSE (needs timestep <= "
+                              "3.61e-06 s, or --settle)"),
+            std::string::npos)
+      << check.output;
+  EXPECT_NE(check.output.find("warning: 1 tag(s) need a smaller timestep"), std::string::npos)
+      << check.output;
+
+  // 4 K d^1.5 = 1.962 N
+  const std::string rest = testing::WriteScene(
+      "starts_at_rest", testing::SlidingBlockXml(std::pow(1.962 / 4e7, 1 / 1.5)));
+  const Result quiet = RunCli("run " + rest + " --duration 0.001");
+  EXPECT_EQ(quiet.output.find("deep in contact"), std::string::npos) << quiet.output;
+  const Result fine = RunCli("check " + rest);
+  // its lag at the start is the one at rest: check's table is unchanged
+  EXPECT_NE(fine.output.find("  at rest: damping lag 3.68e-05 s"), std::string::npos)
+      << fine.output;
+  EXPECT_EQ(fine.output.find("at the start"), std::string::npos) << fine.output;
+  EXPECT_EQ(fine.output.find("warning:"), std::string::npos) << fine.output;
 }
 
 // The step of check's "  --timestep auto: steps of X s" line (the normal
