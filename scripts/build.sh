@@ -7,5 +7,7 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
 
 bash scripts/install-deps.sh
-cmake -S "$repo" -B "$repo/build" -DCMAKE_BUILD_TYPE=Release
+source scripts/generator.sh
+# shellcheck disable=SC2046  # the generator's words, or none
+cmake -S "$repo" -B "$repo/build" $(generator_args "$repo/build") -DCMAKE_BUILD_TYPE=Release
 cmake --build "$repo/build" -j"$(nproc)"

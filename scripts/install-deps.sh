@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential
   cmake
+  ninja-build         # the builds' generator (scripts/generator.sh)
   libmujoco-dev
   libqhull-dev        # Debian's mujoco CMake config references /usr/include/libqhull_r
   libeigen3-dev

@@ -25,6 +25,7 @@ set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
+source scripts/generator.sh
 
 jobs=2  # the machine's cores; ctest -j and the builds
 fuzz_seconds="${FUZZ_SECONDS:-60}"
@@ -46,7 +47,8 @@ configure_sanitized() {
   # tests are not run there either: label preload)
   # nor the Python module (its tests cannot load an instrumented module:
   # label python) and the MPI build (label mpi), which no sanitized test runs
-  cmake -S "$repo" -B "$repo/$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  # shellcheck disable=SC2046  # the generator's words, or none
+  cmake -S "$repo" -B "$repo/$dir" $(generator_args "$repo/$dir") -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCONTACTLAWS_BUILD_PLUGIN=OFF -DCONTACTLAWS_PYTHON=OFF -DCONTACTLAWS_MPI=OFF \
     -DCMAKE_CXX_COMPILER="$cxx" \
     -DCMAKE_CXX_FLAGS="$cflags" \
