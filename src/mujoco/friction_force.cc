@@ -7,13 +7,14 @@
 
 #include "contactlaws/friction.h"
 #include "mujoco/kinematics.h"
+#include "mujoco/vec3.h"
 
 namespace contactlaws {
 namespace {
 
 // v minus its component along the unit normal n.
 void Project(const mjtNum n[3], mjtNum v[3]) {
-  const mjtNum along = mju_dot3(v, n);
+  const mjtNum along = vec3::Dot(v, n);
   for (int i = 0; i < 3; ++i) v[i] -= along * n[i];
 }
 
@@ -144,8 +145,8 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
     Project(n, in.stretch);
     ProjectKeepingSize(n, committed.spring);
   }
-  mju_copy3(in.committed, committed.spring);
-  mju_copy3(in.slip, e->slip);
+  vec3::Copy(in.committed, committed.spring);
+  vec3::Copy(in.slip, e->slip);
   in.was_sliding = committed.sliding;
   in.normal_force = std::max(e->force, 0.0);
 
@@ -164,19 +165,19 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   const FrictionOutput out = EvaluateFriction(params, in);
   for (int b = 0; b < 2; ++b) {
     mjtNum push[3];
-    mju_scl3(push, out.force, b == 1 ? 1.0 : -1.0);
+    vec3::Scale(push, out.force, b == 1 ? 1.0 : -1.0);
     AddPointForce(model.model(), d, pair.body[b], con.pos, push, d->qfrc_passive);
   }
-  mju_copy3(e->friction, out.force);
+  vec3::Copy(e->friction, out.force);
   e->friction_energy = out.stored_energy;
   // the power friction takes from the bodies (the ledger: contact_memory.h)
-  e->friction_power = -mju_dot3(out.force, e->slip);
+  e->friction_power = -vec3::Dot(out.force, e->slip);
   FrictionState& next = e->friction_state;
-  mju_copy3(next.spring, out.state);
+  vec3::Copy(next.spring, out.state);
   next.sliding = out.sliding;
   next.stiffness = in.stiffness;
-  mju_copy4(next.orientation[0], d->xquat + 4 * b0);
-  mju_copy4(next.orientation[1], d->xquat + 4 * b1);
+  std::copy_n(d->xquat + 4 * b0, 4, next.orientation[0]);
+  std::copy_n(d->xquat + 4 * b1, 4, next.orientation[1]);
   if (rolling) AddRollingResistance(model.model(), d, pair, committed, in.stiffness, e);
 }
 

@@ -6,29 +6,12 @@
 
 #include <Eigen/Core>
 
+#include "mujoco/vec3.h"
+
 namespace contactlaws {
-namespace {
-
-// mju_dot3, mju_cross and mju_sub3 in the same order of operations (the
-// same bits), inlined: these run for every point of every RK4 stage, where
-// the calls into libmujoco cost more than the arithmetic.
-inline mjtNum Dot3(const mjtNum a[3], const mjtNum b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-inline void Cross(mjtNum res[3], const mjtNum a[3], const mjtNum b[3]) {
-  res[0] = a[1] * b[2] - a[2] * b[1];
-  res[1] = a[2] * b[0] - a[0] * b[2];
-  res[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline void Sub3(mjtNum res[3], const mjtNum a[3], const mjtNum b[3]) {
-  res[0] = a[0] - b[0];
-  res[1] = a[1] - b[1];
-  res[2] = a[2] - b[2];
-}
-
-}  // namespace
+using vec3::Cross;
+using vec3::Dot;
+using vec3::Sub;
 
 void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
                    const mjtNum force[3], mjtNum* qfrc) {
@@ -39,11 +22,11 @@ void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum poi
   // qfrc_j += f . (lin_j + ang_j x r) = f . lin_j + ang_j . (r x f), with
   // cdof_j = (ang_j, lin_j) at the subtree com of the body's root
   mjtNum r[3], moment[3];
-  Sub3(r, point, d->subtree_com + 3 * m->body_rootid[body]);
+  Sub(r, point, d->subtree_com + 3 * m->body_rootid[body]);
   Cross(moment, r, force);
   for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
     const mjtNum* cdof = d->cdof + 6 * j;
-    qfrc[j] += Dot3(cdof, moment) + Dot3(cdof + 3, force);
+    qfrc[j] += Dot(cdof, moment) + Dot(cdof + 3, force);
   }
 }
 
@@ -53,7 +36,7 @@ void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[
   if (b <= 0) return;  // welded to the world: no dofs
   // qfrc_j += ang_j . torque, cdof_j = (ang_j, lin_j)
   for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
-    qfrc[j] += Dot3(d->cdof + 6 * j, torque);
+    qfrc[j] += Dot(d->cdof + 6 * j, torque);
   }
 }
 
@@ -65,13 +48,13 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
     return;
   }
   if (m->body_weldid[body] == 0) {
-    mju_zero3(vel);
+    vel[0] = vel[1] = vel[2] = 0;
     return;
   }
   // cvel: (angular, linear) velocity at the subtree com of the body's root
   const mjtNum* cvel = d->cvel + 6 * body;
   mjtNum offset[3], turn[3];
-  Sub3(offset, point, d->subtree_com + 3 * m->body_rootid[body]);
+  Sub(offset, point, d->subtree_com + 3 * m->body_rootid[body]);
   Cross(turn, cvel, offset);
   for (int i = 0; i < 3; ++i) vel[i] = cvel[3 + i] + turn[i];
 }

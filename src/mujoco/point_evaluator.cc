@@ -7,6 +7,7 @@
 
 #include "mujoco/kinematics.h"
 #include "mujoco/friction_force.h"
+#include "mujoco/vec3.h"
 
 namespace contactlaws {
 
@@ -34,27 +35,27 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) continue;
-      PointEvaluation e = EvaluatePoint(d, p, con, episodes, start, &taken);
+      // the point is made where it is kept (it is large: no copy)
+      PointEvaluation& e = latest_.emplace_back();
+      EvaluatePoint(d, p, con, episodes, start, &taken, &e);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
       for (int b = 0; b < 2; ++b) {
-        mju_scl3(push, con.frame, b == 1 ? e.force : -e.force);
+        vec3::Scale(push, con.frame, b == 1 ? e.force : -e.force);
         AddPointForce(m, d, pair.body[b], con.pos, push, d->qfrc_passive);
       }
       AddFriction(model_, d, episodes, pair, con, &e);
-      latest_.push_back(e);
     }
   }
 }
 
-PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
-                                              const EpisodeLog& episodes,
-                                              const StepStartVelocities& start,
-                                              uint64_t* taken) const {
+void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
+                                   const EpisodeLog& episodes, const StepStartVelocities& start,
+                                   uint64_t* taken, PointEvaluation* out) const {
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
-  PointEvaluation e;
+  PointEvaluation& e = *out;
   e.pair = p;
   e.tag = pair.tag;
   e.depth = -con.dist;
@@ -62,8 +63,8 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   // which physical point: where it sits on the two bodies
   for (int b = 0; b < 2; ++b) {
     mjtNum offset[3];
-    mju_sub3(offset, con.pos, d->xpos + 3 * pair.body[b]);
-    mju_rotVecMatT(e.local[b], offset, d->xmat + 9 * pair.body[b]);
+    vec3::Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
+    vec3::RotateTransposed(e.local[b], offset, d->xmat + 9 * pair.body[b]);
   }
   e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
 
@@ -71,11 +72,11 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   mjtNum v0[3], v1[3], relative[3];
   PointVelocity(model_, d, pair.body[0], con.pos, v0);
   PointVelocity(model_, d, pair.body[1], con.pos, v1);
-  mju_sub3(relative, v0, v1);
-  e.depth_rate = mju_dot3(relative, normal);
+  vec3::Sub(relative, v0, v1);
+  e.depth_rate = vec3::Dot(relative, normal);
   // the slip before its projection into the tangent plane (SlipAndSpin):
   // the same two velocities, computed once
-  mju_sub3(e.slip, v1, v0);
+  vec3::Sub(e.slip, v1, v0);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
   if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
@@ -109,9 +110,8 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   const ContactForce f = EvaluateLaw(pair.params, state);
   e.force = f.total;
   e.dissipated_power = f.dissipated_power(e.depth_rate);
-  mju_copy3(e.pos, con.pos);
-  mju_copy3(e.normal, normal);
-  return e;
+  vec3::Copy(e.pos, con.pos);
+  vec3::Copy(e.normal, normal);
 }
 
 }  // namespace contactlaws

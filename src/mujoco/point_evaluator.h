@@ -42,10 +42,11 @@ class PointEvaluator {
   double latest_time() const { return latest_time_; }  // s
 
  private:
-  // The normal law at a contact point of pair p (narrowphase output con);
-  // taken: the pair's open episodes already matched in this evaluation.
-  PointEvaluation EvaluatePoint(mjData* d, int p, const mjContact& con, const EpisodeLog& episodes,
-                                const StepStartVelocities& start, uint64_t* taken) const;
+  // The normal law at a contact point of pair p (narrowphase output con),
+  // into *e (default-constructed); taken: the pair's open episodes already
+  // matched in this evaluation.
+  void EvaluatePoint(mjData* d, int p, const mjContact& con, const EpisodeLog& episodes,
+                     const StepStartVelocities& start, uint64_t* taken, PointEvaluation* e) const;
 
   const ContactModel& model_;
   ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
