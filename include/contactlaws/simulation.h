@@ -74,6 +74,10 @@ struct SimulationOptions {
   // equilibrium of their contacts (SettleReport); Simulation::settled() says what
   // moved. Throws Error when there is none.
   bool settle = false;
+  // Steps that keep the bodies' motion and the contacts' memory alone
+  // (ContactData::KeepMotionOnly): for runs whose rows are the bodies' and
+  // joints' motion and read nothing else of the data (replay's rollouts).
+  bool motion_only = false;
 };
 
 // One run of a model: its data, its laws (the tags with the run's

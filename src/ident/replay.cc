@@ -133,6 +133,7 @@ class Replay::Rollout {
     SimulationOptions simulation = options.simulation;
     simulation.columns = ColumnGroups{true, true, false, false, false};
     simulation.settle = false;  // each trajectory's start is settled, not the scene's
+    simulation.motion_only = true;  // the rows read the motion alone
     if (options.edits.empty()) {
       sim_ = replay.scene_.Make(simulation);  // the scene's model, shared
     } else {

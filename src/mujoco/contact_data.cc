@@ -63,6 +63,12 @@ void ContactData::Reset() {
   step_start_->Forget();
 }
 
+void ContactData::KeepMotionOnly() {
+  view_.ncam = 0;
+  view_.nlight = 0;
+  committer_->ListVisiblePoints(false);
+}
+
 bool ContactData::ClaimPair(int g1, int g2) {
   const int p = model_.FindPair(g1, g2);
   proposals_->Claim(p);

@@ -110,7 +110,7 @@ void StepCommitter::CheckDivergence(const mjData* d, const StepCapture& capture,
 
 void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
                               const StepCapture& capture, const StepStartVelocities& start) {
-  AppendVisiblePoints(model_, latest, d, &visible_overflow_);
+  if (list_visible_points_) AppendVisiblePoints(model_, latest, d, &visible_overflow_);
   CheckDivergence(d, capture, start);
   if (!capture.held() || divergence_) return;
 

@@ -43,6 +43,9 @@ class StepCommitter {
   // Forgets every episode, collision, the energy and any divergence.
   void Reset();
 
+  // AfterStep lists the tagged points in d->contact (the default), or not.
+  void ListVisiblePoints(bool list) { list_visible_points_ = list; }
+
   const EpisodeLog& episodes() const { return episodes_; }
   const CollisionLog& collisions() const { return collisions_; }
   const DissipationLedger& ledger() const { return ledger_; }
@@ -57,6 +60,7 @@ class StepCommitter {
   std::array<int, 3> bad_state_warnings_ = {0, 0, 0};
   std::optional<Divergence> divergence_;
   VisibleContactsOverflow visible_overflow_;
+  bool list_visible_points_ = true;
   EpisodeLog episodes_;
   CollisionLog collisions_;
   DissipationLedger ledger_;

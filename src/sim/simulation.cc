@@ -44,6 +44,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   // the run's own options, on its data's side
   if (options.timestep) contacts_->options().timestep = *options.timestep;
   if (options.integrator) contacts_->options().integrator = *options.integrator;
+  if (options.motion_only) contacts_->KeepMotionOnly();
 
   columns_ = options.columns;
   motion_only_ = !columns_.pairs && !columns_.friction && !columns_.energy &&

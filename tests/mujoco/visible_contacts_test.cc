@@ -2,7 +2,7 @@
 //
 // AppendVisibleContacts: the tagged contact points listed in d->contact,
 // outside the solver, drawn by mjv_updateScene as contact points, gone at the
-// next collision pass, never beyond nconmax.
+// next collision pass, never beyond nconmax; none for motion-only steps.
 
 #include <cmath>
 #include <string>
@@ -121,6 +121,30 @@ TEST_F(VisibleContactsTest, NothingOutOfContact) {
   VisibleContactsOverflow overflow;
   EXPECT_EQ(AppendVisibleContacts(sim.contacts(), sim.data(), &overflow), 0);
   EXPECT_EQ(sim.data()->ncon, 0);
+}
+
+TEST_F(VisibleContactsTest, MotionOnlyStepsKeepTheMotionAndListOrPlaceNothingElse) {
+  // the cube toss scene (a light, a box landing on a board), run through its
+  // landing twice: the motion-only run (ContactData::KeepMotionOnly) lists
+  // no points and places no light, and moves the same to the bit
+  SimulationOptions motion_only;
+  motion_only.motion_only = true;
+  Simulation& full = MakeSceneSimulation("cube_toss.xml");
+  Simulation& lean = MakeSceneSimulation("cube_toss.xml", motion_only);
+  const int steps = 600;  // 0.41 s: the cube falls 0.15 m to the board in 0.17 s
+  for (int k = 0; k < steps; ++k) {
+    full.Step();
+    lean.Step();
+  }
+  const mjModel* m = full.model();
+  ASSERT_FALSE(full.contacts().latest().empty()) << "the cube is on the board";
+  EXPECT_GT(full.data()->ncon, 0);
+  EXPECT_EQ(lean.data()->ncon, 0);
+  ASSERT_EQ(m->nlight, 1);
+  EXPECT_EQ(full.data()->light_xpos[2], 2.0);  // <light pos="0 0 2"/>
+  EXPECT_EQ(lean.data()->light_xpos[2], 0.0);  // never placed
+  for (int i = 0; i < m->nq; ++i) EXPECT_EQ(lean.data()->qpos[i], full.data()->qpos[i]) << i;
+  for (int i = 0; i < m->nv; ++i) EXPECT_EQ(lean.data()->qvel[i], full.data()->qvel[i]) << i;
 }
 
 }  // namespace
