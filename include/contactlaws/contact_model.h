@@ -147,7 +147,10 @@ class ContactModel {
   int FindPair(int g1, int g2) const;
 
   // The drive of body b, or nullptr.
-  const Drive* FindDrive(int body) const;
+  const Drive* FindDrive(int body) const {  // inline: asked at every contact point
+    const int i = body_drive_[body];
+    return i < 0 ? nullptr : &drives_[i];
+  }
 
  private:
   void ReadDrives();

@@ -176,8 +176,10 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   vec3::Copy(next.spring, out.state);
   next.sliding = out.sliding;
   next.stiffness = in.stiffness;
-  std::copy_n(d->xquat + 4 * b0, 4, next.orientation[0]);
-  std::copy_n(d->xquat + 4 * b1, 4, next.orientation[1]);
+  for (int k = 0; k < 4; ++k) {
+    next.orientation[0][k] = d->xquat[4 * b0 + k];
+    next.orientation[1][k] = d->xquat[4 * b1 + k];
+  }
   if (rolling) AddRollingResistance(model.model(), d, pair, committed, in.stiffness, e);
 }
 

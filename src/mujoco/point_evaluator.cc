@@ -13,6 +13,10 @@ namespace contactlaws {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
     : model_(model), contacts_(MakeContactBuffer()) {
+  for (const GeomPair& pair : model.pairs()) {
+    reads_mass_.push_back(Law(pair.params.kind).family == LawFamily::kLinear &&
+                          !pair.params.damping);
+  }
   latest_.reserve(std::min<size_t>(model.slot_count(), 4 * model.pairs().size()));
 }
 
@@ -79,7 +83,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   vec3::Sub(e.slip, v1, v0);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
-  if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
+  if (reads_mass_[p]) {
     state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal);
   }
   const int open = e.episode;

@@ -49,6 +49,9 @@ class PointEvaluator {
                      const StepStartVelocities& start, uint64_t* taken, PointEvaluation* e) const;
 
   const ContactModel& model_;
+  // per pair: its law reads the effective mass (Kelvin-Voigt with its
+  // damping from e), resolved once
+  std::vector<char> reads_mass_;
   ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
   std::vector<PointEvaluation> latest_;
   double latest_time_ = 0;

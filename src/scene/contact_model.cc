@@ -360,9 +360,4 @@ int ContactModel::FindPair(int g1, int g2) const {
   return found == pair_index_.end() ? -1 : found->second;
 }
 
-const Drive* ContactModel::FindDrive(int body) const {
-  const int i = body_drive_[body];
-  return i < 0 ? nullptr : &drives_[i];
-}
-
 }  // namespace contactlaws
