@@ -99,9 +99,9 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   } else {
     // v0: the touch speed, or the largest approach rate committed since, for
     // a contact compressed faster than it touched (a pulse through touching
-    // bodies: Impact::chained)
+    // bodies: Episode::chained)
     const double committed = episodes.MaxApproach(open);
-    state.impact_velocity = std::max({episodes.impacts()[open].impact_velocity, committed,
+    state.impact_velocity = std::max({episodes.episodes()[open].impact_velocity, committed,
                                       pair.params.min_impact_velocity});
     e.max_approach = std::max(committed, e.depth_rate);
   }

@@ -2,7 +2,7 @@
 //
 // StepCommitter: what an accepted step leaves behind, once a step, from the
 // evaluation captured at the step's start state (hook_session.h): the
-// divergence check, the episodes of every contact point and the collisions
+// divergence check, the episodes of every contact point and the impacts
 // of every pair (contact_memory.h), the energy ledger, and the tagged contact
 // points listed in d->contact for MuJoCo's visualisation
 // (visible_contacts.h). The only writer of the per-contact memory.
@@ -40,11 +40,11 @@ class StepCommitter {
   void AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
                  const StepCapture& capture, const StepStartVelocities& start);
 
-  // Forgets every episode, collision, the energy and any divergence.
+  // Forgets every episode, impact, the energy and any divergence.
   void Reset();
 
   const EpisodeLog& episodes() const { return episodes_; }
-  const CollisionLog& collisions() const { return collisions_; }
+  const ImpactLog& impacts() const { return impacts_; }
   const DissipationLedger& ledger() const { return ledger_; }
   const std::optional<Divergence>& divergence() const { return divergence_; }
 
@@ -58,7 +58,7 @@ class StepCommitter {
   std::optional<Divergence> divergence_;
   VisibleContactsOverflow visible_overflow_;
   EpisodeLog episodes_;
-  CollisionLog collisions_;
+  ImpactLog impacts_;
   DissipationLedger ledger_;
 };
 

@@ -57,7 +57,7 @@ TEST(SweepTest, EveryLawMatchesTheExactRebound) {
       options.overrides.law = law.kind;
       options.overrides.restitution = e;
       options.overrides.dissipation = ExactCoefficient(e) / kSpeed;
-      const Impact impact = SweepFirstImpact(scene, options);
+      const Episode impact = SweepFirstImpact(scene, options);
       const double exact =
           ReadsDissipation(law.kind)
               ? ExactRebound(*options.overrides.dissipation * impact.impact_velocity)
@@ -121,7 +121,7 @@ TEST(ReferenceTest, SweepAgreesWithTheIndependentIntegration) {
   std::map<LawId, double> worst;  // largest e_post error per law, printed
   for (LawId law : testing::kPaperLaws) {
     for (double e : kPaperSweep) {
-      const Impact sim = SweepFirstImpact(scene, law, e, 1e-5);
+      const Episode sim = SweepFirstImpact(scene, law, e, 1e-5);
       const Reference ref = IntegrateDrop(drop, law, e);
       const std::string what = fmt::format("{} e = {}", LawName(law), e);
       const double error = std::abs(sim.restitution_post() - ref.restitution_post);
