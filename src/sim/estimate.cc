@@ -243,7 +243,7 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
     t.stiffness = TangentialStiffness(f, pair.params, depth);
     t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,
                          t.stiffness,
-                         f.tangential_stiffness ? ""
+                         f.stiffness_rule == TangentialStiffnessRule::kGiven ? ""
                          : resting              ? " (Mindlin, at the depth of its load at rest)"
                                                 : " (Mindlin, at the max depth)",
                          t.mass);
