@@ -59,13 +59,13 @@
 
 namespace contactlaws {
 
+namespace internal {
+// The facade's objects (src/mujoco/).
 class PointEvaluator;
 class ProposedPairs;
 class StepCapture;
 class StepCommitter;
 class StepStartVelocities;
-
-namespace internal {
 // MuJoCo's hooks (src/mujoco/hooks.cc): the only callers of ClaimPair and
 // ApplyForces.
 struct HookCalls;
@@ -185,11 +185,11 @@ class ContactData {
   const ContactModel& model_;
   mjData* d_;
   mjModel view_;  // the model's header with this data's options: model_view()
-  std::unique_ptr<ProposedPairs> proposals_;
-  std::unique_ptr<StepCapture> capture_;
-  std::unique_ptr<StepStartVelocities> step_start_;
-  std::unique_ptr<PointEvaluator> evaluator_;
-  std::unique_ptr<StepCommitter> committer_;
+  std::unique_ptr<internal::ProposedPairs> proposals_;
+  std::unique_ptr<internal::StepCapture> capture_;
+  std::unique_ptr<internal::StepStartVelocities> step_start_;
+  std::unique_ptr<internal::PointEvaluator> evaluator_;
+  std::unique_ptr<internal::StepCommitter> committer_;
 };
 
 }  // namespace contactlaws

@@ -17,6 +17,12 @@
 
 namespace contactlaws {
 
+using internal::PointEvaluator;
+using internal::ProposedPairs;
+using internal::StepCapture;
+using internal::StepCommitter;
+using internal::StepStartVelocities;
+
 ContactData::ContactData(const ContactModel& model, mjData* d)
     : model_(model),
       d_(d),

@@ -8,7 +8,7 @@
 #include "contactlaws/friction.h"
 #include "mujoco/kinematics.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 // v minus its component along the unit normal n.
@@ -180,4 +180,4 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   if (rolling) AddRollingResistance(model.model(), d, pair, committed, in.stiffness, e);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

@@ -8,7 +8,7 @@
 #include "mujoco/kinematics.h"
 #include "mujoco/friction_force.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
     : model_(model), contacts_(MakeContactBuffer()) {
@@ -114,4 +114,4 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   return e;
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

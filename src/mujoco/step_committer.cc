@@ -9,7 +9,7 @@
 
 #include "mujoco/kinematics.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 // The warnings of mj_checkPos, mj_checkVel and mj_checkAcc, each of which
@@ -131,4 +131,4 @@ void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& lat
   impacts_.Commit(capture.time(), points, episodes_);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

@@ -22,7 +22,7 @@
 #include "mujoco/hook_session.h"
 #include "mujoco/step_start.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class StepCommitter {
  public:
@@ -68,6 +68,6 @@ class StepCommitter {
 int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
                         mjData* d, VisibleContactsOverflow* overflow);
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_STEP_COMMITTER_H_

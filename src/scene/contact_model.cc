@@ -33,6 +33,8 @@ uint64_t PairKey(int g1, int g2) {
 
 }  // namespace
 
+namespace internal {
+
 // Resolves one tag's geom1/geom2 value to geom ids.
 class TagResolver {
  public:
@@ -75,6 +77,12 @@ class TagResolver {
   std::string_view source_;
   std::string_view tag_;
 };
+
+}  // namespace internal
+
+using internal::PairTagSpec;
+using internal::ParsePairTag;
+using internal::TagResolver;
 
 ContactModel::ContactModel(const mjModel* m, std::string source,
                            const Overrides& overrides)

@@ -10,9 +10,9 @@
 
 namespace contactlaws {
 
-PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const PairTagSpec& tag,
+PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const internal::PairTagSpec& tag,
                                  const Overrides& overrides) {
-  const FrictionTagSpec& spec = tag.friction;
+  const internal::FrictionTagSpec& spec = tag.friction;
   PairFriction out;
   FrictionParams& p = out.params;
   // MuJoCo 2.2 (mj_contactParam): the larger condim, and each friction

@@ -112,7 +112,8 @@ void FuzzParser(bool drive, std::string_view body) {
       }
       Say("valid drive tag " + spec.label);
     } else {
-      const contactlaws::PairTagSpec spec = contactlaws::ParsePairTag(kSceneName, name, data);
+      const contactlaws::internal::PairTagSpec spec =
+          contactlaws::internal::ParsePairTag(kSceneName, name, data);
       if (spec.label.empty() || spec.geom1.empty() || spec.geom2.empty() || !spec.law) {
         Finding("a pair tag without label, geoms or law");
       }
