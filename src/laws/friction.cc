@@ -95,7 +95,7 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
 }  // namespace
 
 double NormalStiffness(const LawParams& law, double depth) {
-  if (Law(law.kind).family == LawFamily::kLinear) return law.linear_stiffness;
+  if (Law(law.law).family == LawFamily::kLinear) return law.linear_stiffness;
   return law.exponent * law.stiffness * std::pow(depth, law.exponent - 1);
 }
 

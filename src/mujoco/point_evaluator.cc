@@ -78,7 +78,7 @@ PointEvaluation PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact&
   mju_sub3(e.slip, v1, v0);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
-  if (Law(pair.params.kind).family == LawFamily::kLinear && !pair.params.damping) {
+  if (Law(pair.params.law).family == LawFamily::kLinear && !pair.params.damping) {
     state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal);
   }
   const int open = e.episode;

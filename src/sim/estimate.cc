@@ -153,9 +153,9 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
 
   const LawParams& law = pair.params;
   const double v = e.impact_velocity;
-  if (std::isinf(e.effective_mass) || !(v > 0 || Law(law.kind).family == LawFamily::kLinear)) {
+  if (std::isinf(e.effective_mass) || !(v > 0 || Law(law.law).family == LawFamily::kLinear)) {
     e.max_depth = e.contact_duration = kInfinity;
-  } else if (Law(law.kind).family == LawFamily::kLinear) {
+  } else if (Law(law.law).family == LawFamily::kLinear) {
     e.max_depth = v * std::sqrt(e.effective_mass / law.linear_stiffness);
     e.contact_duration = ElasticContactDuration(law, e.effective_mass, v);
   } else {
@@ -176,7 +176,7 @@ double PairEffectiveMass(const ContactModel& cm, int pair_index) {
 
 double ElasticContactDuration(const LawParams& law, double mass, double speed) {
   if (std::isinf(mass)) return kInfinity;
-  if (Law(law.kind).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
+  if (Law(law.law).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
   return HertzContactDuration(law.stiffness, law.exponent, mass, speed);
 }
 

@@ -87,7 +87,7 @@ bool CheckWarnings(benchmark::State& state, const mjData* d) {
 // The paper's ball: K = 1.4e8 N/m^1.5, n = 1.5, k = 5e6 N/m, e = 0.9.
 LawParams PaperParams(LawId kind) {
   LawParams params;
-  params.kind = kind;
+  params.law = kind;
   params.restitution = 0.9;
   params.stiffness = 1.4e8;
   params.exponent = 1.5;

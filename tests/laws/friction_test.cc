@@ -188,7 +188,7 @@ TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
   // rounding of a few operations
   constexpr double kRounding = 1e-14;
   LawParams law;
-  law.kind = *ParseLawName("hunt-crossley");
+  law.law = *ParseLawName("hunt-crossley");
   law.stiffness = 1e9;
   law.restitution = 0.9;
   ResolveLawParams(&law);

@@ -248,7 +248,7 @@ TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   options.overrides.restitution = 0.4;
   Simulation& sim = LoadScene("bouncing_ball.xml", options);
   const LawParams& p = sim.contact_model().pairs().at(0).params;
-  EXPECT_EQ(p.kind, *ParseLawName("kelvin-voigt"));
+  EXPECT_EQ(p.law, *ParseLawName("kelvin-voigt"));
   EXPECT_EQ(p.linear_stiffness, 5e6);
   EXPECT_EQ(p.restitution, 0.4);
 

@@ -63,7 +63,7 @@ inline double Effective(double a, double b) { return std::isinf(a) ? b : a * b /
 // The normal law of the tag below: law=exact, its e, Hertz's K of the materials.
 inline LawParams NormalLaw(const ImpactCase& c) {
   LawParams law;
-  law.kind = *ParseLawName("exact");
+  law.law = *ParseLawName("exact");
   law.restitution = c.e;
   const double youngs_a = std::isinf(c.ra) ? kRigid * c.material.youngs : c.material.youngs;
   law.stiffness = HertzSphereStiffness(c.ra, kRadius,

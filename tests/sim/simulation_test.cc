@@ -293,7 +293,7 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   EXPECT_DOUBLE_EQ(sim.data()->qpos[2], 1.0);
   EXPECT_DOUBLE_EQ(m->opt.timestep, 1e-5);
   const GeomPair& pair = sim.contact_model().pairs().at(0);
-  EXPECT_EQ(pair.params.kind, *ParseLawName("flores"));
+  EXPECT_EQ(pair.params.law, *ParseLawName("flores"));
   EXPECT_EQ(pair.params.restitution, 0.9);
   EXPECT_EQ(pair.params.stiffness, 1.4e8);
   EXPECT_EQ(pair.params.exponent, 1.5);
