@@ -106,7 +106,7 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   py::array_t<double> trajectory({n, width}, owned->data(), free_rows);
 
   py::list impact_rows;
-  for (const Impact& impact : cli::ImpactsOf(sim->contacts(), cli::ImpactRows::kCollisions)) {
+  for (const Episode& impact : cli::ImpactsOf(sim->contacts(), cli::ImpactRows::kImpacts)) {
     impact_rows.append(cli::ImpactFields(*sim, impact));
   }
   return py::make_tuple(columns, trajectory, cli::ImpactColumns(), impact_rows,

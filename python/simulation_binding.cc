@@ -172,7 +172,7 @@ void BindSimulation(py::module_& m) {
            })
       .def("_impacts", [](const Simulation& sim) {
              py::list rows;
-             for (const Impact& impact : sim.contacts().impacts()) {
+             for (const Episode& impact : sim.contacts().impacts()) {
                rows.append(cli::ImpactFields(sim, impact));
              }
              return py::make_tuple(cli::ImpactColumns(), rows);

@@ -160,14 +160,14 @@ inline std::string DropXml(std::string_view tag_data, double speed,
 }
 
 // Steps sim until its first contact episode closes (or max_time): the episode.
-inline Impact FirstImpact(Simulation& sim, double max_time = 0.5) {
+inline Episode FirstImpact(Simulation& sim, double max_time = 0.5) {
   while (sim.time() < max_time) {
     sim.Step();
-    const std::vector<Impact>& impacts = sim.contacts().impacts();
+    const std::vector<Episode>& impacts = sim.contacts().impacts();
     if (!impacts.empty() && !impacts[0].open) return impacts[0];
   }
   ADD_FAILURE() << "no closed contact episode within " << max_time << " s";
-  return Impact{};
+  return Episode{};
 }
 
 }  // namespace contactlaws::testing

@@ -61,8 +61,8 @@
 //   6. Under RK4, a settled contact point (its depth rate below the law's
 //      floor of v0, min_impact_velocity, and its episode touched within
 //      kSettledTouchFactor of the floor or has lasted kSettledDurations
-//      elastic contact durations at its v0: past its collision) has no
-//      collision to resolve (Kelvin-Voigt's ball came to rest on the table
+//      elastic contact durations at its v0: past its impact) has no
+//      impact to resolve (Kelvin-Voigt's ball came to rest on the table
 //      from a touch at 1.15e-3 m/s, and took 1.4M steps of 7 us for it;
 //      Flores e = 0.3's from a touch at 0.1 m/s): its step is the
 //      elastic contact duration at the floor speed over
@@ -70,7 +70,7 @@
 //      step, RK4 being stable to 2.8; its static load compresses it more
 //      than a touch at the floor speed, ~1.2x the rate for a ball's weight,
 //      ~1.5x for a stack's bottom cube), whatever the accuracy, which is
-//      about collisions. The tangential step and the dampers' lags still
+//      about impacts. The tangential step and the dampers' lags still
 //      bound it. A ball resting on the driven table of Figs. 8-10 for most
 //      of its 10 s took 138k steps.
 //   7. The step is the smallest asked for, at most max_step (none by
@@ -111,7 +111,7 @@
 namespace contactlaws {
 
 // The accuracy the auto timestep delivers by default: the relative error
-// accepted in a collision's rebound (e_post), peak force and contact
+// accepted in an impact's rebound (e_post), peak force and contact
 // duration.
 inline constexpr double kDefaultAccuracy = 1e-3;
 
@@ -130,7 +130,7 @@ inline constexpr double kKelvinVoigtStepsAtDefault = 200;
 inline constexpr double kMaxAccuracy = 0.1;
 
 struct AutoTimestepOptions {
-  // The relative error accepted in a collision's rebound, peak force and
+  // The relative error accepted in an impact's rebound, peak force and
   // duration, in (0, kMaxAccuracy]: sets the steps per contact (above) and,
   // under Euler or implicit integration, the flight step.
   double accuracy = kDefaultAccuracy;
@@ -155,10 +155,10 @@ double KelvinVoigtStepsPerContact(double accuracy);
 // A settled contact's steps per elastic contact duration at the floor speed.
 inline constexpr double kSettledStepsPerContact = 6;
 // A touch slower than this many floors of v0 is a settling, not a
-// collision whose rebound a figure reads (1e-2 m/s at the default floor).
+// impact whose rebound a figure reads (1e-2 m/s at the default floor).
 inline constexpr double kSettledTouchFactor = 10;
 // A contact open this many of its elastic durations is past its
-// collision (a collision lasts one, its rebound included).
+// impact (an impact lasts one, its rebound included).
 inline constexpr double kSettledDurations = 3;
 
 class PairSteps;      // src/sim/contact_steps.h

@@ -41,7 +41,7 @@
 // Inside, ContactData is a facade over objects with one job each
 // (src/mujoco/): the hook session (the pairs the broadphase proposed, the
 // capture of the step's start evaluation), the point evaluator (the laws and
-// friction at each contact point), the step committer (episodes, collisions,
+// friction at each contact point), the step committer (episodes, impacts,
 // energy, divergence, visible contacts) and the step-start velocities.
 
 #ifndef CONTACTLAWS_CONTACT_DATA_H_
@@ -59,13 +59,13 @@
 
 namespace contactlaws {
 
+namespace internal {
+// The facade's objects (src/mujoco/).
 class PointEvaluator;
 class ProposedPairs;
 class StepCapture;
 class StepCommitter;
 class StepStartVelocities;
-
-namespace internal {
 // MuJoCo's hooks (src/mujoco/hooks.cc): the only callers of ClaimPair and
 // ApplyForces.
 struct HookCalls;
@@ -145,13 +145,13 @@ class ContactData {
   const mjData* data() const { return d_; }
   mjData* data() { return d_; }
 
-  // Every collision so far, one per pair from its first point touching to
-  // its last point leaving (CollisionLog), in order of first touch.
-  const std::vector<Impact>& impacts() const;
+  // Every impact so far, one per pair from its first point touching to
+  // its last point leaving (ImpactLog), in order of first touch.
+  const std::vector<Episode>& impacts() const;
 
   // Every contact episode of every contact point so far, in order of first
   // touch: a point is followed by where it sits on the two bodies.
-  const std::vector<Impact>& point_impacts() const;
+  const std::vector<Episode>& point_episodes() const;
 
   // One contact point as the hook last saw it.
   using Evaluation = PointEvaluation;
@@ -193,11 +193,11 @@ class ContactData {
   const ContactModel& model_;
   mjData* d_;
   mjModel view_;  // the model's header with this data's options: model_view()
-  std::unique_ptr<ProposedPairs> proposals_;
-  std::unique_ptr<StepCapture> capture_;
-  std::unique_ptr<StepStartVelocities> step_start_;
-  std::unique_ptr<PointEvaluator> evaluator_;
-  std::unique_ptr<StepCommitter> committer_;
+  std::unique_ptr<internal::ProposedPairs> proposals_;
+  std::unique_ptr<internal::StepCapture> capture_;
+  std::unique_ptr<internal::StepStartVelocities> step_start_;
+  std::unique_ptr<internal::PointEvaluator> evaluator_;
+  std::unique_ptr<internal::StepCommitter> committer_;
 };
 
 }  // namespace contactlaws

@@ -118,8 +118,10 @@ struct Drive {
   void Velocity(double t, double vel[3]) const;
 };
 
-struct PairTagSpec;  // scene/tags.h
-class TagResolver;   // contact_model.cc
+namespace internal {
+struct PairTagSpec;  // src/scene/tags.h
+class TagResolver;   // src/scene/contact_model.cc
+}  // namespace internal
 
 class ContactModel {
  public:
@@ -156,16 +158,17 @@ class ContactModel {
   void ReadDrives();
   void ReadTags(const Overrides& overrides);
   // The geom pairs of one tag (appended to pairs_ and tag->pairs).
-  void AddPairs(const PairTagSpec& spec, const LawParams& base, const TagResolver& resolve,
-                PairTag* tag);
+  void AddPairs(const internal::PairTagSpec& spec, const LawParams& base,
+                const internal::TagResolver& resolve, PairTag* tag);
   // The pair's friction (scene/pair_friction.h); refuses bad values, warns
   // of friction keys on a frictionless pair.
-  void AddFriction(int g1, int g2, const PairTagSpec& spec, const std::string& pair_name,
-                   const TagResolver& resolve, GeomPair* pair);
+  void AddFriction(int g1, int g2, const internal::PairTagSpec& spec,
+                   const std::string& pair_name, const internal::TagResolver& resolve,
+                   GeomPair* pair);
   // Refuses the pair when MuJoCo's depth for its geom types is wrong; warns
   // (once per tag and type, warned_types) when it has a known limit.
-  void CheckDepth(int g1, int g2, const std::string& pair_name, const TagResolver& resolve,
-                  std::vector<int>* warned_types);
+  void CheckDepth(int g1, int g2, const std::string& pair_name,
+                  const internal::TagResolver& resolve, std::vector<int>* warned_types);
 
   const mjModel* model_;
   std::string source_;

@@ -87,6 +87,15 @@ inline constexpr double kMindlinRatio = 2 * (1 - kDefaultPoisson) / (2 - kDefaul
 // Cummins, P. W. Cleary, Powder Technol. 210:189 (2011).
 double MindlinRatio(double youngs1, double poisson1, double youngs2, double poisson2);
 
+// How a pair's k_t is made, decided once with its parameters
+// (ResolvePairFriction): the tag's k_t, or Mindlin's no-slip spring,
+// tangential_ratio x dF_n/dd of the normal law at the depth.
+enum class TangentialStiffnessRule { kGiven, kNormalRatio };
+// How its c_t is made: the tag's c_t; 2 zeta sqrt(k_t m), zeta the tag's
+// tangential_damping_ratio or 1 (critical); or the normal law's own damping
+// ratio (a tag of materials without either key).
+enum class TangentialDampingRule { kGiven, kRatio, kNormalLaw };
+
 // The friction of one pair, resolved (tag, geoms, overrides) and validated.
 struct FrictionParams {
   FrictionKind kind = FrictionKind::kNone;
@@ -94,19 +103,17 @@ struct FrictionParams {
   double mu_kinetic = 0;   // in [0, mu_static]
   double transition_velocity = kDefaultTransitionVelocity;  // m/s > 0 (regularized)
   double stribeck_velocity = kDefaultStribeckVelocity;      // m/s > 0 (stribeck, lugre)
-  // k_t, N/m > 0; unset: Mindlin's no-slip spring, tangential_ratio x dF_n/dd
-  // of the normal law at the depth (8 G* a for Hertz spheres of materials)
-  std::optional<double> tangential_stiffness;
-  // k_t / (dF_n/dd) > 0: the tag's, else MindlinRatio of its materials, else
-  // kMindlinRatio (one material of nu = 0.3)
+  // k_t: the tag's, or Mindlin's no-slip spring (8 G* a for Hertz spheres of
+  // materials)
+  TangentialStiffnessRule stiffness_rule = TangentialStiffnessRule::kNormalRatio;
+  double tangential_stiffness = 0;  // k_t, N/m > 0 (kGiven)
+  // k_t / (dF_n/dd) > 0 (kNormalRatio): the tag's, else MindlinRatio of its
+  // materials, else kMindlinRatio (one material of nu = 0.3)
   double tangential_ratio = kMindlinRatio;
-  // c_t, N s/m >= 0; unset: 2 zeta sqrt(k_t m), m the pair's mass
-  // (ContactModel), zeta the tangential_damping_ratio; unset: the normal
-  // law's damping ratio where normal_damping_ratio (a tag of materials),
-  // else 1 (critical)
-  std::optional<double> tangential_damping;
-  std::optional<double> tangential_damping_ratio;  // zeta in [0, 1]
-  bool normal_damping_ratio = false;
+  // c_t, m the pair's mass (ContactModel)
+  TangentialDampingRule damping_rule = TangentialDampingRule::kRatio;
+  double tangential_damping = 0;        // c_t, N s/m >= 0 (kGiven)
+  double tangential_damping_ratio = 1;  // zeta in [0, 1] (kRatio); 1: critical
   double bristle_stiffness = kDefaultBristleStiffness;  // sigma0, 1/m > 0 (x F_n)
   // sigma1, s/m >= 0 (x F_n); unset: critical for the bristles at the load and
   // the pair's mass m, 2 sqrt(sigma0 F_n m) N s/m (see FrictionInput::mass)
@@ -123,17 +130,18 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& params);
 // or k (Kelvin-Voigt).
 double NormalStiffness(const LawParams& law, double depth);
 
-// k_t of coulomb and stribeck at depth d > 0 (N/m): the tag's, else Mindlin's
-// no-slip spring tangential_ratio x NormalStiffness(law, d). Incremental in
+// k_t of coulomb and stribeck at depth d > 0 (N/m) by params.stiffness_rule:
+// the tag's, or Mindlin's no-slip spring tangential_ratio x
+// NormalStiffness(law, d). Incremental in
 // the kernels (CappedSpring), so that it follows the load history as
 // Thornton et al. (2011) and Di Renzo and Di Maio (2005) have it.
 double TangentialStiffness(const FrictionParams& params, const LawParams& law, double depth);
 
-// c_t of coulomb and stribeck (N s/m) for the stick spring k_t on mass m (kg):
-// the tag's c_t; else 2 zeta sqrt(k_t m), zeta the tag's ratio, or the normal
+// c_t of coulomb and stribeck (N s/m) for the stick spring k_t on mass m (kg),
+// by params.damping_rule: the tag's c_t; 2 zeta sqrt(k_t m); or the normal
 // law's own damping ratio at state, c_n / (2 sqrt(k_n m)), which makes c_t =
 // c_n sqrt(k_t / k_n) whatever m (Tsuji, Tanaka, Ishida, Powder Technol.
-// 71:239, 1992; LIGGGHTS' and Yade's Hertz-Mindlin), or 1 (critical).
+// 71:239, 1992; LIGGGHTS' and Yade's Hertz-Mindlin).
 double TangentialDamping(const FrictionParams& params, const LawParams& law,
                          const ContactState& state, double stiffness, double mass);
 

@@ -1,9 +1,10 @@
 // Copyright contactlaws authors.
 //
-// What a run records of its contacts, without MuJoCo types: an Impact (one
-// contact episode of a point, or one collision of a pair: first touch to
-// separation) and a Divergence (why a run cannot go on). ContactData's
-// impacts(), point_impacts() and divergence() return them.
+// What a run records of its contacts, without MuJoCo types: an Episode (one
+// stretch of contact, first touch to separation: a pair's impact or a
+// point's episode) and a Divergence (why a run cannot go on). ContactData's
+// impacts(), point_episodes() and divergence() return them (the vocabulary:
+// docs/library.md, "Words").
 
 #ifndef CONTACTLAWS_IMPACT_H_
 #define CONTACTLAWS_IMPACT_H_
@@ -13,17 +14,19 @@
 
 namespace contactlaws {
 
-// Impact::chained: how much faster than its touch a contact must be
+// Episode::chained: how much faster than its touch a contact must be
 // compressed to be a pulse through touching bodies (the cradles' are hundreds
 // of times; gravity's rise during an impact stays well below twice).
 inline constexpr double kChainFactor = 2.0;
 
-// One contact episode of one contact point: first touch to separation.
-struct Impact {
+// One episode of contact, first touch to separation: an impact (a pair's,
+// from its first point touching to its last point leaving: ImpactLog) or a
+// point episode (one contact point's: EpisodeLog).
+struct Episode {
   int tag = -1;             // ContactModel::tags() index
   int pair = -1;            // ContactModel::pairs() index
   int index = 0;            // 1 for the tag's first episode, 2 for its second ...
-  int points = 1;           // most points in contact at once (a collision; 1 for a point)
+  int points = 1;           // most points in contact at once (an impact; 1 for a point)
   double time_contact = 0;  // s, extrapolated to d = 0
   // d' of the last state before first touch, m/s (> 0): the approach no
   // contact force has slowed yet (a fixed step finds a contact a fraction of
@@ -42,10 +45,10 @@ struct Impact {
   // below 1 and the law does not turn plastic (d'/v0 in the hundreds).
   double max_approach_velocity = 0;
   // The law's v0 at the touch: impact_velocity raised to the pair's
-  // min_impact_velocity (for a collision, the largest of its points' at
+  // min_impact_velocity (for an impact, the largest of its points' at
   // their touches: a corner that lands after the first is a touch too).
   double touch_v0 = 0;
-  // A collision (CollisionLog): one of its points was chained. A collision's
+  // An impact (ImpactLog): one of its points was chained. An impact's
   // rates mix its points: a second corner that lands faster than the first
   // touched raises its largest approach, and is no chain.
   bool points_chained = false;
@@ -55,8 +58,8 @@ struct Impact {
   // impact nor a pulse (0 for a contact that touched during the run).
   double settling_velocity = 0;
   // Compressed more than kChainFactor times faster than the law's v0 at its
-  // touch and than its settling (a pulse through touching bodies), or, a
-  // collision, one of its points was. Gravity alone raises an impact's rate
+  // touch and than its settling (a pulse through touching bodies), or, an
+  // impact, one of its points was. Gravity alone raises an impact's rate
   // after the touch (the paper's ball by 5e-6 of 4.2 m/s, a slow one by tens
   // of percent): that is no chain; neither is a contact that opened at rest
   // and settles within the v0 floor, nor one there at the start that settles.

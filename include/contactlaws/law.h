@@ -56,7 +56,7 @@ struct LawInfo {
   // The restitution is in [0, 1], or in (0, 1] when e = 0 is refused (a(e)
   // grows without bound as e -> 0).
   bool restitution_excludes_zero;
-  LawId kind{};  // its index in the table (set by Laws())
+  LawId id{};  // its index in the table (set by Laws())
 };
 
 // Every law, in table order (LawId is the index).
@@ -83,7 +83,7 @@ inline constexpr double kDefaultMinImpactVelocity = 1e-3;
 // (ValidateLawParams), with what follows from them resolved there too
 // (ResolveLawParams). Fields a law does not use are ignored by it.
 struct LawParams {
-  LawId kind{};  // hertz unless set
+  LawId law{};  // the law these are for; hertz unless set
   double restitution = 1.0;       // e, dimensionless, [0, 1]; (0, 1] for the 1/e laws
   double stiffness = 0.0;         // K, N/m^n, > 0 (hertz family)
   double exponent = 1.5;          // n, dimensionless, [1, 3] (hertz family)
@@ -92,12 +92,12 @@ struct LawParams {
   std::optional<double> dissipation;  // c, s/m, >= 0 (constant-dissipation family)
   double min_impact_velocity = kDefaultMinImpactVelocity;  // m/s, > 0
   bool allow_tension = false;     // keep F < 0 instead of clamping to 0
-  // a(e) of the hysteresis family, dimensionless: HysteresisCoefficient(kind,
+  // a(e) of the hysteresis family, dimensionless: HysteresisCoefficient(law,
   // restitution), set by ResolveLawParams; EvaluateLaw reads it.
   double hysteresis = 0.0;
 };
 
-// Resolves what follows from the fields set by hand (hysteresis from kind and
+// Resolves what follows from the fields set by hand (hysteresis from law and
 // restitution): call it after setting them and before EvaluateLaw.
 // ContactModel does it for every pair it makes.
 void ResolveLawParams(LawParams* params);
@@ -129,10 +129,10 @@ struct ParamError {
   std::string requirement;
 };
 
-// Checks the fields kind uses; nullopt when valid.
+// Checks the fields law uses; nullopt when valid.
 std::optional<ParamError> ValidateLawParams(const LawParams& params);
 
-// The contact force of params.kind at state. Pure; params must be valid and
+// The contact force of params.law at state. Pure; params must be valid and
 // resolved (ResolveLawParams).
 ContactForce EvaluateLaw(const LawParams& params, const ContactState& state);
 

@@ -38,7 +38,7 @@ struct PointEvaluation {
   bool at_start = false;
   double depth = 0;
   double depth_rate = 0;
-  double impact_velocity = 0;  // the law's v0 (floored; Impact::max_approach_velocity)
+  double impact_velocity = 0;  // the law's v0 (floored; Episode::max_approach_velocity)
   double max_approach = 0;     // the episode's largest d' so far, this one included
   double touch_velocity = 0;   // touch: d' at the step before first touch
   double touch_power = 0;      // touch: the law's dissipated power at touch, W

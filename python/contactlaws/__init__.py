@@ -21,7 +21,7 @@ __all__ = ["Error", "Simulation", "RunResult", "run", "compare", "restitution", 
 class RunResult:
     """What contactlaws run gives: .trajectory (the --output CSV: time in s,
     positions in m, velocities in m/s, forces in N, energies in J), .impacts
-    (the --impacts CSV, one row per collision), .summary (the printed table,
+    (the --impacts CSV, one row per impact of a pair), .summary (the printed table,
     one row per tagged pair), .divergence (the message, or None)."""
 
     def __init__(self, trajectory, impacts, summary, divergence):
@@ -66,6 +66,7 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     if divergence:
         _warnings.warn(f"{scene}: run stopped: diverged at {divergence}", stacklevel=2)
     trajectory = _pd.DataFrame(rows, columns=names, copy=False)
+    # the printed table's header as printed: its "collisions" counts impacts
     summary_frame = _pd.DataFrame(summary, columns=[
         "pair", "law", "restitution", "collisions", "first e_post", "max force (N)"])
     return RunResult(trajectory, _impact_frame(impact_columns, impact_rows), summary_frame,
@@ -125,5 +126,5 @@ class Simulation(_Simulation):
         return frame
 
     def impacts(self):
-        """The impact log so far, as run's --impacts CSV (one row per collision)."""
+        """The impact log so far, as run's --impacts CSV (one row per impact of a pair)."""
         return _impact_frame(*self._impacts())

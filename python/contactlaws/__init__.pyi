@@ -24,7 +24,7 @@ Number = Union[float, int, str]
 
 class RunResult:
     trajectory: pd.DataFrame  # the --output CSV: time s, positions m, velocities m/s, N, J
-    impacts: pd.DataFrame  # the --impacts CSV, one row per collision
+    impacts: pd.DataFrame  # the --impacts CSV, one row per impact of a pair
     summary: pd.DataFrame  # the printed table, one row per tagged pair
     divergence: Optional[str]  # the message, or None
 

@@ -40,7 +40,7 @@ def _warn_incomplete(status, scene, what):
 class CompareResult:
     """compare's three files: .trajectories (law, restitution[, friction],
     then run's trajectory columns: s, m, m/s, N, J), .impacts (one row per
-    collision, as run's --impacts), .summary (one row per run: impacts,
+    impact of a pair, as run's --impacts), .summary (one row per run: impacts,
     restitution_post, max_depth m, max_force N, contact_duration s,
     time_to_rest s, dissipated_energy J, status, reason); .report, the
     printed table."""

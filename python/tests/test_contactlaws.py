@@ -38,7 +38,7 @@ def test_run_gives_the_command_lines_files(tmp_path, scene, options):
                                   check_dtype=False)
     pd.testing.assert_frame_equal(result.impacts, read(impacts), check_exact=True,
                                   check_dtype=False)
-    # the printed table: one line per pair, its collisions and max force
+    # the printed table: one line per pair, its impacts (header "collisions") and max force
     for row, line in zip(result.summary.itertuples(), printed.splitlines()[1:]):
         fields = line.split()
         assert fields[0] == row.pair and fields[1] == row.law

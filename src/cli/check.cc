@@ -124,18 +124,18 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
   const PairTag& tag = cm.tags()[t];
   const LawParams& law = cm.pairs()[tag.pairs.front()].params;
   fmt::print(out, "\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
-             tag.geom2, tag.pairs.size(), LawName(law.kind));
-  if (Law(law.kind).family == LawFamily::kLinear) {
+             tag.geom2, tag.pairs.size(), LawName(law.law));
+  if (Law(law.law).family == LawFamily::kLinear) {
     fmt::print(out, "  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
                law.linear_stiffness,
                law.damping ? fmt::format("{} N s/m", *law.damping)
                            : std::string("from e and the effective mass at each contact"));
   } else {
     const std::string damping =
-        ReadsDissipation(law.kind)
+        ReadsDissipation(law.law)
             ? fmt::format("dissipation c {} s/m (a = c v0)", *law.dissipation)
-            : fmt::format("restitution {}{}", Field(ReportedRestitution(law.kind, law.restitution)),
-                          IsElastic(law.kind) ? " (elastic)" : "");
+            : fmt::format("restitution {}{}", Field(ReportedRestitution(law.law, law.restitution)),
+                          IsElastic(law.law) ? " (elastic)" : "");
     fmt::print(out, "  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
                law.exponent, law.exponent);
   }
@@ -175,7 +175,7 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
     return side_coarse;  // nothing to hold the normal's timestep to
   }
   fmt::print(out, "  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
-             Law(law.kind).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
+             Law(law.law).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
              estimate.contact_duration);
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
@@ -183,7 +183,7 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
     fmt::print(out,
                "  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
                "contact, accuracy {})\n",
-               steps.NormalStep(law.kind, estimate.contact_duration), steps.PerContact(law.kind),
+               steps.NormalStep(law.law, estimate.contact_duration), steps.PerContact(law.law),
                *accuracy);
     return side_coarse;
   }

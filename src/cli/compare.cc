@@ -182,7 +182,7 @@ int CompareCommand(const SweepArgs& args) {
   sweep.advance.auto_timestep = in.common.auto_timestep;
   sweep.advance.stop = &stop_signal;
   sweep.record = true;
-  sweep.impact_rows = args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions;
+  sweep.impact_rows = args.impacts_per_point ? ImpactRows::kPointEpisodes : ImpactRows::kImpacts;
   sweep.jobs = in.jobs;
   sweep.quiet = args.quiet;
   std::vector<TableRow> rows;

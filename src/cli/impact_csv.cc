@@ -8,8 +8,8 @@
 
 namespace contactlaws::cli {
 
-const std::vector<Impact>& ImpactsOf(const ContactData& contacts, ImpactRows rows) {
-  return rows == ImpactRows::kPoints ? contacts.point_impacts() : contacts.impacts();
+const std::vector<Episode>& ImpactsOf(const ContactData& contacts, ImpactRows rows) {
+  return rows == ImpactRows::kPointEpisodes ? contacts.point_episodes() : contacts.impacts();
 }
 
 std::vector<std::string> ImpactColumns() {
@@ -33,7 +33,7 @@ std::string Field(double value) {
 
 std::string Field(const std::optional<double>& value) { return value ? Field(*value) : ""; }
 
-std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impact) {
+std::vector<std::string> ImpactFields(const Simulation& sim, const Episode& impact) {
   const ContactModel& cm = sim.contact_model();
   const PairTag& tag = cm.tags()[impact.tag];
   const GeomPair& pair = cm.pairs()[impact.pair];

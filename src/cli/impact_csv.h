@@ -13,17 +13,17 @@
 
 namespace contactlaws::cli {
 
-// The rows of an impact log: one per collision of a pair (its first point
+// The rows of an impact log: one per impact of a pair (its first point
 // touching to its last point leaving), or one per contact episode of each
 // point (--impacts-per-point).
-enum class ImpactRows { kCollisions, kPoints };
+enum class ImpactRows { kImpacts, kPointEpisodes };
 
 // The impacts of contacts in those rows.
-const std::vector<Impact>& ImpactsOf(const ContactData& contacts, ImpactRows rows);
+const std::vector<Episode>& ImpactsOf(const ContactData& contacts, ImpactRows rows);
 
 // The impact-log CSV: its columns, and the fields of one impact.
 std::vector<std::string> ImpactColumns();
-std::vector<std::string> ImpactFields(const Simulation& sim, const Impact& impact);
+std::vector<std::string> ImpactFields(const Simulation& sim, const Episode& impact);
 
 // A number in its shortest exact form; an empty field for nullopt.
 std::string Field(double value);

@@ -26,12 +26,12 @@ std::string_view FamilyName(LawFamily family) {
 // "e = 0.9: 0.9009, ...": the rebound of the law's a(e), or why it has none.
 std::string EffectiveLine(const LawInfo& law, const std::vector<double>& restitutions) {
   if (law.family == LawFamily::kLinear) return "no closed form (clamped at F = 0)";
-  if (!ReadsRestitution(law.kind) && !IsElastic(law.kind)) {
+  if (!ReadsRestitution(law.id) && !IsElastic(law.id)) {
     return "reads no e: ExactRebound(c v0), set by the impact speed";
   }
   std::string line;
   for (const double e : restitutions) {
-    const std::optional<double> effective = EffectiveRestitution(law.kind, e);
+    const std::optional<double> effective = EffectiveRestitution(law.id, e);
     line += fmt::format("{}{}: {}", line.empty() ? "" : ", ", e,
                         effective ? fmt::format("{:.4f}", *effective) : "-");
   }
@@ -76,9 +76,9 @@ void PrintCsv(const std::vector<double>& restitutions, const std::string& output
               "effective_restitution"});
   for (const LawInfo& law : Laws()) {
     for (const double e : restitutions) {
-      const std::optional<double> effective = EffectiveRestitution(law.kind, e);
+      const std::optional<double> effective = EffectiveRestitution(law.id, e);
       out.Fields({std::string(law.name), std::string(FamilyName(law.family)), Field(e),
-                  effective ? Field(HysteresisCoefficient(law.kind, e)) : std::string(),
+                  effective ? Field(HysteresisCoefficient(law.id, e)) : std::string(),
                   Field(effective)});
     }
   }

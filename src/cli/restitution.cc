@@ -20,7 +20,7 @@ constexpr char kDefaultSweep[] = "0.1:1.0:0.1";
 // (or none), and it has ended (closed) or not.
 struct FirstEpisode {
   RunSpec spec;
-  std::optional<Impact> first;  // a finished run's first episode
+  std::optional<Episode> first;  // a finished run's first episode
   bool closed = false;
 };
 
@@ -35,7 +35,7 @@ FirstEpisode FirstEpisodeOf(const RunSpec& spec, const RunOutput& run) {
 
 // The CSV row: empty fields for what is not known.
 std::vector<std::string> CsvFields(const FirstEpisode& e) {
-  const std::optional<Impact>& first = e.first;
+  const std::optional<Episode>& first = e.first;
   auto if_known = [&](double v) { return first ? Field(v) : std::string(); };
   auto if_closed = [&](double v) { return e.closed ? Field(v) : std::string(); };
   return {std::string(LawName(e.spec.law)),

@@ -36,7 +36,7 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
 // The impact log of sim, in rows, committed.
 void WriteImpacts(const Simulation& sim, ImpactRows rows, CsvFile* impacts) {
   impacts->Header(ImpactColumns());
-  for (const Impact& impact : ImpactsOf(sim.contacts(), rows)) {
+  for (const Episode& impact : ImpactsOf(sim.contacts(), rows)) {
     impacts->Fields(ImpactFields(sim, impact));
   }
   impacts->Commit();
@@ -91,7 +91,7 @@ int RunCommand(const RunArgs& args) {
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   if (trajectory) trajectory->Commit();
   if (impacts) {
-    WriteImpacts(*sim, args.impacts_per_point ? ImpactRows::kPoints : ImpactRows::kCollisions,
+    WriteImpacts(*sim, args.impacts_per_point ? ImpactRows::kPointEpisodes : ImpactRows::kImpacts,
                  &*impacts);
   }
   PrintRunSummary(*sim, end_time, args.output && *args.output == "-" ? stderr : stdout);

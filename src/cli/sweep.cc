@@ -93,14 +93,14 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     }
     out.warnings = RunWarnings(*sim, result);
     if (sweep.record) {
-      for (const Impact& impact : ImpactsOf(sim->contacts(), sweep.impact_rows)) {
+      for (const Episode& impact : ImpactsOf(sim->contacts(), sweep.impact_rows)) {
         std::vector<std::string> fields = ImpactFields(*sim, impact);
         // law, restitution, then the friction model as in the trajectories
         if (spec.friction) fields.emplace(fields.begin() + 2, FrictionName(*spec.friction));
         AppendFields(&out.impacts, fields);
       }
     }
-    for (const Impact& impact : sim->contacts().impacts()) {
+    for (const Episode& impact : sim->contacts().impacts()) {
       if (impact.tag == 0) {
         out.first = impact;
         break;

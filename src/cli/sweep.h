@@ -86,7 +86,7 @@ struct RunOutput {
   std::string impacts;                // CSV lines (compare)
   RunSummary summary;
   double dissipated = 0;
-  std::optional<Impact> first;        // the first episode of the first tag
+  std::optional<Episode> first;        // the first episode of the first tag
 };
 
 // "ok", "failed", "interrupted", "not run".
@@ -98,7 +98,7 @@ struct SweepOptions {
   // compare keeps each run's trajectory and impact log, restitution only
   // its summary
   bool record = false;
-  ImpactRows impact_rows = ImpactRows::kCollisions;
+  ImpactRows impact_rows = ImpactRows::kImpacts;
   int jobs = 1;
   bool quiet = false;  // no progress line
 };

@@ -171,7 +171,7 @@ std::vector<std::pair<LawId, FrictionKind>> TagKinds(const Scene& scene, const O
   for (int i = 0; i < m->ntext; ++i) {
     const std::string_view name = m->names + m->name_textadr[i];
     if (name.rfind(kPairTagPrefix, 0) != 0) continue;
-    const PairTagSpec spec = ParsePairTag(scene.path(), name, m->text_data + m->text_adr[i]);
+    const internal::PairTagSpec spec = internal::ParsePairTag(scene.path(), name, m->text_data + m->text_adr[i]);
     tags.emplace_back(o.law.value_or(*spec.law),
                       o.friction.value_or(spec.friction.kind.value_or(FrictionKind::kCoulomb)));
   }

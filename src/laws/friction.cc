@@ -95,7 +95,7 @@ FrictionOutput LuGre(const FrictionParams& p, const FrictionInput& in) {
 }  // namespace
 
 double NormalStiffness(const LawParams& law, double depth) {
-  if (Law(law.kind).family == LawFamily::kLinear) return law.linear_stiffness;
+  if (Law(law.law).family == LawFamily::kLinear) return law.linear_stiffness;
   return law.exponent * law.stiffness * std::pow(depth, law.exponent - 1);
 }
 
@@ -109,19 +109,27 @@ double MindlinRatio(double youngs1, double poisson1, double youngs2, double pois
 }
 
 double TangentialStiffness(const FrictionParams& params, const LawParams& law, double depth) {
-  return params.tangential_stiffness.value_or(params.tangential_ratio *
-                                              NormalStiffness(law, depth));
+  switch (params.stiffness_rule) {
+    case TangentialStiffnessRule::kGiven: return params.tangential_stiffness;
+    case TangentialStiffnessRule::kNormalRatio:
+      return params.tangential_ratio * NormalStiffness(law, depth);
+  }
+  return 0;
 }
 
 double TangentialDamping(const FrictionParams& params, const LawParams& law,
                          const ContactState& state, double stiffness, double mass) {
-  if (params.tangential_damping) return *params.tangential_damping;
-  if (!params.tangential_damping_ratio && params.normal_damping_ratio) {
-    // the normal law's damping ratio on k_t: c_n sqrt(k_t / k_n)
-    const double normal = state.depth > 0 ? NormalStiffness(law, state.depth) : 0.0;
-    return normal > 0 ? DampingCoefficient(law, state) * std::sqrt(stiffness / normal) : 0.0;
+  switch (params.damping_rule) {
+    case TangentialDampingRule::kGiven: return params.tangential_damping;
+    case TangentialDampingRule::kRatio:
+      return 2 * params.tangential_damping_ratio * std::sqrt(stiffness * mass);
+    case TangentialDampingRule::kNormalLaw: {
+      // the normal law's damping ratio on k_t: c_n sqrt(k_t / k_n)
+      const double normal = state.depth > 0 ? NormalStiffness(law, state.depth) : 0.0;
+      return normal > 0 ? DampingCoefficient(law, state) * std::sqrt(stiffness / normal) : 0.0;
+    }
   }
-  return 2 * params.tangential_damping_ratio.value_or(1.0) * std::sqrt(stiffness * mass);
+  return 0;
 }
 
 double SlidingMu(const FrictionParams& params, double speed) {

@@ -81,7 +81,10 @@ std::optional<FrictionKind> ParseFrictionName(std::string_view name) {
 }
 
 std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
-  // each value against its range, in this order; an unset optional passes
+  // each value against its range, in this order; a value its rule does not
+  // read passes (as a value in range)
+  const bool given_stiffness = p.stiffness_rule == TangentialStiffnessRule::kGiven;
+  const bool given_damping = p.damping_rule == TangentialDampingRule::kGiven;
   const std::pair<const char*, double> mu[] = {{"mu_static", p.mu_static},
                                                {"mu_kinetic", p.mu_kinetic}};
   for (const auto& [key, value] : mu) {
@@ -97,14 +100,14 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
       {"transition_velocity", p.transition_velocity},
       {"stribeck_velocity", p.stribeck_velocity},
       {"bristle_stiffness", p.bristle_stiffness},
-      {"tangential_stiffness", p.tangential_stiffness.value_or(1.0)}};
+      {"tangential_stiffness", given_stiffness ? p.tangential_stiffness : 1.0}};
   for (const auto& [key, value] : positive) {
     if (!kPositiveRange.Contains(value)) {
       return ParamError{key, value, kPositiveRange.Requirement()};
     }
   }
   const std::pair<const char*, double> non_negative[] = {
-      {"tangential_damping", p.tangential_damping.value_or(0.0)},
+      {"tangential_damping", given_damping ? p.tangential_damping : 0.0},
       {"bristle_damping", p.bristle_damping.value_or(0.0)},
       {"viscous", p.viscous},
       {"torsional_friction", p.torsional},
@@ -115,9 +118,9 @@ std::optional<ParamError> ValidateFrictionParams(const FrictionParams& p) {
     }
   }
   // beyond critical for the pair's mass: give tangential_damping in N s/m
-  const double zeta = p.tangential_damping_ratio.value_or(0.0);
-  if (!kUnitRange.Contains(zeta)) {
-    return ParamError{"tangential_damping_ratio", zeta, kUnitRange.Requirement()};
+  if (!kUnitRange.Contains(p.tangential_damping_ratio)) {
+    return ParamError{"tangential_damping_ratio", p.tangential_damping_ratio,
+                      kUnitRange.Requirement()};
   }
   return std::nullopt;
 }

@@ -18,7 +18,7 @@ const LawInfo& Law(LawId kind) { return Laws()[static_cast<int>(kind)]; }
 const std::vector<LawId>& AllLaws() {
   static const std::vector<LawId> kinds = [] {
     std::vector<LawId> all;
-    for (const LawInfo& law : Laws()) all.push_back(law.kind);
+    for (const LawInfo& law : Laws()) all.push_back(law.id);
     return all;
   }();
   return kinds;
@@ -40,7 +40,7 @@ const std::string& LawNameList() {
 
 std::optional<LawId> ParseLawName(std::string_view name) {
   for (const LawInfo& law : Laws()) {
-    if (law.name == name) return law.kind;
+    if (law.name == name) return law.id;
   }
   return std::nullopt;
 }
@@ -51,7 +51,7 @@ double HysteresisCoefficient(LawId kind, double restitution) {
 }
 
 void ResolveLawParams(LawParams* params) {
-  params->hysteresis = HysteresisCoefficient(params->kind, params->restitution);
+  params->hysteresis = HysteresisCoefficient(params->law, params->restitution);
 }
 
 namespace {
@@ -91,8 +91,8 @@ std::optional<double> ReportedRestitution(LawId kind, double restitution) {
 }
 
 std::optional<ParamError> ValidateLawParams(const LawParams& p) {
-  const LawInfo& law = Law(p.kind);
-  if (ReadsRestitution(p.kind) && !RestitutionRange(law).Contains(p.restitution)) {
+  const LawInfo& law = Law(p.law);
+  if (ReadsRestitution(p.law) && !RestitutionRange(law).Contains(p.restitution)) {
     const std::string requirement = RestitutionRange(law).Requirement();
     return ParamError{"restitution", p.restitution,
                       law.restitution_excludes_zero ? requirement + " for " + std::string(law.name)
@@ -111,7 +111,7 @@ std::optional<ParamError> ValidateLawParams(const LawParams& p) {
   if (p.damping && !kNonNegativeRange.Contains(*p.damping)) {
     return ParamError{"damping", *p.damping, kNonNegativeRange.Requirement("N s/m")};
   }
-  if (ReadsDissipation(p.kind) && !kNonNegativeRange.Contains(p.dissipation.value_or(NAN))) {
+  if (ReadsDissipation(p.law) && !kNonNegativeRange.Contains(p.dissipation.value_or(NAN))) {
     return ParamError{"dissipation", p.dissipation.value_or(NAN),
                       "must be given, " + std::string(kNonNegativeRange.bounds) + " (s/m), for " +
                           std::string(law.name)};
@@ -128,7 +128,7 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
   if (s.depth <= 0.0) return f;
 
   // spring and damper of the law
-  switch (Law(p.kind).family) {
+  switch (Law(p.law).family) {
     case LawFamily::kLinear: {
       const double c = p.damping ? *p.damping
                                  : KelvinVoigtDamping(p.linear_stiffness, s.effective_mass,
@@ -156,7 +156,7 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
 
 double ElasticEnergy(const LawParams& p, double depth) {
   if (depth <= 0.0) return 0.0;
-  if (Law(p.kind).family == LawFamily::kLinear) {
+  if (Law(p.law).family == LawFamily::kLinear) {
     return 0.5 * p.linear_stiffness * depth * depth;
   }
   return HertzEnergy(p.stiffness, p.exponent, depth);
@@ -179,7 +179,7 @@ double DampingCoefficient(const LawParams& p, const ContactState& state) {
 
 double RestingDepth(const LawParams& p, double load) {
   if (!(load > 0)) return 0;
-  return Law(p.kind).family == LawFamily::kLinear ? load / p.linear_stiffness
+  return Law(p.law).family == LawFamily::kLinear ? load / p.linear_stiffness
                                                   : std::pow(load / p.stiffness, 1.0 / p.exponent);
 }
 

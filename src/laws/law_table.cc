@@ -135,7 +135,7 @@ const std::vector<LawInfo>& Laws() {
        "point contact (n = 1, c = d)",
        nullptr, false},
     };
-    for (size_t i = 0; i < rows.size(); ++i) rows[i].kind = static_cast<LawId>(i);
+    for (size_t i = 0; i < rows.size(); ++i) rows[i].id = static_cast<LawId>(i);
     return rows;
   }();
   return laws;

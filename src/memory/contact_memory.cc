@@ -33,18 +33,19 @@ void PeakForce::Add(double t, double force) {
 
 namespace {
 
-// An impact's tangent and normal from its first point, and that point's
-// slip and spin along them.
-void OpenTangentialSide(const PointEvaluation& e, Impact* impact) {
+// An episode's tangent and normal from its first point (a point episode's
+// own point, an impact's first to touch), and that point's slip and spin
+// along them.
+void OpenTangentialSide(const PointEvaluation& e, Episode* episode) {
   const double speed = std::sqrt(e.slip[0] * e.slip[0] + e.slip[1] * e.slip[1] + e.slip[2] * e.slip[2]);
   for (int i = 0; i < 3; ++i) {
-    impact->normal[i] = e.normal[i];
-    impact->tangent[i] = speed > 0 ? e.slip[i] / speed : 0.0;
+    episode->normal[i] = e.normal[i];
+    episode->tangent[i] = speed > 0 ? e.slip[i] / speed : 0.0;
   }
-  TangentialSide(e, impact->tangent, impact->normal, &impact->tangential_impact_velocity,
-                 &impact->spin_before);
-  impact->tangential_separation_velocity = impact->tangential_impact_velocity;
-  impact->spin_after = impact->spin_before;
+  TangentialSide(e, episode->tangent, episode->normal, &episode->tangential_impact_velocity,
+                 &episode->spin_before);
+  episode->tangential_separation_velocity = episode->tangential_impact_velocity;
+  episode->spin_after = episode->spin_before;
 }
 
 }  // namespace
@@ -93,7 +94,7 @@ void EpisodeLog::Reset() {
   std::fill(tag_count_.begin(), tag_count_.end(), 0);
   open_.clear();
   closed_.clear();
-  impacts_.clear();
+  episodes_.clear();
   tracks_.clear();
   commits_ = 0;
   previous_commit_ = -INFINITY;
@@ -128,16 +129,16 @@ int EpisodeLog::MatchOpenEpisode(int pair, const double local[2][3], double tole
 }
 
 void EpisodeLog::Open(double t, const PointEvaluation& e) {
-  Impact impact;
-  impact.pair = e.pair;
-  impact.tag = e.tag;
-  impact.index = ++tag_count_[impact.tag];
-  impact.impact_velocity = e.touch_velocity;
-  impact.touch_v0 = e.impact_velocity;
-  impact.time_contact = TouchTime(e, t, previous_commit_);
-  OpenTangentialSide(e, &impact);
-  const int index = static_cast<int>(impacts_.size());
-  impacts_.push_back(impact);
+  Episode episode;
+  episode.pair = e.pair;
+  episode.tag = e.tag;
+  episode.index = ++tag_count_[episode.tag];
+  episode.impact_velocity = e.touch_velocity;
+  episode.touch_v0 = e.impact_velocity;
+  episode.time_contact = TouchTime(e, t, previous_commit_);
+  OpenTangentialSide(e, &episode);
+  const int index = static_cast<int>(episodes_.size());
+  episodes_.push_back(episode);
   tracks_.emplace_back();
   tracks_.back().settling = e.at_start;
   open_.push_back(index);
@@ -149,20 +150,20 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
   for (const PointEvaluation& e : points) {
     // a new point opens its episode, an open one advances
     if (e.episode < 0) Open(t, e);
-    const int index = e.episode < 0 ? static_cast<int>(impacts_.size()) - 1 : e.episode;
-    Impact& impact = impacts_[index];
+    const int index = e.episode < 0 ? static_cast<int>(episodes_.size()) - 1 : e.episode;
+    Episode& episode = episodes_[index];
     Track& track = tracks_[index];
-    impact.max_depth = std::max(impact.max_depth, e.depth);
+    episode.max_depth = std::max(episode.max_depth, e.depth);
     track.force.Add(t, e.force);
-    impact.max_force = track.force.peak();
-    impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
+    episode.max_force = track.force.peak();
+    episode.max_approach_velocity = std::max(episode.max_approach_velocity, e.max_approach);
     // a contact there at the start: its first compression is its settling
     if (track.settling) {
-      impact.settling_velocity = std::max(impact.settling_velocity, e.depth_rate);
-      track.settling = e.depth_rate * kChainFactor >= impact.settling_velocity;
+      episode.settling_velocity = std::max(episode.settling_velocity, e.depth_rate);
+      track.settling = e.depth_rate * kChainFactor >= episode.settling_velocity;
     }
-    TangentialSide(e, impact.tangent, impact.normal, &impact.tangential_separation_velocity,
-                   &impact.spin_after);
+    TangentialSide(e, episode.tangent, episode.normal, &episode.tangential_separation_velocity,
+                   &episode.spin_after);
     track.last_commit = commits_;
     track.last_time = t;
     track.last_depth = e.depth;
@@ -176,92 +177,92 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
 }
 
 void EpisodeLog::Close(int index, double separation_velocity) {
-  Impact& impact = impacts_[index];
+  Episode& episode = episodes_[index];
   const Track& track = tracks_[index];
-  impact.open = false;
-  impact.separation_velocity = separation_velocity;
-  const double mean_speed = 0.5 * (-track.last_rate + impact.separation_velocity);
-  impact.time_separation =
+  episode.open = false;
+  episode.separation_velocity = separation_velocity;
+  const double mean_speed = 0.5 * (-track.last_rate + episode.separation_velocity);
+  episode.time_separation =
       mean_speed > 0 ? track.last_time + track.last_depth / mean_speed : track.last_time;
-  std::vector<int>& open = pair_open_[impact.pair];
+  std::vector<int>& open = pair_open_[episode.pair];
   open.erase(std::find(open.begin(), open.end(), index));
   closed_.push_back(index);
 }
 
 // ---------------------------------------------------------------------------
 
-CollisionLog::CollisionLog(int pairs, int tags)
+ImpactLog::ImpactLog(int pairs, int tags)
     : open_(pairs, -1), seen_(pairs, 0), tag_count_(tags, 0), force_(pairs) {}
 
-void CollisionLog::Reset() {
+void ImpactLog::Reset() {
   std::fill(open_.begin(), open_.end(), -1);
   std::fill(tag_count_.begin(), tag_count_.end(), 0);
   impacts_.clear();
   previous_commit_ = -INFINITY;
 }
 
-void CollisionLog::Commit(double t, const std::vector<PointEvaluation>& points,
+void ImpactLog::Commit(double t, const std::vector<PointEvaluation>& points,
                           const EpisodeLog& episodes) {
   // the points come pair by pair (the hook evaluates the pairs in order)
   for (size_t first = 0; first < points.size();) {
     const int pair = points[first].pair;
     if (open_[pair] < 0) {
-      Impact collision;
-      collision.pair = pair;
-      collision.tag = points[first].tag;
-      collision.index = ++tag_count_[collision.tag];
-      collision.time_contact = t;
-      collision.points = 0;
-      OpenTangentialSide(points[first], &collision);
+      Episode impact;
+      impact.pair = pair;
+      impact.tag = points[first].tag;
+      impact.index = ++tag_count_[impact.tag];
+      impact.time_contact = t;
+      impact.points = 0;
+      OpenTangentialSide(points[first], &impact);
       open_[pair] = static_cast<int>(impacts_.size());
-      impacts_.push_back(collision);
+      impacts_.push_back(impact);
       force_[pair] = PeakForce();
     }
-    Impact& collision = impacts_[open_[pair]];
-    const bool opening = collision.points == 0;
+    Episode& impact = impacts_[open_[pair]];
+    const bool opening = impact.points == 0;
     double force = 0;
     size_t end = first;
     for (; end < points.size() && points[end].pair == pair; ++end) {
       const PointEvaluation& e = points[end];
       force += e.force;
-      collision.max_depth = std::max(collision.max_depth, e.depth);
-      collision.max_approach_velocity = std::max(collision.max_approach_velocity, e.max_approach);
+      impact.max_depth = std::max(impact.max_depth, e.depth);
+      impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
       // the points that open it: the earliest touch, the fastest approach
       if (opening && e.touch) {
-        collision.time_contact =
-            std::min(collision.time_contact, TouchTime(e, t, previous_commit_));
-        collision.impact_velocity = std::max(collision.impact_velocity, e.touch_velocity);
+        impact.time_contact =
+            std::min(impact.time_contact, TouchTime(e, t, previous_commit_));
+        impact.impact_velocity = std::max(impact.impact_velocity, e.touch_velocity);
       }
-      if (e.touch) collision.touch_v0 = std::max(collision.touch_v0, e.impact_velocity);
+      if (e.touch) impact.touch_v0 = std::max(impact.touch_v0, e.impact_velocity);
       // (a touch's settling starts at its next commit, as its episode's)
       if (e.episode >= 0) {
-        const Impact& point = episodes.impacts()[e.episode];
-        collision.settling_velocity =
-            std::max(collision.settling_velocity, point.settling_velocity);
-        if (point.chained()) collision.points_chained = true;
+        const Episode& point = episodes.episodes()[e.episode];
+        impact.settling_velocity =
+            std::max(impact.settling_velocity, point.settling_velocity);
+        if (point.chained()) impact.points_chained = true;
       }
     }
     force_[pair].Add(t, force);
-    collision.max_force = force_[pair].peak();
-    TangentialSide(points[first], collision.tangent, collision.normal,
-                   &collision.tangential_separation_velocity, &collision.spin_after);
-    collision.points = std::max(collision.points, static_cast<int>(end - first));
+    impact.max_force = force_[pair].peak();
+    TangentialSide(points[first], impact.tangent, impact.normal,
+                   &impact.tangential_separation_velocity, &impact.spin_after);
+    impact.points = std::max(impact.points, static_cast<int>(end - first));
     seen_[pair] = 1;
     first = end;
   }
-  // a pair with no point left: its collision ends with its last points
+  // a pair with no point left: its impact ends with its last points
   for (size_t pair = 0; pair < open_.size(); ++pair) {
     if (open_[pair] >= 0 && !seen_[pair]) {
-      Impact& collision = impacts_[open_[pair]];
-      collision.open = false;
-      collision.time_separation = -INFINITY;
-      collision.separation_velocity = -INFINITY;
+      Episode& impact = impacts_[open_[pair]];
+      impact.open = false;
+      impact.time_separation = -INFINITY;
+      impact.separation_velocity = -INFINITY;
       for (const int index : episodes.closed()) {
-        const Impact& point = episodes.impacts()[index];
+        const Episode& point = episodes.episodes()[index];
         if (point.pair != static_cast<int>(pair)) continue;
-        collision.time_separation = std::max(collision.time_separation, point.time_separation);
-        collision.separation_velocity =
-            std::max(collision.separation_velocity, point.separation_velocity);
+        impact.time_separation = std::max(impact.time_separation, point.time_separation);
+        impact.separation_velocity =
+            std::max(impact.separation_velocity, point.separation_velocity);
       }
       // (its last points closed in this commit: the episodes' own close)
       open_[pair] = -1;

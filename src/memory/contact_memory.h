@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
 // Per-contact memory, without MuJoCo types: the episodes of every contact
-// point (first touch to separation), the collisions of every pair, and the
+// point (first touch to separation), the impacts of every pair, and the
 // energy the laws dissipated, built from the points the hooks evaluated
 // (point_evaluation.h) into the records of impact.h. ContactData (MuJoCo
 // side) fills these once per accepted step; nothing here reads a simulation.
@@ -37,7 +37,7 @@ class PeakForce {
 };
 
 // The tangential slip speed along t and spin about n x t of a point, for an
-// Impact's tangential side.
+// Episode's tangential side.
 void TangentialSide(const PointEvaluation& e, const double tangent[3], const double normal[3],
                     double* slip, double* spin);
 
@@ -77,14 +77,14 @@ class EpisodeLog {
                        uint64_t* taken) const;
 
   // The largest approach rate committed for an open episode, m/s.
-  double MaxApproach(int episode) const { return impacts_[episode].max_approach_velocity; }
+  double MaxApproach(int episode) const { return episodes_[episode].max_approach_velocity; }
   // The committed friction state of an open episode, and where its point
   // sat on the two bodies at that commit (the stick anchors).
   const FrictionState& CommittedFriction(int episode) const { return tracks_[episode].friction; }
   const double (&Anchors(int episode) const)[2][3] { return tracks_[episode].local; }
   const double (&CommittedNormal(int episode) const)[3] { return tracks_[episode].last_normal; }
 
-  // The open episodes of pair (indices in impacts()).
+  // The open episodes of pair (indices in episodes()).
   const std::vector<int>& OpenEpisodes(int pair) const { return pair_open_[pair]; }
 
   // Opens an episode for each touch point and advances the open ones with
@@ -97,14 +97,14 @@ class EpisodeLog {
   template <typename SeparationSpeed>
   void CloseVanished(SeparationSpeed&& separation_speed);
 
-  // The episodes the last CloseVanished closed (indices in impacts()).
+  // The episodes the last CloseVanished closed (indices in episodes()).
   const std::vector<int>& closed() const { return closed_; }
 
   // Every episode so far, in order of first touch.
-  const std::vector<Impact>& impacts() const { return impacts_; }
+  const std::vector<Episode>& episodes() const { return episodes_; }
 
  private:
-  // What matching and closing an episode need beyond Impact.
+  // What matching and closing an episode need beyond Episode.
   struct Track {
     int64_t last_commit = -1;  // the commit that last saw it in contact
     double last_time = 0;
@@ -116,7 +116,7 @@ class EpisodeLog {
     double local[2][3] = {{0, 0, 0}, {0, 0, 0}};  // where it sat on the bodies
     FrictionState friction;
     // there at the start and in its first compression: its rate raises
-    // Impact::settling_velocity until it falls below 1 / kChainFactor of it
+    // Episode::settling_velocity until it falls below 1 / kChainFactor of it
     bool settling = false;
   };
   void Open(double t, const PointEvaluation& e);
@@ -124,41 +124,41 @@ class EpisodeLog {
 
   std::vector<std::vector<int>> pair_open_;  // pair -> its open episodes
   std::vector<uint8_t> single_point_;        // pair -> its narrowphase returns one point
-  std::vector<int> open_;         // indices of open impacts
+  std::vector<int> open_;         // indices of open episodes
   std::vector<int> closed_;       // closed by the last CloseVanished
   std::vector<int> tag_count_;    // episodes per tag
-  std::vector<Impact> impacts_;
-  std::vector<Track> tracks_;     // parallel to impacts_
+  std::vector<Episode> episodes_;
+  std::vector<Track> tracks_;     // parallel to episodes_
   double previous_commit_ = -std::numeric_limits<double>::infinity();  // s, TouchTime's bound
   int64_t commits_ = 0;
 };
 
-// The collisions of every pair: from its first point touching to its last
-// point leaving, built from the episodes of its points. A collision's impact
+// The impacts of every pair: from its first point touching to its last
+// point leaving, built from the episodes of its points. An impact's impact
 // velocity is the largest touch velocity among the points that open it (all
 // that touch in its first step); its separation velocity is that of its
 // point that leaves last (the largest, if several leave in one step). Its
 // max_force is the largest sum of its points' forces at one evaluation, its
 // max_depth the deepest point, points the most points in contact at once.
-class CollisionLog {
+class ImpactLog {
  public:
   // pairs, tags: the pair and tag counts.
-  CollisionLog(int pairs, int tags);
+  ImpactLog(int pairs, int tags);
 
   void Reset();
 
   // After episodes' Commit and CloseVanished with the same points, time t.
   void Commit(double t, const std::vector<PointEvaluation>& points, const EpisodeLog& episodes);
 
-  // Every collision so far, in order of first touch.
-  const std::vector<Impact>& impacts() const { return impacts_; }
+  // Every impact so far, in order of first touch.
+  const std::vector<Episode>& impacts() const { return impacts_; }
 
  private:
-  std::vector<int> open_;       // pair -> its open collision, or -1
+  std::vector<int> open_;       // pair -> its open impact, or -1
   std::vector<uint8_t> seen_;   // pair -> in contact at this commit (scratch)
-  std::vector<int> tag_count_;  // collisions per tag
-  std::vector<PeakForce> force_;  // pair -> the peak of its open collision
-  std::vector<Impact> impacts_;
+  std::vector<int> tag_count_;  // impacts per tag
+  std::vector<PeakForce> force_;  // pair -> the peak of its open impact
+  std::vector<Episode> impacts_;
   double previous_commit_ = -std::numeric_limits<double>::infinity();  // s, TouchTime's bound
 };
 
@@ -196,7 +196,7 @@ void EpisodeLog::CloseVanished(SeparationSpeed&& separation_speed) {
       ++k;
       continue;
     }
-    Close(index, separation_speed(impacts_[index].pair, track.last_pos, track.last_normal,
+    Close(index, separation_speed(episodes_[index].pair, track.last_pos, track.last_normal,
                                   track.last_rate));
     open_[k] = open_.back();
     open_.pop_back();

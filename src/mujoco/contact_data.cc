@@ -17,6 +17,12 @@
 
 namespace contactlaws {
 
+using internal::PointEvaluator;
+using internal::ProposedPairs;
+using internal::StepCapture;
+using internal::StepCommitter;
+using internal::StepStartVelocities;
+
 ContactData::ContactData(const ContactModel& model, mjData* d)
     : model_(model),
       d_(d),
@@ -92,12 +98,12 @@ const std::optional<Divergence>& ContactData::divergence() const {
   return committer_->divergence();
 }
 
-const std::vector<Impact>& ContactData::impacts() const {
-  return committer_->collisions().impacts();
+const std::vector<Episode>& ContactData::impacts() const {
+  return committer_->impacts().impacts();
 }
 
-const std::vector<Impact>& ContactData::point_impacts() const {
-  return committer_->episodes().impacts();
+const std::vector<Episode>& ContactData::point_episodes() const {
+  return committer_->episodes().episodes();
 }
 
 const std::vector<ContactData::Evaluation>& ContactData::latest() const {

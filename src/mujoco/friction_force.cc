@@ -9,7 +9,7 @@
 #include "mujoco/kinematics.h"
 #include "mujoco/vec3.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 // v minus its component along the unit normal n.
@@ -183,4 +183,4 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   if (rolling) AddRollingResistance(model.model(), d, pair, committed, in.stiffness, e);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

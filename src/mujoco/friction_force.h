@@ -17,7 +17,7 @@
 #include "memory/contact_memory.h"
 #include "contactlaws/contact_model.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 // The friction at point con of pair, whose normal law e holds (and in
 // e->slip, body[1]'s velocity relative to body[0] at the point, as
@@ -28,6 +28,6 @@ namespace contactlaws {
 void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,
                  const GeomPair& pair, const mjContact& con, PointEvaluation* e);
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_FRICTION_FORCE_H_

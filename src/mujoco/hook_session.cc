@@ -8,7 +8,7 @@
 
 #include "mujoco/hooks.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 // The most tagged pairs (and geoms) for which ContactData tests every pair
@@ -61,4 +61,4 @@ void StepCapture::NoticeEvaluation(double t, double latest_time) {
   }
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

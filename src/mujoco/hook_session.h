@@ -18,7 +18,7 @@
 #include "contactlaws/contact_model.h"
 #include "contactlaws/point_evaluation.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class ProposedPairs {
  public:
@@ -125,6 +125,6 @@ class StepCapture {
   int unarmed_advances_ = 0;
 };
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_HOOK_SESSION_H_

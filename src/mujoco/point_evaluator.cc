@@ -9,12 +9,12 @@
 #include "mujoco/friction_force.h"
 #include "mujoco/vec3.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
     : model_(model), contacts_(MakeContactBuffer()) {
   for (const GeomPair& pair : model.pairs()) {
-    reads_mass_.push_back(Law(pair.params.kind).family == LawFamily::kLinear &&
+    reads_mass_.push_back(Law(pair.params.law).family == LawFamily::kLinear &&
                           !pair.params.damping);
   }
   latest_.reserve(std::min<size_t>(model.slot_count(), 4 * model.pairs().size()));
@@ -104,9 +104,9 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   } else {
     // v0: the touch speed, or the largest approach rate committed since, for
     // a contact compressed faster than it touched (a pulse through touching
-    // bodies: Impact::chained)
+    // bodies: Episode::chained)
     const double committed = episodes.MaxApproach(open);
-    state.impact_velocity = std::max({episodes.impacts()[open].impact_velocity, committed,
+    state.impact_velocity = std::max({episodes.episodes()[open].impact_velocity, committed,
                                       pair.params.min_impact_velocity});
     e.max_approach = std::max(committed, e.depth_rate);
   }
@@ -118,4 +118,4 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   vec3::Copy(e.normal, normal);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

@@ -22,7 +22,7 @@
 #include "mujoco/narrowphase.h"
 #include "mujoco/step_start.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class PointEvaluator {
  public:
@@ -57,6 +57,6 @@ class PointEvaluator {
   double latest_time_ = 0;
 };
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_POINT_EVALUATOR_H_

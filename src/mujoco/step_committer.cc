@@ -9,7 +9,7 @@
 
 #include "mujoco/kinematics.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 namespace {
 
 // The warnings of mj_checkPos, mj_checkVel and mj_checkAcc, each of which
@@ -35,7 +35,7 @@ bool AllFinite(const mjtNum* x, int n) {
 StepCommitter::StepCommitter(const ContactModel& model)
     : model_(model),
       episodes_(PointsPerPair(model), static_cast<int>(model.tags().size())),
-      collisions_(static_cast<int>(model.pairs().size()), static_cast<int>(model.tags().size())) {}
+      impacts_(static_cast<int>(model.pairs().size()), static_cast<int>(model.tags().size())) {}
 
 void StepCommitter::BeforeStep(const mjData* d) {
   for (int i = 0; i < 3; ++i) bad_state_warnings_[i] = d->warning[kBadStateWarnings[i]].number;
@@ -43,7 +43,7 @@ void StepCommitter::BeforeStep(const mjData* d) {
 
 void StepCommitter::Reset() {
   episodes_.Reset();
-  collisions_.Reset();
+  impacts_.Reset();
   ledger_.Reset();
   divergence_.reset();
 }
@@ -128,7 +128,7 @@ void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& lat
                                                start.current(), start.current_time())
                                : -last_rate;
   });
-  collisions_.Commit(capture.time(), points, episodes_);
+  impacts_.Commit(capture.time(), points, episodes_);
 }
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal

@@ -2,7 +2,7 @@
 //
 // StepCommitter: what an accepted step leaves behind, once a step, from the
 // evaluation captured at the step's start state (hook_session.h): the
-// divergence check, the episodes of every contact point and the collisions
+// divergence check, the episodes of every contact point and the impacts
 // of every pair (contact_memory.h), the energy ledger, and the tagged contact
 // points listed in d->contact for MuJoCo's visualisation
 // (visible_contacts.h). The only writer of the per-contact memory.
@@ -22,7 +22,7 @@
 #include "mujoco/hook_session.h"
 #include "mujoco/step_start.h"
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class StepCommitter {
  public:
@@ -40,14 +40,14 @@ class StepCommitter {
   void AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
                  const StepCapture& capture, const StepStartVelocities& start);
 
-  // Forgets every episode, collision, the energy and any divergence.
+  // Forgets every episode, impact, the energy and any divergence.
   void Reset();
 
   // AfterStep lists the tagged points in d->contact (the default), or not.
   void ListVisiblePoints(bool list) { list_visible_points_ = list; }
 
   const EpisodeLog& episodes() const { return episodes_; }
-  const CollisionLog& collisions() const { return collisions_; }
+  const ImpactLog& impacts() const { return impacts_; }
   const DissipationLedger& ledger() const { return ledger_; }
   const std::optional<Divergence>& divergence() const { return divergence_; }
 
@@ -62,7 +62,7 @@ class StepCommitter {
   VisibleContactsOverflow visible_overflow_;
   bool list_visible_points_ = true;
   EpisodeLog episodes_;
-  CollisionLog collisions_;
+  ImpactLog impacts_;
   DissipationLedger ledger_;
 };
 
@@ -72,6 +72,6 @@ class StepCommitter {
 int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
                         mjData* d, VisibleContactsOverflow* overflow);
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_STEP_COMMITTER_H_

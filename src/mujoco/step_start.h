@@ -14,7 +14,7 @@
 
 #include <mujoco/mujoco.h>
 
-namespace contactlaws {
+namespace contactlaws::internal {
 
 class StepStartVelocities {
  public:
@@ -48,6 +48,6 @@ class StepStartVelocities {
   int recorded_ = 0;  // steps recorded since Forget, counted up to 2
 };
 
-}  // namespace contactlaws
+}  // namespace contactlaws::internal
 
 #endif  // CONTACTLAWS_MUJOCO_STEP_START_H_

@@ -47,7 +47,7 @@ void FillContact(const GeomPair& pair, const PointEvaluation& point, mjContact* 
 
 }  // namespace
 
-int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
+int internal::AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvaluation>& points,
                         mjData* d, VisibleContactsOverflow* overflow) {
   const mjModel* m = model.model();
   const std::vector<GeomPair>& pairs = model.pairs();
@@ -73,7 +73,7 @@ int AppendVisiblePoints(const ContactModel& model, const std::vector<PointEvalua
 
 int AppendVisibleContacts(const ContactData& contacts, mjData* d,
                           VisibleContactsOverflow* overflow) {
-  return AppendVisiblePoints(contacts.model(), contacts.latest(), d, overflow);
+  return internal::AppendVisiblePoints(contacts.model(), contacts.latest(), d, overflow);
 }
 
 }  // namespace contactlaws

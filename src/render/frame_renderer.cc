@@ -28,7 +28,7 @@ constexpr double kMaxOverlayShare = 0.4;
 int FontScale(int height) { return std::clamp(100 + 50 * ((height - 100) / 300), 100, 300); }
 
 std::string LastRestitution(const Simulation& sim, int tag) {
-  const std::vector<Impact>& impacts = sim.contacts().impacts();
+  const std::vector<Episode>& impacts = sim.contacts().impacts();
   for (auto it = impacts.rbegin(); it != impacts.rend(); ++it) {
     if (it->tag == tag && !it->open) return fmt::format("{:.4f}", it->restitution_post());
   }

@@ -33,6 +33,8 @@ uint64_t PairKey(int g1, int g2) {
 
 }  // namespace
 
+namespace internal {
+
 // Resolves one tag's geom1/geom2 value to geom ids.
 class TagResolver {
  public:
@@ -76,6 +78,12 @@ class TagResolver {
   std::string_view tag_;
 };
 
+}  // namespace internal
+
+using internal::PairTagSpec;
+using internal::ParsePairTag;
+using internal::TagResolver;
+
 ContactModel::ContactModel(const mjModel* m, std::string source,
                            const Overrides& overrides)
     : model_(m), source_(std::move(source)) {
@@ -94,20 +102,20 @@ namespace {
 LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
                      const TagResolver& resolve) {
   LawParams base;
-  base.kind = overrides.law ? *overrides.law : *spec.law;
+  base.law = overrides.law ? *overrides.law : *spec.law;
   const std::optional<double> restitution =
       overrides.restitution ? overrides.restitution : spec.restitution;
-  if (!restitution && ReadsRestitution(base.kind)) {
-    resolve.Fail(fmt::format("missing key restitution (law={} needs it)", LawName(base.kind)));
+  if (!restitution && ReadsRestitution(base.law)) {
+    resolve.Fail(fmt::format("missing key restitution (law={} needs it)", LawName(base.law)));
   }
   // the dissipation of a law that reads it: the override, else the tag's
-  if (ReadsDissipation(base.kind)) {
+  if (ReadsDissipation(base.law)) {
     base.dissipation = overrides.dissipation ? overrides.dissipation : spec.dissipation;
     if (!base.dissipation) {
       // a law given by an override (--law, --laws) cannot find it in the tag
       // of another law: say where it can come from
-      resolve.Fail(fmt::format("missing key dissipation (law={} takes: {}){}", LawName(base.kind),
-                               Law(base.kind).parameters,
+      resolve.Fail(fmt::format("missing key dissipation (law={} takes: {}){}", LawName(base.law),
+                               Law(base.law).parameters,
                                overrides.law && *overrides.law != *spec.law
                                    ? fmt::format("; the tag's law={} does not read it: give the "
                                                  "dissipation override (--dissipation)",
@@ -122,7 +130,7 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
   if (spec.min_impact_velocity) base.min_impact_velocity = *spec.min_impact_velocity;
   if (spec.allow_tension) base.allow_tension = *spec.allow_tension;
   const bool materials = spec.youngs1.has_value();
-  if (Law(base.kind).family == LawFamily::kLinear) {
+  if (Law(base.law).family == LawFamily::kLinear) {
     // linear: linear_stiffness, or stiffness when the exponent is 1 or absent
     if (spec.linear_stiffness) {
       base.linear_stiffness = *spec.linear_stiffness;
@@ -131,14 +139,14 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
     } else {
       resolve.Fail(fmt::format("law={} needs linear_stiffness (N/m), or stiffness with "
                                "exponent 1 or absent",
-                               LawName(base.kind)));
+                               LawName(base.law)));
     }
   } else if (spec.stiffness) {
     base.stiffness = *spec.stiffness;
   } else if (!materials) {
     resolve.Fail(fmt::format(
         "missing key stiffness (or youngs1 poisson1 youngs2 poisson2) for law={}",
-        LawName(base.kind)));
+        LawName(base.law)));
   }
   return base;
 }
@@ -231,7 +239,7 @@ void ContactModel::ReadTags(const Overrides& overrides) {
     tag.label = spec.label;
     tag.geom1 = spec.geom1;
     tag.geom2 = spec.geom2;
-    tag.law = base.kind;
+    tag.law = base.law;
     tag.restitution = base.restitution;
     AddPairs(spec, base, resolve, &tag);
     tags_.push_back(std::move(tag));
@@ -289,7 +297,7 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       pair.depth_limit = kDivergenceDepthFraction * size;
       pair.identity_tolerance = kContactIdentityFraction * size;
       // stiffness from materials, per pair: radii differ
-      if (spec.youngs1 && Law(base.kind).family != LawFamily::kLinear) {
+      if (spec.youngs1 && Law(base.law).family != LawFamily::kLinear) {
         pair.params.stiffness = MaterialStiffness(m, g1, g2, spec, pair_name, resolve);
       }
       if (const std::optional<ParamError> e = ValidateLawParams(pair.params)) {

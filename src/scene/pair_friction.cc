@@ -10,9 +10,9 @@
 
 namespace contactlaws {
 
-PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const PairTagSpec& tag,
+PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const internal::PairTagSpec& tag,
                                  const Overrides& overrides) {
-  const FrictionTagSpec& spec = tag.friction;
+  const internal::FrictionTagSpec& spec = tag.friction;
   PairFriction out;
   FrictionParams& p = out.params;
   // MuJoCo 2.2 (mj_contactParam): the larger condim, and each friction
@@ -50,16 +50,26 @@ PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const PairTag
   }
   if (spec.transition_velocity) p.transition_velocity = *spec.transition_velocity;
   if (spec.stribeck_velocity) p.stribeck_velocity = *spec.stribeck_velocity;
-  // Mindlin's no-slip spring of the tag's materials, damped at the normal
-  // law's damping ratio, unless the tag says otherwise
-  p.tangential_stiffness = spec.tangential_stiffness;
+  // k_t: the tag's, else Mindlin's no-slip spring, of the tag's ratio, else
+  // of its materials, else of one material of nu = 0.3
+  if (spec.tangential_stiffness) {
+    p.stiffness_rule = TangentialStiffnessRule::kGiven;
+    p.tangential_stiffness = *spec.tangential_stiffness;
+  }
   if (tag.youngs1) {
     p.tangential_ratio = MindlinRatio(*tag.youngs1, *tag.poisson1, *tag.youngs2, *tag.poisson2);
-    p.normal_damping_ratio = true;
   }
   if (spec.tangential_ratio) p.tangential_ratio = *spec.tangential_ratio;
-  p.tangential_damping = spec.tangential_damping;
-  p.tangential_damping_ratio = spec.tangential_damping_ratio;
+  // c_t: the tag's, else of the tag's damping ratio, else the normal law's
+  // damping ratio (a tag of materials), else critical (the default ratio)
+  if (spec.tangential_damping) {
+    p.damping_rule = TangentialDampingRule::kGiven;
+    p.tangential_damping = *spec.tangential_damping;
+  } else if (spec.tangential_damping_ratio) {
+    p.tangential_damping_ratio = *spec.tangential_damping_ratio;
+  } else if (tag.youngs1) {
+    p.damping_rule = TangentialDampingRule::kNormalLaw;
+  }
   if (spec.bristle_stiffness) p.bristle_stiffness = *spec.bristle_stiffness;
   p.bristle_damping = spec.bristle_damping;
   if (spec.viscous) p.viscous = *spec.viscous;

@@ -33,7 +33,7 @@ struct PairFriction {
 
 // The friction of geoms g1, g2 under tag spec (its friction keys, and its
 // materials for Mindlin's spring) and overrides.
-PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const PairTagSpec& spec,
+PairFriction ResolvePairFriction(const mjModel* m, int g1, int g2, const internal::PairTagSpec& spec,
                                  const Overrides& overrides);
 
 // The tangential damping's mass for the pair's bodies, kg (GeomPair::friction_mass).

@@ -9,8 +9,8 @@ const std::vector<TagKey>& TagKeys() {
   static const std::vector<TagKey> keys = [] {
     const LawParams law;
     const FrictionParams friction;
-    using S = PairTagSpec;
-    using F = FrictionTagSpec;
+    using S = internal::PairTagSpec;
+    using F = internal::FrictionTagSpec;
     constexpr TagReaders kEvery = TagReaders::kEvery;
     const std::optional<double> none;
     // a name, a number of the law, a number of the friction model

@@ -55,9 +55,9 @@ struct TagKey {
   // Hertz ignores the restitution)
   bool refused_unread;
   // the field of PairTagSpec it sets: one of these
-  std::string PairTagSpec::*text;
-  std::optional<double> PairTagSpec::*number;
-  std::optional<double> FrictionTagSpec::*friction_number;
+  std::string internal::PairTagSpec::*text;
+  std::optional<double> internal::PairTagSpec::*number;
+  std::optional<double> internal::FrictionTagSpec::*friction_number;
   // the value a pair takes when the tag does not give it; nullopt when it is
   // required or comes from the model (the geoms' friction, the materials)
   std::optional<double> fallback;

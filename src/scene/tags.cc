@@ -16,6 +16,9 @@
 
 namespace contactlaws {
 
+using internal::FrictionTagSpec;
+using internal::PairTagSpec;
+
 namespace {
 
 // key=value words of a tag's data, in order.
@@ -271,7 +274,7 @@ void CheckTagPrefix(std::string_view source, std::string_view name) {
                           source, name, meant, prefix));
 }
 
-PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
+PairTagSpec internal::ParsePairTag(std::string_view source, std::string_view name,
                          std::string_view data) {
   TagContext ctx(source, name);
   PairTagSpec spec;

@@ -30,6 +30,8 @@ inline constexpr std::string_view kDriveTagPrefix = "contactdrive:";
 inline constexpr std::array<std::string_view, 7> kDriveKeys = {
     "body", "motion", "axis", "amplitude", "omega", "phase", "speed"};
 
+namespace internal {
+
 // The friction keys of a contactlaw tag as written; the pair's geoms give
 // what is missing (ContactModel).
 struct FrictionTagSpec {
@@ -70,6 +72,8 @@ struct PairTagSpec {
   FrictionTagSpec friction;
 };
 
+}  // namespace internal
+
 // A contactdrive tag: the body's position is prescribed as
 //   motion=sine (default): p(t) = p_ref + axis * amplitude * sin(omega t + phase),
 //   motion=linear:         p(t) = p_ref + axis * speed * t,
@@ -87,8 +91,10 @@ struct DriveTagSpec {
 
 // Parse one tag. name is the full <text> name, data its data; source names the
 // file in messages. Throws Error naming source, tag, key and value.
+namespace internal {
 PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
                          std::string_view data);
+}  // namespace internal
 DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
                            std::string_view data);
 

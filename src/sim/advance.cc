@@ -96,7 +96,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
     while (next * period - tolerance <= sim->time()) ++next;
   };
   auto first_episode_over = [&] {
-    for (const Impact& impact : sim->contacts().impacts()) {
+    for (const Episode& impact : sim->contacts().impacts()) {
       if (impact.tag == 0) return !impact.open;
     }
     return false;

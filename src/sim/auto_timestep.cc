@@ -202,11 +202,11 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
   const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
   const double tangential = TangentialStep(e);
   // a settled contact (it touched barely faster than the law's floor of v0
-  // and moves no faster than it): no collision to resolve, only a spring to
+  // and moves no faster than it): no impact to resolve, only a spring to
   // keep stable under RK4 (the dampers' lags still bound its step)
   const double fine = pair_steps_->Fine(e.pair, e.impact_velocity);
   if (settled_rule_ && std::abs(e.depth_rate) <= floor && e.episode >= 0) {
-    const double lasted = contacts_.data()->time - contacts_.point_impacts()[e.episode].time_contact;
+    const double lasted = contacts_.data()->time - contacts_.point_episodes()[e.episode].time_contact;
     const bool slow_touch = e.impact_velocity <= kSettledTouchFactor * floor;
     if (slow_touch || lasted > kSettledDurations * fine * pair_steps_->PerContact(e.pair)) {
       return std::min(pair_steps_->Settled(e.pair), tangential);

@@ -44,9 +44,9 @@ PairSteps::PairSteps(const ContactModel& cm, const std::vector<double>& effectiv
     : steps_(steps) {
   for (size_t p = 0; p < cm.pairs().size(); ++p) {
     const LawParams& law = cm.pairs()[p].params;
-    law_.push_back(law.kind);
+    law_.push_back(law.law);
     floor_.push_back(law.min_impact_velocity);
-    const double n = Law(law.kind).family == LawFamily::kLinear ? 1.0 : law.exponent;
+    const double n = Law(law.law).family == LawFamily::kLinear ? 1.0 : law.exponent;
     duration_at_unit_speed_.push_back(ElasticContactDuration(law, effective_mass[p], 1.0));
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
   }

@@ -153,9 +153,9 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
 
   const LawParams& law = pair.params;
   const double v = e.impact_velocity;
-  if (std::isinf(e.effective_mass) || !(v > 0 || Law(law.kind).family == LawFamily::kLinear)) {
+  if (std::isinf(e.effective_mass) || !(v > 0 || Law(law.law).family == LawFamily::kLinear)) {
     e.max_depth = e.contact_duration = kInfinity;
-  } else if (Law(law.kind).family == LawFamily::kLinear) {
+  } else if (Law(law.law).family == LawFamily::kLinear) {
     e.max_depth = v * std::sqrt(e.effective_mass / law.linear_stiffness);
     e.contact_duration = ElasticContactDuration(law, e.effective_mass, v);
   } else {
@@ -176,7 +176,7 @@ double PairEffectiveMass(const ContactModel& cm, int pair_index) {
 
 double ElasticContactDuration(const LawParams& law, double mass, double speed) {
   if (std::isinf(mass)) return kInfinity;
-  if (Law(law.kind).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
+  if (Law(law.law).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
   return HertzContactDuration(law.stiffness, law.exponent, mass, speed);
 }
 
@@ -243,7 +243,7 @@ TangentialEstimate EstimateTangential(const ContactModel& cm, int pair_index,
     t.stiffness = TangentialStiffness(f, pair.params, depth);
     t.what = fmt::format("stick spring ({}, k_t {:.4g} N/m{}, mass {:.4g} kg)", model,
                          t.stiffness,
-                         f.tangential_stiffness ? ""
+                         f.stiffness_rule == TangentialStiffnessRule::kGiven ? ""
                          : resting              ? " (Mindlin, at the depth of its load at rest)"
                                                 : " (Mindlin, at the max depth)",
                          t.mass);

@@ -9,10 +9,10 @@
 namespace contactlaws {
 namespace {
 
-// The first chained point of pair p: its numbers say what a collision's mix
-// of points does not (a collision is chained when one of its points is).
-const Impact* FirstChainedPoint(const Simulation& sim, int p) {
-  for (const Impact& point : sim.contacts().point_impacts()) {
+// The first chained point of pair p: its numbers say what an impact's mix
+// of points does not (an impact is chained when one of its points is).
+const Episode* FirstChainedPoint(const Simulation& sim, int p) {
+  for (const Episode& point : sim.contacts().point_episodes()) {
     if (point.pair == p && point.chained()) return &point;
   }
   return nullptr;
@@ -21,18 +21,18 @@ const Impact* FirstChainedPoint(const Simulation& sim, int p) {
 }  // namespace
 
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
-  // the library handles any rise (Impact::max_approach_velocity); a chained
+  // the library handles any rise (Episode::max_approach_velocity); a chained
   // contact is one a warning should name, once per tag: many pairs of a tag
   // (balls on a box, a cradle) say one thing
   const ContactModel& cm = sim.contact_model();
   std::vector<std::string> warnings;
   for (const PairTag& tag : cm.tags()) {
-    const Impact* first = nullptr;
+    const Episode* first = nullptr;
     int count = 0;
     int pairs = 0;
     for (const int p : tag.pairs) {
       int pair_count = 0;
-      for (const Impact& c : sim.contacts().impacts()) {
+      for (const Episode& c : sim.contacts().impacts()) {
         if (c.pair != p || !c.chained()) continue;
         if (!first) first = &c;
         ++pair_count;
@@ -41,7 +41,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
       pairs += pair_count > 0;
     }
     if (!first) continue;
-    const Impact* point = FirstChainedPoint(sim, first->pair);
+    const Episode* point = FirstChainedPoint(sim, first->pair);
     if (!point) point = first;
     const std::string others =
         pairs > 1 ? fmt::format(" and {} more pair{} of its tag", pairs - 1, pairs > 2 ? "s" : "")

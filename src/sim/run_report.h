@@ -12,10 +12,10 @@
 
 namespace contactlaws {
 
-// One line per tag with chained collisions (Impact::chained: touched slowly,
+// One line per tag with chained impacts (Episode::chained: touched slowly,
 // then compressed far faster, as touching bodies are when a pulse comes
 // through; not a contact there at the start that settles): its first such
-// pair and how many more, how many collisions, the first one's touch speed
+// pair and how many more, how many impacts, the first one's touch speed
 // and largest approach rate, and what the library did about it.
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim);
 

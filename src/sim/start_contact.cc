@@ -66,7 +66,7 @@ double Load(const ContactModel& cm, const mjModel* m, mjData* accelerated, int p
 }  // namespace
 
 double DeepStartFactor(const LawParams& law) {
-  return 1 + (Law(law.kind).family == LawFamily::kLinear ? 1.0 : law.exponent);
+  return 1 + (Law(law.law).family == LawFamily::kLinear ? 1.0 : law.exponent);
 }
 
 std::vector<StartContact> StartContacts(Simulation* sim) {

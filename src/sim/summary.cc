@@ -7,15 +7,15 @@
 
 namespace contactlaws {
 
-RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
+RunSummary Summarize(const std::vector<Episode>& impacts, double end_time) {
   RunSummary s;
   s.impacts = static_cast<int>(impacts.size());
   if (impacts.empty()) return s;
 
-  // the first collision with an approach: bodies placed overlapping and
+  // the first impact with an approach: bodies placed overlapping and
   // pushed apart at t = 0 rebound from nothing (their e_post would be x / 0)
   const auto first = std::find_if(impacts.begin(), impacts.end(),
-                                  [](const Impact& i) { return i.approached(); });
+                                  [](const Episode& i) { return i.approached(); });
   if (first != impacts.end()) {
     s.impact_velocity = first->impact_velocity;
     if (!first->open) {
@@ -26,10 +26,10 @@ RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
 
   struct PairRest {
     double longest_closed = 0;
-    const Impact* last = nullptr;
+    const Episode* last = nullptr;
   };
   std::map<int, PairRest> pairs;
-  for (const Impact& impact : impacts) {
+  for (const Episode& impact : impacts) {
     s.max_depth = std::max(s.max_depth, impact.max_depth);
     s.max_force = std::max(s.max_force, impact.max_force);
     PairRest& pair = pairs[impact.pair];
@@ -42,7 +42,7 @@ RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
 
   double rest = 0;
   for (const auto& [index, pair] : pairs) {
-    const Impact& last = *pair.last;
+    const Episode& last = *pair.last;
     if (!last.open) return s;
     if (!(end_time - last.time_contact > pair.longest_closed)) return s;
     rest = std::max(rest, last.time_contact);
@@ -52,8 +52,8 @@ RunSummary Summarize(const std::vector<Impact>& impacts, double end_time) {
 }
 
 RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time) {
-  std::vector<Impact> impacts;
-  for (const Impact& impact : contacts.impacts()) {
+  std::vector<Episode> impacts;
+  for (const Episode& impact : contacts.impacts()) {
     if (impact.tag == tag) impacts.push_back(impact);
   }
   return Summarize(impacts, end_time);

@@ -33,9 +33,9 @@ struct RunSummary {
 // episode (a contact that has not outlasted every bounce before it cannot be
 // told from one more bounce). It is the latest such first touch over the
 // pairs; empty when a pair is not at rest, or there was no contact at all.
-RunSummary Summarize(const std::vector<Impact>& impacts, double end_time);
+RunSummary Summarize(const std::vector<Episode>& impacts, double end_time);
 
-// Summarize of the collisions of one tag (ContactData::impacts() whose tag
+// Summarize of the impacts of one tag (ContactData::impacts() whose tag
 // is tag): the row per tag of `run`'s table and of the Python run().
 RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time);
 

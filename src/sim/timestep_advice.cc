@@ -66,7 +66,7 @@ std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& 
       "under the weight {:.4g} N at the v0 floor min_impact_velocity {} m/s): a resting contact "
       "would hang or chatter: use --timestep {:.3g} or smaller, or raise min_impact_velocity",
       PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.resting.lag,
-      LawName(law.kind), advice.resting.load, law.min_impact_velocity, advice.resting.timestep());
+      LawName(law.law), advice.resting.load, law.min_impact_velocity, advice.resting.timestep());
 }
 
 std::vector<std::string> TimestepWarnings(const Simulation& sim,

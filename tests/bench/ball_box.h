@@ -19,7 +19,7 @@ struct BallBox {
   int per_side = 4;         // k balls along each axis: k^3 balls
   double radius = 0.05;     // m, half the paper's ball
   double mass = 0.125;      // kg: the paper's ball's density (1 kg at 0.1 m)
-  double spacing = 0.104;   // m between grid centres: 4 mm gaps, collisions within 2 ms
+  double spacing = 0.104;   // m between grid centres: 4 mm gaps, impacts within 2 ms
   double launch_speed = 1.5;  // m/s, the bound of each initial velocity component
 
   int balls() const { return per_side * per_side * per_side; }

@@ -120,7 +120,7 @@ int Run(const std::string& path, double seconds) {
     // the laws' contacts are at most ~1 mm deep at these speeds
     problems += CheckState(sim.model(), sim.data(), path + " (contact laws)", 0.005);
     int episodes = 0;
-    for (const contactlaws::Impact& impact : sim.contacts().impacts()) episodes += !impact.open;
+    for (const contactlaws::Episode& impact : sim.contacts().impacts()) episodes += !impact.open;
     fmt::print("{} (contact laws): {} contact episodes ended\n", path, episodes);
   }
   {

@@ -51,7 +51,7 @@ constexpr int kFrictionBalls = 64;
 // Simulated stretches per iteration (s); --smoke divides them.
 struct Stretches {
   double bouncing_ball = 3.0;  // the goal: 3 s at 1e-5 s
-  double ball_box = 0.01;      // from the launch: its collisions begin at 1-2 ms
+  double ball_box = 0.01;      // from the launch: its impacts begin at 1-2 ms
   std::vector<int> ball_counts = {8, 64, 512};
   // the sweep's subset: every law at one e, until the first episode ends
   std::vector<LawId> sweep_laws = {AllLaws().begin(), AllLaws().end()};
@@ -87,7 +87,7 @@ bool CheckWarnings(benchmark::State& state, const mjData* d) {
 // The paper's ball: K = 1.4e8 N/m^1.5, n = 1.5, k = 5e6 N/m, e = 0.9.
 LawParams PaperParams(LawId kind) {
   LawParams params;
-  params.kind = kind;
+  params.law = kind;
   params.restitution = 0.9;
   params.stiffness = 1.4e8;
   params.exponent = 1.5;
@@ -232,7 +232,7 @@ void BM_Sweep(benchmark::State& state, const Stretches& s, bool automatic) {
         advance.until_first_episode = true;
         if (automatic) advance.auto_timestep = AutoTimestepOptions{};
         const AdvanceResult result = Advance(sim.get(), advance, nullptr);
-        const std::vector<Impact>& impacts = sim->contacts().impacts();
+        const std::vector<Episode>& impacts = sim->contacts().impacts();
         if (impacts.empty() || impacts[0].open) {
           state.SkipWithError("a first contact did not end within 2 s");
           return;

@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
 // What contactlaws writes, read as a user reads it: the impact log per
-// collision, the trajectory's groups, fields at the start of a run, warnings.
+// impact, the trajectory's groups, fields at the start of a run, warnings.
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -35,10 +35,10 @@ using testing::Result;
 using testing::RunCli;
 using testing::TinyScene;
 
-// A flat box landing on its four corners: one row per collision of the pair,
+// A flat box landing on its four corners: one row per impact of the pair,
 // with its four points and their total force; --impacts-per-point gives each
 // corner's own row.
-TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
+TEST(CliTest, TheImpactLogHasARowPerImpactOfAPair) {
   const std::string scene = testing::WriteScene("flat_box", R"(<mujoco>
   <option timestep="1e-4" integrator="RK4"/>
   <worldbody>
@@ -55,24 +55,24 @@ TEST(CliTest, TheImpactLogHasARowPerCollisionOfAPair) {
   const Result p = RunCli("run " + scene + " --duration 0.3 --impacts-per-point --impacts " +
                           dir + "/box_points.csv");
   ASSERT_EQ(p.status, 0) << p.output;
-  const std::vector<std::string> collisions = Lines(ReadFile(dir + "/box.csv"));
+  const std::vector<std::string> impacts = Lines(ReadFile(dir + "/box.csv"));
   const std::vector<std::string> points = Lines(ReadFile(dir + "/box_points.csv"));
-  ASSERT_GE(collisions.size(), 3u) << "the box lands and bounces";
-  // each collision on four corners, each corner a row of its own
+  ASSERT_GE(impacts.size(), 3u) << "the box lands and bounces";
+  // each impact on four corners, each corner a row of its own
   auto column = [&](const std::string& name) {
-    const std::vector<std::string> header = Split(collisions[0], ',');
+    const std::vector<std::string> header = Split(impacts[0], ',');
     return static_cast<int>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   auto field = [](const std::string& row, int k) { return Split(row, ',').at(k); };
-  EXPECT_EQ(points.size() - 1, 4 * (collisions.size() - 1));
-  for (size_t i = 1; i < collisions.size(); ++i) {
-    EXPECT_EQ(field(collisions[i], column("points")), "4");
+  EXPECT_EQ(points.size() - 1, 4 * (impacts.size() - 1));
+  for (size_t i = 1; i < impacts.size(); ++i) {
+    EXPECT_EQ(field(impacts[i], column("points")), "4");
   }
   for (size_t i = 1; i < points.size(); ++i) EXPECT_EQ(field(points[i], column("points")), "1");
-  // the first collision's largest force is the four corners' together: each
+  // the first impact's largest force is the four corners' together: each
   // corner carries a quarter (the box lands flat), to the rounding of the sum
   const int max_force = column("max_force");
-  const double pair_force = std::stod(field(collisions[1], max_force));
+  const double pair_force = std::stod(field(impacts[1], max_force));
   for (size_t i = 1; i <= 4; ++i) {
     EXPECT_NEAR(std::stod(field(points[i], max_force)), pair_force / 4, 1e-9 * pair_force)
         << points[i];

@@ -112,7 +112,8 @@ void FuzzParser(bool drive, std::string_view body) {
       }
       Say("valid drive tag " + spec.label);
     } else {
-      const contactlaws::PairTagSpec spec = contactlaws::ParsePairTag(kSceneName, name, data);
+      const contactlaws::internal::PairTagSpec spec =
+          contactlaws::internal::ParsePairTag(kSceneName, name, data);
       if (spec.label.empty() || spec.geom1.empty() || spec.geom2.empty() || !spec.law) {
         Finding("a pair tag without label, geoms or law");
       }
@@ -302,7 +303,7 @@ void FuzzScene(bool raw, std::string_view header, std::string_view body) {
       std::to_string(laws->pairs().size()) + " pairs, " +
       std::to_string(laws->drives().size()) + " drives, " +
       std::to_string(contacts.impacts().size()) + " impacts");
-  for (const contactlaws::Impact& impact : contacts.impacts()) {
+  for (const contactlaws::Episode& impact : contacts.impacts()) {
     if (impact.tag < 0 || impact.tag >= static_cast<int>(laws->tags().size()) ||
         impact.pair < 0 || impact.pair >= static_cast<int>(laws->pairs().size())) {
       Finding("an impact of no tag or pair");

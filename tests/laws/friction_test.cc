@@ -146,7 +146,9 @@ TEST(FrictionKernelTest, TheTableNamesEveryModelAndRefusesBadValues) {
   p.mu_kinetic = 0.6;
   EXPECT_EQ(ValidateFrictionParams(p)->key, "mu_kinetic");
   p = Params(FrictionKind::kCoulomb);
-  p.tangential_stiffness = 0;
+  p.tangential_stiffness = 0;  // not read by Mindlin's rule
+  EXPECT_FALSE(ValidateFrictionParams(p));
+  p.stiffness_rule = TangentialStiffnessRule::kGiven;
   EXPECT_EQ(ValidateFrictionParams(p)->key, "tangential_stiffness");
   p = Params(FrictionKind::kCoulomb);
   p.tangential_ratio = -1;
@@ -175,7 +177,8 @@ TEST(FrictionKernelTest, MindlinsStiffnessIsEightGStarA) {
   EXPECT_NEAR(TangentialStiffness(p, hertz, d) / (8 * g_star * std::sqrt(r * d)), 1, kRounding);
   // one material: 2 (1 - nu) / (2 - nu), the default's form
   EXPECT_NEAR(MindlinRatio(2e11, kDefaultPoisson, 2e11, kDefaultPoisson), kMindlinRatio, kRounding);
-  // the tag's k_t wins
+  // the tag's k_t
+  p.stiffness_rule = TangentialStiffnessRule::kGiven;
   p.tangential_stiffness = 5e5;
   EXPECT_EQ(TangentialStiffness(p, hertz, d), 5e5);
 }
@@ -185,7 +188,7 @@ TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
   // rounding of a few operations
   constexpr double kRounding = 1e-14;
   LawParams law;
-  law.kind = *ParseLawName("hunt-crossley");
+  law.law = *ParseLawName("hunt-crossley");
   law.stiffness = 1e9;
   law.restitution = 0.9;
   ResolveLawParams(&law);
@@ -197,15 +200,17 @@ TEST(FrictionKernelTest, TangentialDampingTakesTheNormalLawsDampingRatio) {
   const double k_t = 0.8 * k_n, m = 0.01;
   FrictionParams p = Params(FrictionKind::kCoulomb);
   EXPECT_DOUBLE_EQ(TangentialDamping(p, law, state, k_t, m), 2 * std::sqrt(k_t * m));
-  p.normal_damping_ratio = true;
+  p.damping_rule = TangentialDampingRule::kNormalLaw;
   // the same ratio c / (2 sqrt(k m)) on both springs
   const double c_t = TangentialDamping(p, law, state, k_t, m);
   EXPECT_NEAR(c_t / (2 * std::sqrt(k_t * m)), c_n / (2 * std::sqrt(k_n * m)), kRounding);
   EXPECT_GT(c_t, 0);
   state.depth = 0;
   EXPECT_EQ(TangentialDamping(p, law, state, k_t, m), 0);
+  p.damping_rule = TangentialDampingRule::kRatio;
   p.tangential_damping_ratio = 0.5;
   EXPECT_DOUBLE_EQ(TangentialDamping(p, law, state, k_t, m), std::sqrt(k_t * m));
+  p.damping_rule = TangentialDampingRule::kGiven;
   p.tangential_damping = 3;
   EXPECT_EQ(TangentialDamping(p, law, state, k_t, m), 3);
 }

@@ -22,7 +22,7 @@ TEST(LawTableTest, RowsAreComplete) {
   std::set<std::string_view> names;
   for (size_t i = 0; i < Laws().size(); ++i) {
     const LawInfo& law = Laws()[i];
-    EXPECT_EQ(static_cast<size_t>(law.kind), i) << law.name;
+    EXPECT_EQ(static_cast<size_t>(law.id), i) << law.name;
     EXPECT_TRUE(names.insert(law.name).second) << law.name << " twice";
     for (const char c : law.name) {
       EXPECT_TRUE((c >= 'a' && c <= 'z') || c == '-') << law.name;
@@ -30,9 +30,9 @@ TEST(LawTableTest, RowsAreComplete) {
     EXPECT_FALSE(law.formula.empty()) << law.name;
     EXPECT_FALSE(law.parameters.empty()) << law.name;
     EXPECT_FALSE(law.reference.empty()) << law.name;
-    EXPECT_EQ(ParseLawName(law.name), law.kind);
+    EXPECT_EQ(ParseLawName(law.name), law.id);
     EXPECT_NE(LawNameList().find(law.name), std::string::npos) << law.name;
-    EXPECT_EQ(law.family == LawFamily::kLinear, law.kind == *ParseLawName("kelvin-voigt")) << law.name;
+    EXPECT_EQ(law.family == LawFamily::kLinear, law.id == *ParseLawName("kelvin-voigt")) << law.name;
   }
   EXPECT_EQ(AllLaws().size(), Laws().size());
   // the named ids are the rows the code refers to
@@ -56,16 +56,16 @@ TEST(LawTableTest, HysteresisCoefficientsOverTheRangeOfE) {
   constexpr double kUnbounded = 1e5;
   for (const LawInfo& law : Laws()) {
     if (law.family != LawFamily::kHysteresis || !law.hysteresis) continue;
-    EXPECT_EQ(HysteresisCoefficient(law.kind, 1.0), 0.0) << law.name;
+    EXPECT_EQ(HysteresisCoefficient(law.id, 1.0), 0.0) << law.name;
     for (double e = law.restitution_excludes_zero ? kSmallest : 0.0; e <= 1.0; e += kGrid) {
-      const double a = HysteresisCoefficient(law.kind, e);
+      const double a = HysteresisCoefficient(law.id, e);
       ASSERT_TRUE(std::isfinite(a) && a >= 0) << law.name << " e = " << e << ": a = " << a;
-      const std::optional<double> rebound = EffectiveRestitution(law.kind, e);
+      const std::optional<double> rebound = EffectiveRestitution(law.id, e);
       ASSERT_TRUE(rebound && *rebound > 0 && *rebound <= 1) << law.name << " e = " << e;
     }
     if (law.restitution_excludes_zero) {
-      EXPECT_GT(HysteresisCoefficient(law.kind, kSmallest), kUnbounded) << law.name;
-      EXPECT_FALSE(EffectiveRestitution(law.kind, 0.0).has_value()) << law.name;
+      EXPECT_GT(HysteresisCoefficient(law.id, kSmallest), kUnbounded) << law.name;
+      EXPECT_FALSE(EffectiveRestitution(law.id, 0.0).has_value()) << law.name;
     }
   }
 }
@@ -77,10 +77,10 @@ TEST(LawTableTest, RangesOfE) {
   constexpr double kTiny = 1e-6;
   constexpr double kUnbounded = 1e5;
   for (const LawInfo& law : Laws()) {
-    const bool unbounded = HysteresisCoefficient(law.kind, kTiny) > kUnbounded;
+    const bool unbounded = HysteresisCoefficient(law.id, kTiny) > kUnbounded;
     EXPECT_EQ(law.restitution_excludes_zero, unbounded) << law.name;
     LawParams p;
-    p.kind = law.kind;
+    p.law = law.id;
     p.stiffness = 1e6;
     p.linear_stiffness = 1e6;
     p.dissipation = 0.1;
@@ -95,7 +95,7 @@ TEST(LawTableTest, RangesOfE) {
     }
     // above 1 every law that reads e refuses it: a < 0 would gain energy
     p.restitution = 1.0 + 1e-9;
-    EXPECT_EQ(ValidateLawParams(p).has_value(), ReadsRestitution(law.kind)) << law.name;
+    EXPECT_EQ(ValidateLawParams(p).has_value(), ReadsRestitution(law.id)) << law.name;
   }
 }
 
@@ -142,7 +142,7 @@ constexpr double kHertzForce = 3162.2776601683795;  // 1e8 * (1e-3)^1.5, N
 
 double Force(std::string_view name, double e) {
   LawParams p;
-  p.kind = Named(name);
+  p.law = Named(name);
   p.restitution = e;
   p.stiffness = 1e8;
   p.exponent = 1.5;
@@ -214,7 +214,7 @@ TEST(LawTableTest, HuntCrossleyConstantByHand) {
   EXPECT_FALSE(ReportedRestitution(Named("hunt-crossley-constant"), 0.5).has_value());
   // it needs its dissipation, >= 0
   LawParams p;
-  p.kind = Named("hunt-crossley-constant");
+  p.law = Named("hunt-crossley-constant");
   p.stiffness = 1e8;
   ASSERT_TRUE(ValidateLawParams(p).has_value());
   EXPECT_EQ(ValidateLawParams(p)->key, "dissipation");

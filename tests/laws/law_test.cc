@@ -21,7 +21,7 @@ constexpr double kRoundoff = 1e-12;
 
 LawParams Hertzian(LawId kind, double e) {
   LawParams p;
-  p.kind = kind;
+  p.law = kind;
   p.restitution = e;
   p.stiffness = 1.4e8;
   p.exponent = 1.5;
@@ -58,7 +58,7 @@ TEST(LawTest, HysteresisForceByHand) {
 
 TEST(LawTest, KelvinVoigtByHand) {
   LawParams p;
-  p.kind = *ParseLawName("kelvin-voigt");
+  p.law = *ParseLawName("kelvin-voigt");
   p.linear_stiffness = 5e6;
   p.restitution = 0.5;
   // zeta = ln 2 / sqrt(pi^2 + ln^2 2) = 0.6931472 / 3.2171501 = 0.2154538
@@ -97,7 +97,7 @@ TEST(LawTest, HertzFamilyContinuousAtFirstTouch) {
     EXPECT_LT(Force(p, 1e-12, -kV0), 1e-8) << LawName(kind);
   }
   LawParams kv;
-  kv.kind = *ParseLawName("kelvin-voigt");
+  kv.law = *ParseLawName("kelvin-voigt");
   kv.linear_stiffness = 5e6;
   kv.restitution = 0.3;
   EXPECT_GT(Force(kv, 1e-12, kV0, kV0, 1.0), 100.0) << "Kelvin-Voigt jumps to c v0";
@@ -130,7 +130,7 @@ TEST(LawTest, ElasticEnergyIsTheSpringIntegral) {
   EXPECT_NEAR(ElasticEnergy(Hertzian(*ParseLawName("flores"), 0.5), kDepth),
               kHertzForce * kDepth / 2.5, kRoundoff);
   LawParams kv;
-  kv.kind = *ParseLawName("kelvin-voigt");
+  kv.law = *ParseLawName("kelvin-voigt");
   kv.linear_stiffness = 5e6;
   EXPECT_NEAR(ElasticEnergy(kv, kDepth), 2.5, kRoundoff);
 }
@@ -157,7 +157,7 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   ASSERT_TRUE(error(p));
   EXPECT_EQ(error(p)->key, "restitution");
   EXPECT_EQ(error(p)->requirement, "must be in (0, 1] for flores");
-  p.kind = *ParseLawName("hunt-crossley");  // e = 0 is fine for Hunt-Crossley
+  p.law = *ParseLawName("hunt-crossley");  // e = 0 is fine for Hunt-Crossley
   EXPECT_FALSE(error(p).has_value());
   p.restitution = 1.5;
   EXPECT_EQ(error(p)->requirement, "must be in [0, 1]");
@@ -179,7 +179,7 @@ TEST(LawTest, ValidationNamesKeyValueAndRange) {
   EXPECT_EQ(error(p)->key, "min_impact_velocity");
 
   LawParams kv;
-  kv.kind = *ParseLawName("kelvin-voigt");
+  kv.law = *ParseLawName("kelvin-voigt");
   kv.restitution = 0.5;
   EXPECT_EQ(error(kv)->key, "linear_stiffness");
   kv.linear_stiffness = 1e6;
@@ -198,11 +198,11 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   // F = K d^n (1 + a d' / v0): c = a K d^n / v0 = a W / v0 at rest under W
   constexpr double kRelativeTolerance = 1e-9;  // the finite difference of a law linear in d'
   LawParams p;
-  p.kind = *ParseLawName("hunt-crossley");
+  p.law = *ParseLawName("hunt-crossley");
   p.restitution = 0.5;
   p.stiffness = 1e7;
   ResolveLawParams(&p);
-  const double a = HysteresisCoefficient(p.kind, p.restitution);  // 0.75
+  const double a = HysteresisCoefficient(p.law, p.restitution);  // 0.75
   const double m = 2, load = 19.62;
   const double expected = m * p.min_impact_velocity / (a * load);
   EXPECT_NEAR(RestingDamperLag(p, load, m), expected, kRelativeTolerance * expected);
@@ -212,10 +212,10 @@ TEST(LawTest, TheRestingDamperLagIsMassTimesV0OverTheHysteresisTimesTheLoad) {
   p.min_impact_velocity = 1e-2;
   EXPECT_NEAR(RestingDamperLag(p, load, m), 10 * expected, 10 * kRelativeTolerance * expected);
   // elastic, or no load: no damper
-  p.kind = *ParseLawName("hertz");
+  p.law = *ParseLawName("hertz");
   ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, load, m)));
-  p.kind = *ParseLawName("hunt-crossley");
+  p.law = *ParseLawName("hunt-crossley");
   ResolveLawParams(&p);
   EXPECT_TRUE(std::isinf(RestingDamperLag(p, 0, m)));
 }

@@ -53,12 +53,12 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
   PointEvaluation touch = Point(0, 0, 1e-3, 1.0, 10.0);
   touch.touch_velocity = 3.0;
   log.Commit(1.0, {touch});
-  ASSERT_EQ(log.impacts().size(), 1u);
+  ASSERT_EQ(log.episodes().size(), 1u);
   EXPECT_EQ(log.OpenEpisodes(0), std::vector<int>{0});
   EXPECT_TRUE(log.OpenEpisodes(1).empty());
-  EXPECT_EQ(log.impacts()[0].impact_velocity, 3.0);
-  EXPECT_NEAR(log.impacts()[0].time_contact, 1.0 - 0.5e-3, kRoundoff);
-  EXPECT_EQ(log.impacts()[0].index, 1);
+  EXPECT_EQ(log.episodes()[0].impact_velocity, 3.0);
+  EXPECT_NEAR(log.episodes()[0].time_contact, 1.0 - 0.5e-3, kRoundoff);
+  EXPECT_EQ(log.episodes()[0].index, 1);
 
   // deeper, then shallower: the maxima stay
   log.Commit(2.0, {Point(0, 0, 4e-3, 0.5, 40.0, 0)});
@@ -67,12 +67,12 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
     ADD_FAILURE() << "nothing vanished";
     return 0;
   });
-  EXPECT_TRUE(log.impacts()[0].open);
-  EXPECT_EQ(log.impacts()[0].max_depth, 4e-3);
+  EXPECT_TRUE(log.episodes()[0].open);
+  EXPECT_EQ(log.episodes()[0].max_depth, 4e-3);
   // the force peaks between the samples 10, 40, 20 N at t = 1, 2, 3: the
   // parabola through them, 10 + 30 (t - 1) - 25 (t - 1)(t - 2), has its
   // vertex at t = 2.1, 40.25 N (PeakForce)
-  EXPECT_NEAR(log.impacts()[0].max_force, 40.25, 40 * kRoundoff);
+  EXPECT_NEAR(log.episodes()[0].max_force, 40.25, 40 * kRoundoff);
 
   // gone at the next commit: closed with the speed the caller gives, at the
   // point and normal last seen; separation extrapolated at the mean of the
@@ -88,7 +88,7 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
     return 2.0;
   });
   EXPECT_EQ(calls, 1);
-  const Impact& impact = log.impacts()[0];
+  const Episode& impact = log.episodes()[0];
   EXPECT_FALSE(impact.open);
   EXPECT_EQ(impact.separation_velocity, 2.0);
   EXPECT_NEAR(impact.time_separation, 3.0 + 1e-3, kRoundoff);
@@ -100,26 +100,26 @@ TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
 TEST(EpisodeLogTest, EpisodesAreCountedPerTagAndClosedOneByOne) {
   EpisodeLog log(/*points_per_pair=*/{1, 1, 1}, /*tags=*/2);
   log.Commit(0.0, {Point(0, 0, 1e-3, 1, 1), Point(1, 1, 1e-3, 1, 1), Point(2, 1, 1e-3, 1, 1)});
-  EXPECT_EQ(log.impacts()[0].index, 1);
-  EXPECT_EQ(log.impacts()[1].index, 1);
-  EXPECT_EQ(log.impacts()[2].index, 2);
+  EXPECT_EQ(log.episodes()[0].index, 1);
+  EXPECT_EQ(log.episodes()[1].index, 1);
+  EXPECT_EQ(log.episodes()[2].index, 2);
   // pair 1 leaves; 0 and 2 stay
   log.Commit(1.0, {Point(0, 0, 1e-3, 0, 1, 0), Point(2, 1, 1e-3, 0, 1, 2)});
   log.CloseVanished([](int, const double*, const double*, double) { return 1.0; });
-  EXPECT_TRUE(log.impacts()[0].open);
-  EXPECT_FALSE(log.impacts()[1].open);
-  EXPECT_TRUE(log.impacts()[2].open);
+  EXPECT_TRUE(log.episodes()[0].open);
+  EXPECT_FALSE(log.episodes()[1].open);
+  EXPECT_TRUE(log.episodes()[2].open);
   // pair 1 touches again: a new episode, the tag's third
   log.Commit(2.0, {Point(0, 0, 1e-3, 0, 1, 0), Point(1, 1, 1e-3, 1, 1), Point(2, 1, 1e-3, 0, 1, 2)});
-  ASSERT_EQ(log.impacts().size(), 4u);
-  EXPECT_EQ(log.impacts()[3].index, 3);
+  ASSERT_EQ(log.episodes().size(), 4u);
+  EXPECT_EQ(log.episodes()[3].index, 3);
   EXPECT_EQ(log.OpenEpisodes(1), std::vector<int>{3});
 
   log.Reset();
-  EXPECT_TRUE(log.impacts().empty());
+  EXPECT_TRUE(log.episodes().empty());
   EXPECT_TRUE(log.OpenEpisodes(0).empty());
   log.Commit(3.0, {Point(1, 1, 1e-3, 1, 1)});
-  EXPECT_EQ(log.impacts()[0].index, 1);
+  EXPECT_EQ(log.episodes()[0].index, 1);
 }
 
 // A point at (x, 0, 0) on body 0 and (x + shift, 0, 0) on body 1.
@@ -179,13 +179,13 @@ TEST(EpisodeLogTest, APairOfOnePointKeepsItsEpisodeWhereverThePointMoves) {
   EXPECT_EQ(none.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);
 }
 
-TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
+TEST(ImpactLogTest, AnImpactRunsFromTheFirstTouchToTheLastPointLeaving) {
   EpisodeLog episodes(/*points_per_pair=*/{4}, /*tags=*/1);
-  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  ImpactLog impacts(/*pairs=*/1, /*tags=*/1);
   auto commit = [&](double t, const std::vector<PointEvaluation>& points, double leaving) {
     episodes.Commit(t, points);
     episodes.CloseVanished([&](int, const double*, const double*, double) { return leaving; });
-    collisions.Commit(t, points, episodes);
+    impacts.Commit(t, points, episodes);
   };
   // a tilted box: one corner touches at 2 m/s, then a second at 1 m/s
   PointEvaluation a = At(-0.1, 0);
@@ -193,9 +193,9 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   a.depth_rate = 2.0;
   a.force = 5.0;
   commit(1.0, {a}, 0);
-  ASSERT_EQ(collisions.impacts().size(), 1u);
-  EXPECT_EQ(collisions.impacts()[0].impact_velocity, 2.0);
-  EXPECT_NEAR(collisions.impacts()[0].time_contact, 1.0 - 1e-3 / 2.0, kRoundoff);
+  ASSERT_EQ(impacts.impacts().size(), 1u);
+  EXPECT_EQ(impacts.impacts()[0].impact_velocity, 2.0);
+  EXPECT_NEAR(impacts.impacts()[0].time_contact, 1.0 - 1e-3 / 2.0, kRoundoff);
   a.episode = 0;
   a.touch = false;
   PointEvaluation b = At(0.1, 0);
@@ -207,10 +207,10 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   b.episode = 1;
   b.touch = false;
   commit(3.0, {b}, 0.5);
-  EXPECT_TRUE(collisions.impacts()[0].open);
+  EXPECT_TRUE(impacts.impacts()[0].open);
   commit(4.0, {}, 0.8);
-  ASSERT_EQ(collisions.impacts().size(), 1u);
-  const Impact& c = collisions.impacts()[0];
+  ASSERT_EQ(impacts.impacts().size(), 1u);
+  const Episode& c = impacts.impacts()[0];
   EXPECT_FALSE(c.open);
   EXPECT_EQ(c.points, 2);
   // both corners at once, 12 N at t = 2 between 5 and 7 N: the vertex of
@@ -219,11 +219,11 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
   EXPECT_EQ(c.max_depth, 3e-3);
   EXPECT_EQ(c.impact_velocity, 2.0);      // the first touch
   EXPECT_EQ(c.separation_velocity, 0.8);  // the last to leave
-  EXPECT_EQ(c.time_separation, episodes.impacts()[1].time_separation);
+  EXPECT_EQ(c.time_separation, episodes.episodes()[1].time_separation);
   EXPECT_EQ(c.index, 1);
-  // the next touch of the pair is its second collision
+  // the next touch of the pair is its second impact
   commit(5.0, {At(0, 0)}, 0);
-  EXPECT_EQ(collisions.impacts().at(1).index, 2);
+  EXPECT_EQ(impacts.impacts().at(1).index, 2);
 }
 
 // Chained: compressed faster than the law's v0 at the touch. A contact that
@@ -233,29 +233,29 @@ TEST(CollisionLogTest, ACollisionRunsFromTheFirstTouchToTheLastPointLeaving) {
 // the last commit, where the point was not in contact.
 TEST(EpisodeLogTest, ATouchIsNoEarlierThanTheLastCommit) {
   EpisodeLog episodes(/*points_per_pair=*/{1}, /*tags=*/1);
-  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  ImpactLog impacts(/*pairs=*/1, /*tags=*/1);
   episodes.Commit(0.1, {});
-  collisions.Commit(0.1, {}, episodes);
+  impacts.Commit(0.1, {}, episodes);
   PointEvaluation slow = Point(0, 0, 1e-5, 0.08, 1.0);  // compressed at 0.08 m/s now
   slow.touch_velocity = 1e-21;  // touched at no rate at all
   episodes.Commit(0.1001, {slow});
-  collisions.Commit(0.1001, {slow}, episodes);
-  EXPECT_DOUBLE_EQ(episodes.impacts()[0].time_contact, 0.1);  // unbounded: 0.1001 - 2.5e-4
-  EXPECT_DOUBLE_EQ(collisions.impacts()[0].time_contact, 0.1);
+  impacts.Commit(0.1001, {slow}, episodes);
+  EXPECT_DOUBLE_EQ(episodes.episodes()[0].time_contact, 0.1);  // unbounded: 0.1001 - 2.5e-4
+  EXPECT_DOUBLE_EQ(impacts.impacts()[0].time_contact, 0.1);
   // a rate that places it within the step is kept
   EXPECT_DOUBLE_EQ(TouchTime(Point(0, 0, 1e-6, 0.02, 1.0), 0.2, 0.1), 0.2 - 1e-6 / 0.01);
 }
 
 // A tumbling body lands a second corner faster than the first touched, in
-// the same collision: no chain (a pair's collision was flagged for every
+// the same impact: no chain (a pair's impact was flagged for every
 // tetrahedron, box and capsule dropped tumbling). A corner pushed after its
 // own touch is one, whatever the others did.
-TEST(CollisionLogTest, ASecondCornerLandingFasterIsNoChainAPushedOneIs) {
+TEST(ImpactLogTest, ASecondCornerLandingFasterIsNoChainAPushedOneIs) {
   EpisodeLog episodes(/*points_per_pair=*/{4}, /*tags=*/1);
-  CollisionLog collisions(/*pairs=*/1, /*tags=*/1);
+  ImpactLog impacts(/*pairs=*/1, /*tags=*/1);
   auto commit = [&](double t, const std::vector<PointEvaluation>& points) {
     episodes.Commit(t, points);
-    collisions.Commit(t, points, episodes);
+    impacts.Commit(t, points, episodes);
   };
   auto corner = [](double x, int episode, double touch, double max_approach) {
     PointEvaluation e = At(x, 0, episode);
@@ -266,17 +266,17 @@ TEST(CollisionLogTest, ASecondCornerLandingFasterIsNoChainAPushedOneIs) {
   };
   commit(1.0, {corner(-0.1, -1, 0.1, 0.1)});
   commit(2.0, {corner(-0.1, 0, 0.1, 0.1), corner(0.1, -1, 0.3, 0.3)});
-  ASSERT_EQ(collisions.impacts().size(), 1u);
-  const Impact& c = collisions.impacts()[0];
+  ASSERT_EQ(impacts.impacts().size(), 1u);
+  const Episode& c = impacts.impacts()[0];
   EXPECT_EQ(c.impact_velocity, 0.1);         // the first touch
   EXPECT_EQ(c.max_approach_velocity, 0.3);   // the second corner's
   EXPECT_FALSE(c.chained());
-  EXPECT_FALSE(episodes.impacts()[0].chained());
-  EXPECT_FALSE(episodes.impacts()[1].chained());
+  EXPECT_FALSE(episodes.episodes()[0].chained());
+  EXPECT_FALSE(episodes.episodes()[1].chained());
   // the first corner compressed at 0.5 m/s, 5 x its touch: a push
   commit(3.0, {corner(-0.1, 0, 0.1, 0.5), corner(0.1, 1, 0.3, 0.3)});
-  EXPECT_TRUE(episodes.impacts()[0].chained());
-  EXPECT_TRUE(collisions.impacts()[0].chained());
+  EXPECT_TRUE(episodes.episodes()[0].chained());
+  EXPECT_TRUE(impacts.impacts()[0].chained());
 }
 
 // A contact there at the start (bodies placed touching) sinks into its
@@ -295,13 +295,13 @@ TEST(EpisodeLogTest, AContactThereAtTheStartSettlesAPulseThroughItIsAChain) {
   commit(0.0, 0.0);
   double t = 0;
   for (const double rate : {0.05, 0.12, 0.04, -0.02, 0.03}) commit(++t, rate);
-  const Impact& placed = log.impacts()[0];
+  const Episode& placed = log.episodes()[0];
   EXPECT_EQ(placed.settling_velocity, 0.12);  // its first compression's peak
   EXPECT_FALSE(placed.chained());
   commit(10.0, 0.23);  // below 2 x 0.12
-  EXPECT_FALSE(log.impacts()[0].chained());
+  EXPECT_FALSE(log.episodes()[0].chained());
   commit(11.0, 0.5);  // a pulse
-  EXPECT_TRUE(log.impacts()[0].chained());
+  EXPECT_TRUE(log.episodes()[0].chained());
   // touched during the run at the same rates: a chain from its first push
   EpisodeLog later(/*points_per_pair=*/{1}, /*tags=*/1);
   PointEvaluation touch = Point(0, 0, 1e-6, 0.0, 1);
@@ -310,21 +310,21 @@ TEST(EpisodeLogTest, AContactThereAtTheStartSettlesAPulseThroughItIsAChain) {
   PointEvaluation pushed = Point(0, 0, 1e-6, 0.12, 1, 0);
   pushed.max_approach = 0.12;
   later.Commit(2.0, {pushed});
-  EXPECT_TRUE(later.impacts()[0].chained());
+  EXPECT_TRUE(later.episodes()[0].chained());
 }
 
 TEST(ImpactTest, ChainedMeansCompressedFasterThanTheTouchsV0) {
-  Impact settling;
+  Episode settling;
   settling.impact_velocity = 0;
   settling.touch_v0 = 1e-3;  // the floor
   settling.max_approach_velocity = 4e-4;
   EXPECT_FALSE(settling.chained());
-  Impact pulsed = settling;
+  Episode pulsed = settling;
   pulsed.max_approach_velocity = 0.5;  // a pulse came through
   EXPECT_TRUE(pulsed.chained());
   pulsed.separation_velocity = 0.4;
   EXPECT_DOUBLE_EQ(pulsed.restitution_post(), 0.8);  // against the pulse's rate
-  Impact impact;  // an impact's rate only falls after its touch
+  Episode impact;  // an impact's rate only falls after its touch
   impact.impact_velocity = impact.touch_v0 = impact.max_approach_velocity = 2.0;
   EXPECT_FALSE(impact.chained());
   // gravity raised the paper's ball's rate after its touch: no chain

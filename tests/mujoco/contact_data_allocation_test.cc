@@ -112,13 +112,13 @@ TEST_F(HooksTest, SteppingASlidingThenStickingContactAllocatesNothing) {
   ContactData contacts(cm, d);
   for (int i = 0; i < 200; ++i) contacts.Step();  // the corners' episodes open
   ASSERT_FALSE(contacts.latest().empty());
-  const size_t episodes = contacts.point_impacts().size();
+  const size_t episodes = contacts.point_episodes().size();
   count_allocations = true;
   allocations = 0;
   for (int i = 0; i < 3000; ++i) contacts.Step();  // slides (about 0.05 s) and sticks
   count_allocations = false;
   EXPECT_LT(std::abs(d->qvel[0]), 1e-3) << "the block must have stopped";
-  ASSERT_EQ(contacts.point_impacts().size(), episodes) << "no new episode in the window";
+  ASSERT_EQ(contacts.point_episodes().size(), episodes) << "no new episode in the window";
   EXPECT_EQ(allocations, 0);
 }
 

@@ -201,11 +201,11 @@ TEST_F(HooksTest, ModelsShareNothing) {
 
 TEST_F(HooksTest, ResetForgetsTheEpisodes) {
   Simulation& sim = MakeSimulation(testing::DropXml("law=flores restitution=0.5 stiffness=1.4e8", 3.0));
-  const Impact first = testing::FirstImpact(sim);
+  const Episode first = testing::FirstImpact(sim);
   sim.Reset();
   EXPECT_TRUE(sim.contacts().impacts().empty());
   EXPECT_EQ(sim.time(), 0.0);
-  const Impact again = testing::FirstImpact(sim);
+  const Episode again = testing::FirstImpact(sim);
   EXPECT_EQ(again.index, 1);
   EXPECT_EQ(again.restitution_post(), first.restitution_post());
 }
@@ -299,7 +299,7 @@ TEST_F(HooksTest, MjResetDataAloneClearsThePerContactMemory) {
   ContactModel cm(m.get(), "drop");
   mjData* d = MakeData(m.get());
   ContactData contacts(cm, d);
-  std::vector<Impact> runs[2];
+  std::vector<Episode> runs[2];
   double dissipated[2];
   for (int k = 0; k < 2; ++k) {
     mj_resetDataKeyframe(m.get(), d, 0);

@@ -92,13 +92,13 @@ std::vector<Touch> StepAndWatch(ContactData* contacts, mjData* d, PointsAt point
 // Each touch has an impact of its own: opened within the touch's step (its
 // extrapolated time_contact up to a step earlier), at the touch's speed.
 void ExpectOneImpactPerTouch(const std::vector<Touch>& touches,
-                             const std::vector<Impact>& impacts, const std::string& what) {
+                             const std::vector<Episode>& impacts, const std::string& what) {
   EXPECT_EQ(impacts.size(), touches.size()) << what;
   std::vector<bool> used(impacts.size(), false);
   for (const Touch& touch : touches) {
     size_t k = 0;
     for (; k < impacts.size(); ++k) {
-      const Impact& e = impacts[k];
+      const Episode& e = impacts[k];
       if (!used[k] && e.time_contact >= touch.after - kTimestep &&
           e.time_contact <= touch.before &&
           std::abs(e.impact_velocity - touch.speed) < touch.tolerance) {
@@ -110,7 +110,7 @@ void ExpectOneImpactPerTouch(const std::vector<Touch>& touches,
                                  << " m/s";
     used[k] = true;
   }
-  for (const Impact& e : impacts) {
+  for (const Episode& e : impacts) {
     if (!e.open) {
       EXPECT_LT(e.time_contact, e.time_separation) << what;
     }
@@ -157,12 +157,12 @@ TEST_F(ContactIdentityTest, EveryCornerOfATiltedBoxIsItsOwnPoint) {
     };
     const std::vector<Touch> touches = StepAndWatch(&contacts, d, corners, 1.5);
     ASSERT_GE(touches.size(), 4u) << qvel << ": the box must land and rock";
-    ExpectOneImpactPerTouch(touches, contacts.point_impacts(), qvel);
+    ExpectOneImpactPerTouch(touches, contacts.point_episodes(), qvel);
   }
 }
 
 // A cylinder lands tilted and rocks on its rim, its contact point running
-// along the rim: each collision of the pair opens at the approach rate of
+// along the rim: each impact of the pair opens at the approach rate of
 // the cylinder's lowest point, and every point episode lies inside one.
 // (What the point's identity itself must keep, the box's corners test.)
 TEST_F(ContactIdentityTest, ACylinderRockingOnItsRimCollidesAtItsLowestPointsRate) {
@@ -198,18 +198,18 @@ TEST_F(ContactIdentityTest, ACylinderRockingOnItsRimCollidesAtItsLowestPointsRat
   };
   const std::vector<Touch> touches = StepAndWatch(&contacts, d, lowest, 1.0);
   ASSERT_GE(touches.size(), 2u) << "the can must land and bounce";
-  ExpectOneImpactPerTouch(touches, contacts.impacts(), "collisions");
-  // the points of the can: each inside a collision of the pair
-  for (const Impact& e : contacts.point_impacts()) {
+  ExpectOneImpactPerTouch(touches, contacts.impacts(), "impacts");
+  // the points of the can: each inside an impact of the pair
+  for (const Episode& e : contacts.point_episodes()) {
     const bool inside = std::any_of(
-        contacts.impacts().begin(), contacts.impacts().end(), [&](const Impact& c) {
+        contacts.impacts().begin(), contacts.impacts().end(), [&](const Episode& c) {
           return e.time_contact >= c.time_contact - kTimestep &&
                  (c.open || e.time_contact <= c.time_separation + kTimestep);
         });
-    EXPECT_TRUE(inside) << "a point episode at t = " << e.time_contact << " outside every collision";
+    EXPECT_TRUE(inside) << "a point episode at t = " << e.time_contact << " outside every impact";
   }
-  std::printf("can: %zu collisions, %zu point episodes\n", contacts.impacts().size(),
-              contacts.point_impacts().size());
+  std::printf("can: %zu impacts, %zu point episodes\n", contacts.impacts().size(),
+              contacts.point_episodes().size());
 }
 
 }  // namespace

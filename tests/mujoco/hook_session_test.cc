@@ -17,6 +17,10 @@
 namespace contactlaws {
 namespace {
 
+using internal::ProposedPairs;
+using internal::StepCapture;
+using internal::StepStartVelocities;
+
 class HookSessionTest : public testing::MujocoTest {};
 
 // Four balls under one group tag over a floor (10 tagged pairs), and, when

@@ -45,7 +45,7 @@ class Barrier {
 struct RunResult {
   double time = 0;
   std::vector<mjtNum> qpos, qvel, qacc, qfrc_passive;
-  std::vector<Impact> impacts;
+  std::vector<Episode> impacts;
   double elastic = 0;
   double dissipated = 0;
 };
@@ -71,7 +71,7 @@ inline RunResult RunScene(const ContactModel& laws, mjData* d, int steps, Barrie
   return r;
 }
 
-// Bit for bit: memcmp of the arrays, and each double of each Impact as bits
+// Bit for bit: memcmp of the arrays, and each double of each Episode as bits
 // (so -0.0 against 0.0 and NaN against NaN count as they are stored).
 inline bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
@@ -95,8 +95,8 @@ inline ::testing::AssertionResult Same(const RunResult& a, const RunResult& b) {
            << "impact count differs: " << a.impacts.size() << " vs " << b.impacts.size();
   }
   for (size_t i = 0; i < a.impacts.size(); ++i) {
-    const Impact& x = a.impacts[i];
-    const Impact& y = b.impacts[i];
+    const Episode& x = a.impacts[i];
+    const Episode& y = b.impacts[i];
     const std::string at = "impact " + std::to_string(i) + ": ";
     if (x.tag != y.tag) return fail(at + "tag");
     if (x.pair != y.pair) return fail(at + "pair");

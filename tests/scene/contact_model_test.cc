@@ -146,8 +146,11 @@ TEST_F(SceneTest, FrictionComesFromTheGeomsAsMujocoCombinesThem) {
   EXPECT_EQ(p.mu_kinetic, 0.7);
   EXPECT_EQ(p.torsional, 0.01);
   EXPECT_EQ(p.rolling, 0);
+  EXPECT_EQ(p.stiffness_rule, TangentialStiffnessRule::kNormalRatio);
   EXPECT_EQ(p.tangential_ratio, kMindlinRatio);
-  EXPECT_FALSE(p.normal_damping_ratio);
+  // critical, resolved with the pair
+  EXPECT_EQ(p.damping_rule, TangentialDampingRule::kRatio);
+  EXPECT_EQ(p.tangential_damping_ratio, 1.0);
   // condim 1: frictionless, and the tag's friction key is warned about
   EXPECT_EQ(cm.pairs()[1].friction.kind, FrictionKind::kNone);
   ASSERT_EQ(cm.warnings().size(), 1u);
@@ -173,6 +176,7 @@ TEST_F(SceneTest, MaterialsGiveMindlinsSpringAndTheNormalDampingRatio) {
     <geom name="floor" type="plane" size="1 1 0.1"/>
     <geom name="ice" type="plane" size="1 1 0.1" pos="0 0 -1" condim="1"/>
     <geom name="wall" type="plane" size="1 1 0.1" pos="0 0 -2"/>
+    <geom name="slab" type="plane" size="1 1 0.1" pos="0 0 -3"/>
     <body name="ball" pos="0 0 0.2"><freejoint/><geom name="ball" type="sphere" size="0.1"/></body>
     <body name="puck" pos="1 0 0.2"><freejoint/>
       <geom name="puck" type="sphere" size="0.1" condim="1"/></body>
@@ -185,19 +189,28 @@ TEST_F(SceneTest, MaterialsGiveMindlinsSpringAndTheNormalDampingRatio) {
     <text name="contactlaw:r" data="geom1=ball geom2=wall law=exact restitution=0.9
       youngs1=380e9 poisson1=0.23 youngs2=70e9 poisson2=0.25 tangential_ratio=0.7
       tangential_damping_ratio=1"/>
+    <text name="contactlaw:s" data="geom1=ball geom2=slab law=exact restitution=0.9
+      youngs1=380e9 poisson1=0.23 youngs2=70e9 poisson2=0.25 tangential_stiffness=5e5
+      tangential_damping=3"/>
   </custom>
 </mujoco>)", "mindlin.xml");
   const ContactModel cm(m.get(), "mindlin.xml");
   const FrictionParams& p = cm.pairs()[0].friction;
+  EXPECT_EQ(p.stiffness_rule, TangentialStiffnessRule::kNormalRatio);
   EXPECT_EQ(p.tangential_ratio, MindlinRatio(380e9, 0.23, 70e9, 0.25));
-  EXPECT_TRUE(p.normal_damping_ratio);
-  EXPECT_FALSE(p.tangential_damping_ratio);
+  EXPECT_EQ(p.damping_rule, TangentialDampingRule::kNormalLaw);
   ASSERT_EQ(cm.warnings().size(), 1u);
   EXPECT_EQ(cm.warnings()[0], "mindlin.xml: contactlaw:q: (puck, ice): tangential_damping_ratio "
                               "is not read: the pair is frictionless (condim 1, as in MuJoCo)");
   const FrictionParams& r = cm.pairs()[2].friction;
   EXPECT_EQ(r.tangential_ratio, 0.7);
+  EXPECT_EQ(r.damping_rule, TangentialDampingRule::kRatio);
   EXPECT_EQ(r.tangential_damping_ratio, 1.0);
+  const FrictionParams& s = cm.pairs()[3].friction;
+  EXPECT_EQ(s.stiffness_rule, TangentialStiffnessRule::kGiven);
+  EXPECT_EQ(s.tangential_stiffness, 5e5);
+  EXPECT_EQ(s.damping_rule, TangentialDampingRule::kGiven);
+  EXPECT_EQ(s.tangential_damping, 3);
 }
 
 // The tag's torque caps replace the geoms' where condim has them, and are
@@ -235,7 +248,7 @@ TEST_F(SceneTest, OverridesApplyBeforeValidation) {
   options.overrides.restitution = 0.4;
   Simulation& sim = LoadScene("bouncing_ball.xml", options);
   const LawParams& p = sim.contact_model().pairs().at(0).params;
-  EXPECT_EQ(p.kind, *ParseLawName("kelvin-voigt"));
+  EXPECT_EQ(p.law, *ParseLawName("kelvin-voigt"));
   EXPECT_EQ(p.linear_stiffness, 5e6);
   EXPECT_EQ(p.restitution, 0.4);
 

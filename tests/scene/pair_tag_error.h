@@ -17,7 +17,7 @@ namespace contactlaws {
 // it accepts data.
 inline std::string PairTagError(const std::string& data) {
   try {
-    ParsePairTag("s.xml", "contactlaw:t", data);
+    internal::ParsePairTag("s.xml", "contactlaw:t", data);
   } catch (const Error& e) {
     return e.what();
   }

@@ -22,6 +22,9 @@
 namespace contactlaws {
 namespace {
 
+using internal::PairTagSpec;
+using internal::ParsePairTag;
+
 // A tag that reads key at value: a law that reads it, and what the key
 // needs beside it (the other materials, else a stiffness).
 std::string TagWith(const TagKey& key, const std::string& value) {

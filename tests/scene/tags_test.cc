@@ -15,6 +15,9 @@
 namespace contactlaws {
 namespace {
 
+using internal::PairTagSpec;
+using internal::ParsePairTag;
+
 TEST(TagsTest, APairTagIsReadWhole) {
   const PairTagSpec spec = ParsePairTag(
       "s.xml", "contactlaw:ball-floor",

@@ -54,14 +54,14 @@ TEST(SweepTest, EveryLawMatchesTheExactRebound) {
     double worst = 0;
     for (double e : kPaperSweep) {
       SimulationOptions options;
-      options.overrides.law = law.kind;
+      options.overrides.law = law.id;
       options.overrides.restitution = e;
       options.overrides.dissipation = ExactCoefficient(e) / kSpeed;
-      const Impact impact = SweepFirstImpact(scene, options);
+      const Episode impact = SweepFirstImpact(scene, options);
       const double exact =
-          ReadsDissipation(law.kind)
+          ReadsDissipation(law.id)
               ? ExactRebound(*options.overrides.dissipation * impact.impact_velocity)
-              : ExactRebound(HysteresisCoefficient(law.kind, e));
+              : ExactRebound(HysteresisCoefficient(law.id, e));
       const double error = std::abs(impact.restitution_post() - exact);
       worst = std::max(worst, error);
       EXPECT_LT(error, kReboundTolerance) << law.name << " e = " << e;
@@ -121,7 +121,7 @@ TEST(ReferenceTest, SweepAgreesWithTheIndependentIntegration) {
   std::map<LawId, double> worst;  // largest e_post error per law, printed
   for (LawId law : testing::kPaperLaws) {
     for (double e : kPaperSweep) {
-      const Impact sim = SweepFirstImpact(scene, law, e, 1e-5);
+      const Episode sim = SweepFirstImpact(scene, law, e, 1e-5);
       const Reference ref = IntegrateDrop(drop, law, e);
       const std::string what = fmt::format("{} e = {}", LawName(law), e);
       const double error = std::abs(sim.restitution_post() - ref.restitution_post);

@@ -44,7 +44,7 @@ Errors SweepErrors(const Scene& scene, double accuracy) {
     for (double e : testing::kPaperSweep) {
       const Reference r = IntegrateDrop(drop, law, e);
       long steps = 0;
-      const Impact i = SweepFirstImpact(scene, law, e, std::nullopt, options, &steps);
+      const Episode i = SweepFirstImpact(scene, law, e, std::nullopt, options, &steps);
       const std::string what = fmt::format("{} e = {} accuracy {}", LawName(law), e, accuracy);
       const double rebound = Relative(i.restitution_post(), r.restitution_post);
       const double force = Relative(i.max_force, r.max_force);

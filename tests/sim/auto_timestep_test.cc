@@ -49,9 +49,9 @@ TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSt
     for (double e : {0.1, 0.5, 0.9}) {
       const std::string what = fmt::format("{} e = {}", LawName(law), e);
       long steps = 0;
-      const Impact fixed = SweepFirstImpact(scene, law, e, 1e-5, std::nullopt, &steps);
+      const Episode fixed = SweepFirstImpact(scene, law, e, 1e-5, std::nullopt, &steps);
       fixed_steps += steps;
-      const Impact automatic =
+      const Episode automatic =
           SweepFirstImpact(scene, law, e, std::nullopt, AutoTimestepOptions{}, &steps);
       auto_steps += steps;
       const double tolerance = law == *ParseLawName("kelvin-voigt") ? kKelvinVoigtRebound : kRebound;
@@ -159,8 +159,8 @@ TEST(AutoTimestepTest, SpinCostsNoAccuracy) {
   xml.replace(xml.find("restitution=0.9"), 15, "restitution=0.5 friction=none");
   const Scene spinning("spin.xml", LoadModelString(xml, "spin.xml"));
   for (const LawId law : {*ParseLawName("flores"), *ParseLawName("hunt-crossley")}) {
-    const Impact fixed = SweepFirstImpact(spinning, law, 0.5, 1e-5);
-    const Impact automatic = SweepFirstImpact(spinning, law, 0.5, std::nullopt,
+    const Episode fixed = SweepFirstImpact(spinning, law, 0.5, 1e-5);
+    const Episode automatic = SweepFirstImpact(spinning, law, 0.5, std::nullopt,
                                               AutoTimestepOptions{});
     EXPECT_NEAR(automatic.restitution_post(), fixed.restitution_post(), kSpinTolerance)
         << LawName(law);
@@ -263,7 +263,7 @@ TEST(AutoTimestepTest, AContactSettlingAtTheV0FloorIsSteppedWithinItsDampersLag)
 // contact duration at the floor speed, not the accuracy's 50, and rests
 // on its weight all the same (a weakly damped law: hunt-crossley e = 0.9;
 // an elastic one: hertz).
-TEST(AutoTimestepTest, ASettledContactIsSteppedForStabilityNotForACollision) {
+TEST(AutoTimestepTest, ASettledContactIsSteppedForStabilityNotForAnImpact) {
   constexpr double kWeight = 9.81;         // N
   constexpr double kRestTolerance = 1e-6;  // relative: at rest, the force is the weight
   for (const char* law : {"law=hunt-crossley restitution=0.9", "law=hertz"}) {
@@ -275,7 +275,7 @@ TEST(AutoTimestepTest, ASettledContactIsSteppedForStabilityNotForACollision) {
     std::printf("settled %s: %ld steps in 0.5 s\n", law, steps);
   }
   // dropped from 2 mm (a touch at 0.2 m/s): flores e = 0.05 keeps it on the
-  // floor, and after kSettledDurations of its collision it is settled
+  // floor, and after kSettledDurations of its impact it is settled
   // (measured 969 steps; 3513 while it waited for a touch near the floor)
   long steps = 0;
   EXPECT_NEAR(RestingForce(std::nullopt, &steps, "law=flores restitution=0.05", 2e-3), kWeight,

@@ -96,7 +96,7 @@ inline ImpactCase Test4Impact(const Material& m, double degrees) {
 // The normal law of the tag below: law=exact, its e, Hertz's K of the materials.
 inline LawParams NormalLaw(const ImpactCase& c) {
   LawParams law;
-  law.kind = *ParseLawName("exact");
+  law.law = *ParseLawName("exact");
   law.restitution = c.e;
   law.stiffness = HertzSphereStiffness(c.ra, kRadius,
                                        MaterialCompliance(YoungsA(c), c.material.poisson),

@@ -3,7 +3,7 @@
 // Touching chains: Newton's cradles of 3 and 5 balls, touching at rest, the
 // first one sent into the others. The contacts between touching balls open
 // at almost no approach speed and are then compressed by the pulse: their
-// laws must not turn plastic (Impact::max_approach_velocity). Gravity is off
+// laws must not turn plastic (Episode::max_approach_velocity). Gravity is off
 // and the balls slide on x alone, as in the closed forms.
 
 #include <cmath>
@@ -79,7 +79,7 @@ TEST_F(CradleTest, HertzKeepsMomentumAndEnergy) {
   }
 }
 
-// Hunt-Crossley at e = 0.9: each contact, taken as a collision of two equal
+// Hunt-Crossley at e = 0.9: each contact, taken as an impact of two equal
 // balls, loses (1 - e_post^2) / 2 of the energy it receives, e_post its exact
 // rebound; the pulse crosses balls - 1 contacts: no more may be lost. With
 // d'/v0 in the hundreds (v0 the touch speed of touching balls) it would lose
@@ -101,7 +101,7 @@ TEST_F(CradleTest, ADissipativeLawKeepsMomentumAndLosesNoMoreThanItsRestitutionA
     // the contacts between touching balls are chained (flagged): pushed on
     // from both sides, one may leave faster than it closed, as no impact can
     int chained = 0;
-    for (const Impact& c : sim.contacts().impacts()) {
+    for (const Episode& c : sim.contacts().impacts()) {
       if (c.open) continue;
       chained += c.chained();
       if (!c.chained()) {

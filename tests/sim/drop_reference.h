@@ -32,7 +32,7 @@ inline const std::vector<LawId> kPaperLaws = {*ParseLawName("hertz"), *ParseLawN
 
 // The sweep as `contactlaws restitution` runs it: a scene with options (the
 // overrides of one run), to the end of its first contact episode.
-inline Impact SweepFirstImpact(const Scene& scene, const SimulationOptions& options,
+inline Episode SweepFirstImpact(const Scene& scene, const SimulationOptions& options,
                                std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
                                long* steps = nullptr) {
   std::unique_ptr<Simulation> sim = scene.Make(options);
@@ -42,16 +42,16 @@ inline Impact SweepFirstImpact(const Scene& scene, const SimulationOptions& opti
   advance.auto_timestep = auto_timestep;
   const AdvanceResult result = Advance(sim.get(), advance, nullptr);
   if (steps) *steps = auto_timestep ? result.steps : std::lround(sim->time() / *options.timestep);
-  const std::vector<Impact>& impacts = sim->contacts().impacts();
+  const std::vector<Episode>& impacts = sim->contacts().impacts();
   if (impacts.empty() || impacts.front().open) {
     ADD_FAILURE() << LawName(*options.overrides.law) << ": no closed first episode";
-    return Impact{};
+    return Episode{};
   }
   return impacts.front();
 }
 
 // Each (law, e) of the sweep.
-inline Impact SweepFirstImpact(const Scene& scene, LawId law, double e,
+inline Episode SweepFirstImpact(const Scene& scene, LawId law, double e,
                                std::optional<double> timestep = std::nullopt,
                                std::optional<AutoTimestepOptions> auto_timestep = std::nullopt,
                                long* steps = nullptr) {

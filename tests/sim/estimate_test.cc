@@ -27,7 +27,7 @@ TEST_F(EstimateTest, HertzContactDurationMatchesTheSimulatedContact) {
   for (double v : {0.5, 4.2}) {
     Simulation& sim = MakeSimulation(testing::DropXml(
         "law=hertz stiffness=1.4e8 exponent=1.5", v, "RK4"));
-    const Impact impact = testing::FirstImpact(sim);
+    const Episode impact = testing::FirstImpact(sim);
     const double simulated = impact.time_separation - impact.time_contact;
     EXPECT_NEAR(simulated / HertzContactDuration(1.4e8, 1.5, 1.0, v), 1.0, kDurationTolerance)
         << "v = " << v;

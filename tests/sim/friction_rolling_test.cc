@@ -98,7 +98,7 @@ TEST_F(FrictionRollingTest, ObliqueImpactBelowTheSlidingLimitLeavesRolling) {
   constexpr double kVt = 0.3;  // m/s, < 7/2 mu (1 + e) v_n = 1.05 at e = 0.5
   Simulation& sim = MakeSimulation(testing::ObliqueImpact(kVt, kMu));
   while (sim.contacts().impacts().empty() || sim.contacts().impacts()[0].open) sim.Step();
-  const Impact& impact = sim.contacts().impacts()[0];
+  const Episode& impact = sim.contacts().impacts()[0];
   const double e = impact.restitution_post();
   ASSERT_LT(kVt, 3.5 * kMu * (1 + e) * 1.0) << "not below the sliding limit";
   const double v = Vx(sim);

@@ -124,7 +124,7 @@ inline void ExpectKineticStop(Simulation& sim, double mu, double v0, double star
 // The ball of ObliqueImpact(vt0, mu) after its first impact, in gross
 // sliding (vt0 > 7/2 mu (1 + e) v_n): the impulse law, v_t' = vt0 - mu (1 +
 // e) v_n and w R = 5/2 mu (1 + e) v_n.
-inline void ExpectImpulseLaw(const Simulation& sim, const Impact& impact, double mu, double vt0,
+inline void ExpectImpulseLaw(const Simulation& sim, const Episode& impact, double mu, double vt0,
                              const char* name) {
   const double e = impact.restitution_post();
   const double vn = impact.impact_velocity;

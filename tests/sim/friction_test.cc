@@ -139,7 +139,7 @@ TEST_F(FrictionTest, ObliqueImpactInGrossSlidingMatchesTheImpulseLaw) {
   constexpr double kMu = 0.2;
   Simulation& sim = MakeSimulation(testing::ObliqueImpact(2, kMu));
   while (sim.contacts().impacts().empty() || sim.contacts().impacts()[0].open) sim.Step();
-  const Impact& impact = sim.contacts().impacts()[0];
+  const Episode& impact = sim.contacts().impacts()[0];
   testing::ExpectImpulseLaw(sim, impact, kMu, 2, "oblique");
   const double spin = 2.5 * kMu * (1 + impact.restitution_post()) * impact.impact_velocity;
   constexpr double kImpulseTolerance = 2.5e-2;  // relative, as ExpectImpulseLaw's

@@ -93,10 +93,10 @@ void ExpectLandsAndRestsOnFourCorners(Simulation& sim, const char* name) {
   const double v = std::sqrt(2 * kGravity * kDrop);
   const double peak_bound = 2 * kStiffness * std::pow(5 * kMass * v * v / (4 * kStiffness), 0.6);
   int landings = 0;
-  for (const Impact& c : sim.contacts().impacts()) {
+  for (const Episode& c : sim.contacts().impacts()) {
     if (c.pair != cube_pair) continue;
     ++landings;
-    EXPECT_LT(c.max_force, peak_bound) << "collision " << c.index;
+    EXPECT_LT(c.max_force, peak_bound) << "impact " << c.index;
   }
   EXPECT_GE(landings, 1);
   // on 4 corners, each at the statics' depth: K d^1.5 = m g / 4

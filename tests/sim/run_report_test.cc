@@ -52,7 +52,7 @@ TEST_F(RunReportTest, BodiesPlacedTouchingThatSettleAreNoChain) {
   while (sim.time() < 0.2) sim.Step();
   // every contact opened at t = 0 and was compressed faster than its v0
   int settled = 0;
-  for (const Impact& point : sim.contacts().point_impacts()) {
+  for (const Episode& point : sim.contacts().point_episodes()) {
     EXPECT_EQ(point.time_contact, 0.0);
     settled += point.max_approach_velocity > kChainFactor * point.touch_v0;
   }

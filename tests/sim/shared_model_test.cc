@@ -68,7 +68,7 @@ std::vector<Case> Cases() {
   };
 }
 
-// What a run leaves: its rows, its final state and collisions.
+// What a run leaves: its rows, its final state and impacts.
 struct Outcome {
   std::vector<double> rows;
   RunResult end;
@@ -139,7 +139,7 @@ TEST(SharedModelTest, EightDataOfOneModelOnFourThreadsGiveWhatEachGivesAlone) {
                           sizeof(double) * alone[k].rows.size()),
               0)
         << "rows differ";
-    // each run bounced: there is a collision to compare
+    // each run bounced: there is an impact to compare
     ASSERT_FALSE(alone[k].end.impacts.empty());
     EXPECT_FALSE(alone[k].end.impacts[0].open);
   }

@@ -89,7 +89,7 @@ TEST_F(ArticulatedTest, APendulumReboundsAtTheLawsRestitutionThroughItsChain) {
   for (const char* law : {"hunt-crossley", "flores"}) {
     Simulation& sim = MakeSimulation(
         PendulumXml(fmt::format("law={} restitution=0.6 stiffness=1e8", law), 2.0));
-    const Impact impact = testing::FirstImpact(sim, 0.5);
+    const Episode impact = testing::FirstImpact(sim, 0.5);
     EXPECT_NEAR(impact.restitution_post(),
                 ExactRebound(HysteresisCoefficient(*ParseLawName(law), 0.6)), kReboundTolerance)
         << law;

@@ -42,7 +42,7 @@ TEST_F(PhysicsTest, HertzFamilyReboundMatchesClosedForm) {
     for (int tenths = 1; tenths <= 10; ++tenths) {
       const double e = tenths / 10.0;
       Simulation& sim = MakeSimulation(DropXml(LawTag(law, e), kSpeed));
-      const Impact impact = FirstImpact(sim);
+      const Episode impact = FirstImpact(sim);
       const double expected = ExactRebound(HysteresisCoefficient(law, e));
       EXPECT_NEAR(impact.restitution_post(), expected, kReboundTolerance)
           << LawName(law) << " e = " << e;
@@ -59,7 +59,7 @@ TEST_F(PhysicsTest, HertzMaxDepthMatchesClosedForm) {
   constexpr double kDepthTolerance = 1e-3;  // relative
   for (double v : {0.5, 2.0, kSpeed}) {
     Simulation& sim = MakeSimulation(DropXml(LawTag(*ParseLawName("hertz"), 1.0), v));
-    const Impact impact = FirstImpact(sim);
+    const Episode impact = FirstImpact(sim);
     const double expected = std::pow(5 * 1.0 * v * v / (4 * kStiffness), 0.4);
     EXPECT_NEAR(impact.max_depth / expected, 1.0, kDepthTolerance) << "v = " << v;
     EXPECT_NEAR(impact.restitution_post(), 1.0, kReboundTolerance);
@@ -129,7 +129,7 @@ TEST_F(LedgerTest, DissipationMatchesTheKineticEnergyLost) {
   for (int i = 0; i < 2; ++i) {
     Simulation& sim =
         MakeSimulation(DropXml(LawTag(*ParseLawName("flores"), 0.5), 2.0, "Euler", steps[i]));
-    const Impact impact = FirstImpact(sim);
+    const Episode impact = FirstImpact(sim);
     sim.Step();  // one more step: the ledger's trapezoid reaches the separation
     mj_forward(sim.model(), sim.data());
     const double lost = 0.5 * 1.0 * 4.0 * (1 - std::pow(impact.restitution_post(), 2));
@@ -165,7 +165,7 @@ class TwoSpheresTest : public testing::MujocoTest {
 TEST_F(TwoSpheresTest, MomentumAndPaperEquations13To15) {
   constexpr double m1 = 1, m2 = 3, v1 = 2, v2 = -1;
   Simulation& sim = MakeSimulation(Xml(LawTag(*ParseLawName("flores"), 0.7)));
-  const Impact impact = FirstImpact(sim);
+  const Episode impact = FirstImpact(sim);
   EXPECT_NEAR(impact.impact_velocity, v1 - v2, 1e-12);  // no force before touch
   const double* qvel = sim.data()->qvel;
   // momentum: the pair's forces are equal and opposite at one point, so it is
@@ -204,7 +204,7 @@ TEST_F(PhysicsTest, KelvinVoigtClampedReboundsAboveE) {
   // keeps more energy: e_post > e (the paper's criticism of the model).
   Simulation& sim = MakeSimulation(
       DropXml("law=kelvin-voigt restitution=0.5 linear_stiffness=5e6", 2.0));
-  const Impact impact = FirstImpact(sim);
+  const Episode impact = FirstImpact(sim);
   EXPECT_GT(impact.restitution_post(), 0.5 + 0.02);
   EXPECT_LT(impact.restitution_post(), 1.0);
 }
@@ -239,7 +239,7 @@ TEST_F(PhysicsTest, MaterialStiffnessFromTheGeoms) {
   EXPECT_NEAR(sim.contact_model().pairs()[0].params.stiffness / expected, 1.0, 1e-12);
   EXPECT_NEAR(expected, 4.8654e10, 1e7);
   // and it acts: the rebound and the Hertz-family depth bound for that K
-  const Impact impact = FirstImpact(sim);
+  const Episode impact = FirstImpact(sim);
   EXPECT_NEAR(impact.restitution_post(),
               ExactRebound(HysteresisCoefficient(*ParseLawName("flores"), 0.8)), kReboundTolerance);
   EXPECT_LT(impact.max_depth, std::pow(5.0 / (4 * expected), 0.4));
@@ -262,10 +262,10 @@ TEST_F(PhysicsTest, GroupTagsCoverEveryPair) {
 </mujoco>)");
   EXPECT_EQ(sim.contact_model().pairs().size(), 3u);
   while (sim.time() < 0.05) sim.Step();
-  const std::vector<Impact>& impacts = sim.contacts().impacts();
+  const std::vector<Episode>& impacts = sim.contacts().impacts();
   ASSERT_EQ(impacts.size(), 3u);
   const double exact = ExactRebound(HysteresisCoefficient(*ParseLawName("hunt-crossley"), 0.6));
-  for (const Impact& impact : impacts) {
+  for (const Episode& impact : impacts) {
     EXPECT_FALSE(impact.open);
     EXPECT_NEAR(impact.restitution_post(), exact, kReboundTolerance);
   }
@@ -293,7 +293,7 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   EXPECT_DOUBLE_EQ(sim.data()->qpos[2], 1.0);
   EXPECT_DOUBLE_EQ(m->opt.timestep, 1e-5);
   const GeomPair& pair = sim.contact_model().pairs().at(0);
-  EXPECT_EQ(pair.params.kind, *ParseLawName("flores"));
+  EXPECT_EQ(pair.params.law, *ParseLawName("flores"));
   EXPECT_EQ(pair.params.restitution, 0.9);
   EXPECT_EQ(pair.params.stiffness, 1.4e8);
   EXPECT_EQ(pair.params.exponent, 1.5);
@@ -301,7 +301,7 @@ TEST_F(SceneTest, BouncingBallIsThePapers) {
   // it falls 0.9 m and rebounds as the closed form says, up to gravity:
   // during a contact of duration tau, gravity shifts e_post by at most
   // g tau / v0 (~3e-3 here)
-  const Impact impact = testing::FirstImpact(sim, 1.0);
+  const Episode impact = testing::FirstImpact(sim, 1.0);
   // the first state in contact is up to one step past the touch: g h = 1e-4
   EXPECT_NEAR(impact.impact_velocity, std::sqrt(2 * 9.81 * 0.9), 2e-4);
   const double tau = impact.time_separation - impact.time_contact;

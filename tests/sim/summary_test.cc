@@ -12,9 +12,9 @@ namespace contactlaws {
 namespace {
 
 
-// An episode of pair p from t0 to t1 (open when t1 < 0).
-Impact Episode(int pair, double t0, double t1, double depth = 1e-3, double force = 1e3) {
-  Impact i;
+// An impact of pair p from t0 to t1 (open when t1 < 0).
+Episode Impact(int pair, double t0, double t1, double depth = 1e-3, double force = 1e3) {
+  Episode i;
   i.tag = 0;
   i.pair = pair;
   i.time_contact = t0;
@@ -31,9 +31,9 @@ Impact Episode(int pair, double t0, double t1, double depth = 1e-3, double force
 
 TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
   // three bounces of 0.10, 0.15 and 0.05 s, then a contact from 0.8 s on
-  const std::vector<Impact> impacts = {Episode(0, 0.1, 0.2, 2e-3, 5e3),
-                                       Episode(0, 0.5, 0.65, 3e-3, 4e3),
-                                       Episode(0, 0.7, 0.75), Episode(0, 0.8, -1)};
+  const std::vector<Episode> impacts = {Impact(0, 0.1, 0.2, 2e-3, 5e3),
+                                       Impact(0, 0.5, 0.65, 3e-3, 4e3),
+                                       Impact(0, 0.7, 0.75), Impact(0, 0.8, -1)};
   const RunSummary s = Summarize(impacts, 2.0);
   EXPECT_EQ(s.impacts, 4);
   EXPECT_EQ(s.restitution_post, 0.75);  // 1.5 / 2.0, the first episode's
@@ -49,18 +49,18 @@ TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
   EXPECT_EQ(Summarize(impacts, 0.96).time_to_rest, 0.8);  // 0.16 s > 0.15 s
 
   // the run ends in flight: not at rest
-  EXPECT_FALSE(Summarize({Episode(0, 0.1, 0.2), Episode(0, 0.5, 0.6)}, 2.0).time_to_rest);
+  EXPECT_FALSE(Summarize({Impact(0, 0.1, 0.2), Impact(0, 0.5, 0.6)}, 2.0).time_to_rest);
   // a first episode still open: no post-restitution, no duration; resting from t = 0
-  const RunSummary resting = Summarize({Episode(0, 0.0, -1)}, 1.0);
+  const RunSummary resting = Summarize({Impact(0, 0.0, -1)}, 1.0);
   EXPECT_FALSE(resting.restitution_post);
   EXPECT_FALSE(resting.contact_duration);
   EXPECT_EQ(resting.time_to_rest, 0.0);
   // bodies placed overlapping, pushed apart at t = 0 without approaching:
   // no rebound to measure; the first impact after it is the first
-  Impact pushed_apart = Episode(0, 0.0, 0.004);
+  Episode pushed_apart = Impact(0, 0.0, 0.004);
   pushed_apart.impact_velocity = 0;
   pushed_apart.separation_velocity = 4.1;
-  const RunSummary after = Summarize({pushed_apart, Episode(0, 0.3, 0.31)}, 1.0);
+  const RunSummary after = Summarize({pushed_apart, Impact(0, 0.3, 0.31)}, 1.0);
   EXPECT_EQ(after.impacts, 2);
   EXPECT_EQ(after.restitution_post, 0.75);
   EXPECT_EQ(after.impact_velocity, 2.0);
@@ -73,10 +73,10 @@ TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
 }
 
 TEST(SummaryTest, EveryPairMustRestAndTheLatestDecides) {
-  std::vector<Impact> impacts = {Episode(0, 0.1, 0.2), Episode(1, 0.15, 0.25),
-                                 Episode(0, 0.4, -1), Episode(1, 0.6, -1)};
+  std::vector<Episode> impacts = {Impact(0, 0.1, 0.2), Impact(1, 0.15, 0.25),
+                                 Impact(0, 0.4, -1), Impact(1, 0.6, -1)};
   EXPECT_EQ(Summarize(impacts, 2.0).time_to_rest, 0.6);
-  impacts.push_back(Episode(2, 0.5, 0.55));  // a third pair that touched and left
+  impacts.push_back(Impact(2, 0.5, 0.55));  // a third pair that touched and left
   EXPECT_FALSE(Summarize(impacts, 2.0).time_to_rest);
 }
 
