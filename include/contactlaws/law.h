@@ -61,13 +61,13 @@ struct LawInfo {
 
 // Every law, in table order (LawId is the index).
 const std::vector<LawInfo>& Laws();
-const LawInfo& Law(LawId kind);
+const LawInfo& Law(LawId id);
 
 // Every law's id, in table order.
 const std::vector<LawId>& AllLaws();
 
 // The law's name as written in tags and on the command line ("flores", ...).
-std::string_view LawName(LawId kind);
+std::string_view LawName(LawId id);
 
 // "hertz, kelvin-voigt, ...": every name, in table order, for messages.
 const std::string& LawNameList();
@@ -162,7 +162,7 @@ double RestingDamperLag(const LawParams& params, double load, double mass);
 // F = K d^n (1 + a d'/v0): 0 for hertz, the law's a(e) otherwise.
 // Not defined for kelvin-voigt nor for the constant-dissipation family, whose
 // a = c v0 does not come from e (returns 0).
-double HysteresisCoefficient(LawId kind, double restitution);
+double HysteresisCoefficient(LawId id, double restitution);
 
 // The restitution e_post the law rebounds with from a first impact at
 // restitution e, neglecting gravity during the contact: ExactRebound(a(e)) for
@@ -170,20 +170,20 @@ double HysteresisCoefficient(LawId kind, double restitution);
 // no closed form), for the constant-dissipation family (its rebound,
 // ExactRebound(c v0), depends on the impact speed) and for e outside the
 // law's range.
-std::optional<double> EffectiveRestitution(LawId kind, double restitution);
+std::optional<double> EffectiveRestitution(LawId id, double restitution);
 
 // True for a law that ignores e and dissipates nothing (Hertz).
-bool IsElastic(LawId kind);
+bool IsElastic(LawId id);
 
 // Whether the law reads the restitution e (every law but Hertz and the
 // constant-dissipation family), and the dissipation c (that family alone).
-bool ReadsRestitution(LawId kind);
-bool ReadsDissipation(LawId kind);
+bool ReadsRestitution(LawId id);
+bool ReadsDissipation(LawId id);
 
 // The restitution the law reports for an input e: 1 for an elastic law
 // (Hertz), which ignores e; none for a law that reads no e and is not elastic
 // (constant dissipation); else e.
-std::optional<double> ReportedRestitution(LawId kind, double restitution);
+std::optional<double> ReportedRestitution(LawId id, double restitution);
 
 }  // namespace contactlaws
 

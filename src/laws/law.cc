@@ -13,18 +13,18 @@
 
 namespace contactlaws {
 
-const LawInfo& Law(LawId kind) { return Laws()[static_cast<int>(kind)]; }
+const LawInfo& Law(LawId id) { return Laws()[static_cast<int>(id)]; }
 
 const std::vector<LawId>& AllLaws() {
-  static const std::vector<LawId> kinds = [] {
+  static const std::vector<LawId> ids = [] {
     std::vector<LawId> all;
     for (const LawInfo& law : Laws()) all.push_back(law.id);
     return all;
   }();
-  return kinds;
+  return ids;
 }
 
-std::string_view LawName(LawId kind) { return Law(kind).name; }
+std::string_view LawName(LawId id) { return Law(id).name; }
 
 const std::string& LawNameList() {
   static const std::string list = [] {
@@ -45,8 +45,8 @@ std::optional<LawId> ParseLawName(std::string_view name) {
   return std::nullopt;
 }
 
-double HysteresisCoefficient(LawId kind, double restitution) {
-  const LawInfo& law = Law(kind);
+double HysteresisCoefficient(LawId id, double restitution) {
+  const LawInfo& law = Law(id);
   return law.hysteresis ? law.hysteresis(restitution) : 0.0;
 }
 
@@ -63,30 +63,30 @@ const ParamRange& RestitutionRange(const LawInfo& law) {
 
 }  // namespace
 
-std::optional<double> EffectiveRestitution(LawId kind, double restitution) {
-  const LawInfo& law = Law(kind);
+std::optional<double> EffectiveRestitution(LawId id, double restitution) {
+  const LawInfo& law = Law(id);
   if (law.family != LawFamily::kHysteresis || !RestitutionRange(law).Contains(restitution)) {
     return std::nullopt;
   }
-  return ExactRebound(HysteresisCoefficient(kind, restitution));
+  return ExactRebound(HysteresisCoefficient(id, restitution));
 }
 
-bool IsElastic(LawId kind) {
-  const LawInfo& law = Law(kind);
+bool IsElastic(LawId id) {
+  const LawInfo& law = Law(id);
   return law.family == LawFamily::kHysteresis && !law.hysteresis;
 }
 
-bool ReadsRestitution(LawId kind) {
-  return !IsElastic(kind) && Law(kind).family != LawFamily::kConstantDissipation;
+bool ReadsRestitution(LawId id) {
+  return !IsElastic(id) && Law(id).family != LawFamily::kConstantDissipation;
 }
 
-bool ReadsDissipation(LawId kind) {
-  return Law(kind).family == LawFamily::kConstantDissipation;
+bool ReadsDissipation(LawId id) {
+  return Law(id).family == LawFamily::kConstantDissipation;
 }
 
-std::optional<double> ReportedRestitution(LawId kind, double restitution) {
-  if (IsElastic(kind)) return 1.0;
-  if (!ReadsRestitution(kind)) return std::nullopt;
+std::optional<double> ReportedRestitution(LawId id, double restitution) {
+  if (IsElastic(id)) return 1.0;
+  if (!ReadsRestitution(id)) return std::nullopt;
   return restitution;
 }
 
