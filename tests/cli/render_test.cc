@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -304,21 +305,16 @@ TEST(RenderTest, OverlayShowsTheSlowMotion) {
   EXPECT_LT(changed.bottom, kHeight * 3 / 8);
 }
 
-// The timestep a scene's <option> gives (MuJoCo's default without one).
+// The timestep a scene's <option> gives (0: the scene does not load).
 double SceneTimestep(const std::string& path) {
-  char error[512] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
-  if (!m) return 0;
-  const double timestep = m->opt.timestep;
-  mj_deleteModel(m);
-  return timestep;
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(mj_loadXML(path.c_str(), nullptr, nullptr, 0),
+                                                 mj_deleteModel);
+  return m ? m->opt.timestep : 0;
 }
 
-// Every scene of mjcf/ (their visuals: textures, skybox, shadows) draws:
-// two small frames each. The run is at most 500 of the scene's own steps
-// (Chung & Ooi's test 4 steps at 1e-8 s: 0.05 s of it is 5 million steps);
-// its video lasts 1.5 frames at 20 fps, two frames whatever the rounding of
-// duration x fps x slowmo.
+// Every scene of mjcf/ (textures, skybox, shadows) draws two small frames,
+// from at most 500 of its own steps (Chung & Ooi's, at 1e-8 s, would take 5
+// million for 0.05 s): 1.5 frames of video at 20 fps, two whatever the rounding.
 TEST(RenderTest, ShippedScenesDraw) {
   constexpr double kVideoSeconds = 0.075;
   constexpr double kMostSteps = 500;
