@@ -28,7 +28,10 @@ cd "$repo"
 source scripts/generator.sh
 
 jobs=2  # the machine's cores; ctest -j and the builds
-fuzz_seconds="${FUZZ_SECONDS:-60}"
+# 30 s of fuzzing keeps scripts/test.sh under CI's 15 minutes; the corpus and
+# the regressions also run in ctest (tag_fuzzer_replay), and a longer search
+# is FUZZ_SECONDS=300 scripts/test.sh fuzz
+fuzz_seconds="${FUZZ_SECONDS:-30}"
 stage_times=()
 
 # The compiler of the sanitizer builds: clang when installed (its libFuzzer
@@ -91,10 +94,19 @@ asan() {
   # Python module's pytest (label python: an instrumented module cannot load
   # into Debian's python3) and mpi_test (label mpi: Open MPI's own
   # never-freed allocations are leaks to LeakSanitizer).
+  # And by name, the four longest under ASan (61 s of its 250 s of test CPU,
+  # a fresh clone on 2 cores), long runs of code that shorter tests here
+  # step through too: the auto step's stick spring and resting die (the
+  # other AutoTimestepTest cases), the settled plate (SettleTest's others),
+  # the reference sweep (SweepTest); all four run in run_ctest.
+  local asan_skipped='AutoTimestepTest.TheStickSpringIsResolvedAsTheNormalContactIs'
+  asan_skipped+='|SettleTest.ASettledPlateWithBallsStaysAtRestUnderAuto'
+  asan_skipped+='|ReferenceTest.SweepAgreesWithTheIndependentIntegration'
+  asan_skipped+='|AutoTimestepTest.ARestingDieComesToRestAsAtAFineFixedStep'
   ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-      -LE 'benchmark|consumer|preload|render|slow|python|mpi'
+      -LE 'benchmark|consumer|preload|render|slow|python|mpi' -E "$asan_skipped"
 }
 
 tsan() {
