@@ -136,6 +136,10 @@ std::optional<ParamError> ValidateLawParams(const LawParams& params);
 // resolved (ResolveLawParams).
 ContactForce EvaluateLaw(const LawParams& params, const ContactState& state);
 
+// Whether EvaluateLaw reads ContactState::effective_mass: Kelvin-Voigt with no
+// damping given, whose critical damper is made from it.
+bool ReadsEffectiveMass(const LawParams& params);
+
 // Elastic energy stored at depth d (J): K d^(n+1)/(n+1), or k d^2/2.
 double ElasticEnergy(const LawParams& params, double depth);
 

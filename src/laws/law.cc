@@ -123,6 +123,10 @@ std::optional<ParamError> ValidateLawParams(const LawParams& p) {
   return std::nullopt;
 }
 
+bool ReadsEffectiveMass(const LawParams& p) {
+  return Law(p.law).family == LawFamily::kLinear && !p.damping;
+}
+
 ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
   ContactForce f;
   if (s.depth <= 0.0) return f;

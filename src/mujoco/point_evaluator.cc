@@ -14,8 +14,7 @@ namespace contactlaws::internal {
 PointEvaluator::PointEvaluator(const ContactModel& model)
     : model_(model), contacts_(MakeContactBuffer()) {
   for (const GeomPair& pair : model.pairs()) {
-    reads_mass_.push_back(Law(pair.params.law).family == LawFamily::kLinear &&
-                          !pair.params.damping);
+    reads_mass_.push_back(ReadsEffectiveMass(pair.params));
   }
   latest_.reserve(std::min<size_t>(model.slot_count(), 4 * model.pairs().size()));
 }
