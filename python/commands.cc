@@ -63,8 +63,9 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   const Scene scene(args.scene, cli::LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   // a start deep in contact, whatever the step; a fixed step's own
-  std::vector<std::string> warnings = DeepStartWarnings(*sim, StartContacts(sim.get()));
-  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  const std::vector<StartContact> starts = StartContacts(sim.get());
+  std::vector<std::string> warnings = DeepStartWarnings(*sim, starts);
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get(), starts);
   if (!common.auto_timestep) {
     for (std::string& w : TimestepWarnings(*sim, advice)) warnings.push_back(std::move(w));
   }

@@ -82,24 +82,13 @@ bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate&
   return !ok;
 }
 
-// A start's lag this much shorter than the one at rest binds the step: beyond
-// DampingCoefficient's rounding (a block placed at its static depth has the
-// same lag to 1e-15).
-constexpr double kShorterLag = 1e-6;  // relative
-
-// The lag of the law's damping where the tag's pairs start in contact (the
-// shortest, at their points' depths: StartContacts) when it is shorter than
-// rest_lag, the one at rest (s); true when the timestep is too coarse for it.
-// Nothing for a tag none of whose pairs starts in contact deeper than
-// kTouchingGap.
+// The lag of the law's damping where the tag's pairs start in contact when it
+// is shorter than rest_lag, the one at rest (s: ShorterStartLag); true when
+// the timestep is too coarse for it.
 bool PrintStart(const Simulation& sim, int tag, const std::vector<StartContact>& starts,
                 double rest_lag, bool automatic, std::FILE* out) {
-  const StartContact* shortest = nullptr;
-  for (const StartContact& s : starts) {
-    if (sim.contact_model().pairs()[s.pair].tag != tag) continue;
-    if (!shortest || s.lag < shortest->lag) shortest = &s;
-  }
-  if (!shortest || !(shortest->lag < rest_lag * (1 - kShorterLag))) return false;
+  const StartContact* shortest = ShorterStartLag(sim.contact_model(), tag, starts, rest_lag);
+  if (!shortest) return false;
   const bool ok = automatic || sim.model()->opt.timestep <= shortest->timestep();
   fmt::print(out,
              "  at the start: damping lag {:.3g} s at the depth {:.4g} m of {}, its law's force "

@@ -100,10 +100,9 @@ int RenderCommand(const RenderArgs& args) {
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
   ReportSettle(*sim);
-  for (const std::string& w : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
-    Warn(scene.path(), w);
-  }
-  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  const std::vector<StartContact> starts = StartContacts(sim.get());
+  for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get(), starts);
   if (!plan.common.auto_timestep) {
     for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);
   }
@@ -158,7 +157,7 @@ int RenderCommand(const RenderArgs& args) {
                  : "");
   if (result.divergence) {
     fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
-               DivergenceMessage(*sim, *result.divergence, AdviseTimestep(sim.get())));
+               DivergenceMessage(*sim, *result.divergence, advice));
     return kExitIncomplete;
   }
   return 0;

@@ -65,10 +65,9 @@ int RunCommand(const RunArgs& args) {
   if (args.output) trajectory.emplace(*args.output);
   if (args.impacts) impacts.emplace(*args.impacts);
 
-  for (const std::string& w : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
-    Warn(scene.path(), w);
-  }
-  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get());
+  const std::vector<StartContact> starts = StartContacts(sim.get());
+  for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);
+  const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get(), starts);
   if (!auto_timestep) {
     for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);
   }

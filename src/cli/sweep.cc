@@ -291,10 +291,11 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
     WarnAboutTags(sim->contact_model(), &warned);
     // the scene's start, whatever the run: once each
-    for (const std::string& text : DeepStartWarnings(*sim, StartContacts(sim.get()))) {
+    const std::vector<StartContact> starts = StartContacts(sim.get());
+    for (const std::string& text : DeepStartWarnings(*sim, starts)) {
       if (warned.insert(text).second) Warn(scene.path(), text);
     }
-    advices.push_back(AdviseTimestep(sim.get()));
+    advices.push_back(AdviseTimestep(sim.get(), starts));
     if (auto_timestep) continue;  // the steps will resolve the contacts
     for (const std::string& text : TimestepWarnings(*sim, advices.back())) {
       if (warned.insert(text).second) {

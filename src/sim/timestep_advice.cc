@@ -19,7 +19,28 @@ std::string PairName(const Simulation& sim, int pair_index) {
                      ObjectName(sim.model(), mjOBJ_GEOM, pair.named[1]));
 }
 
-std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
+namespace {
+
+// A start's lag this much shorter than the one at rest binds the step: beyond
+// DampingCoefficient's rounding (a block placed at its static depth has the
+// same lag to 1e-15).
+constexpr double kShorterLag = 1e-6;  // relative
+
+}  // namespace
+
+const StartContact* ShorterStartLag(const ContactModel& cm, int tag,
+                                    const std::vector<StartContact>& starts, double rest_lag) {
+  const StartContact* shortest = nullptr;
+  for (const StartContact& s : starts) {
+    if (cm.pairs()[s.pair].tag != tag) continue;
+    if (!shortest || s.lag < shortest->lag) shortest = &s;
+  }
+  if (!shortest || !(shortest->lag < rest_lag * (1 - kShorterLag))) return nullptr;
+  return shortest;
+}
+
+std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim,
+                                           const std::vector<StartContact>& starts) {
   mj_forward(sim->model(), sim->data());
   const double dt = sim->model()->opt.timestep;
   std::vector<TimestepAdvice> advice;
@@ -33,6 +54,11 @@ std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim) {
     a.tangential_coarse = dt > a.tangential.timestep();
     a.resting = EstimateResting(sim->contact_model(), a.shortest.pair, a.shortest.estimate);
     a.resting_coarse = dt > a.resting.timestep();
+    if (const StartContact* start =
+            ShorterStartLag(sim->contact_model(), t, starts, a.resting.lag)) {
+      a.start = *start;
+      a.start_coarse = dt > start->timestep();
+    }
     advice.push_back(a);
   }
   return advice;
@@ -69,6 +95,16 @@ std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& 
       LawName(law.law), advice.resting.load, law.min_impact_velocity, advice.resting.timestep());
 }
 
+std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+  const StartContact& s = *advice.start;
+  return fmt::format(
+      "{}: timestep {} s is longer than {} lags of its law's damping where it starts (lag {:.3g} "
+      "s at the depth {:.4g} m, its law's force {:.4g} N against the load {:.4g} N): use "
+      "--timestep {:.3g} or smaller, or --settle",
+      PairName(sim, s.pair), sim.model()->opt.timestep, kFixedStepDamperLags, s.lag, s.depth,
+      s.force, s.load, s.timestep());
+}
+
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
                                           const std::vector<TimestepAdvice>& advice) {
   std::vector<std::string> warnings;
@@ -76,6 +112,7 @@ std::vector<std::string> TimestepWarnings(const Simulation& sim,
     if (a.coarse) warnings.push_back(CoarseTimestepWarning(sim, a));
     if (a.tangential_coarse) warnings.push_back(TangentialTimestepWarning(sim, a));
     if (a.resting_coarse) warnings.push_back(RestingTimestepWarning(sim, a));
+    if (a.start_coarse) warnings.push_back(StartTimestepWarning(sim, a));
   }
   return warnings;
 }
@@ -97,10 +134,17 @@ std::string DivergenceMessage(const Simulation& sim, const Divergence& divergenc
     return found == advice.end() ? nullptr : &*found;
   };
   const TimestepAdvice* cause = find([&](const TimestepAdvice& a) { return a.tag == tag; });
-  if (!cause) cause = find([](const TimestepAdvice& a) { return a.coarse; });
+  if (!cause) cause = find([](const TimestepAdvice& a) { return a.coarse || a.start_coarse; });
   if (!cause && !advice.empty()) cause = &advice.front();
   std::string likely;
-  if (cause && std::isfinite(cause->steps)) {
+  if (cause && cause->start_coarse) {
+    const StartContact& s = *cause->start;
+    likely = fmt::format(
+        "likely cause: the timestep {} s is longer than {} lags of the law's damping where {} "
+        "starts, {:.3g} s at the depth {:.4g} m (--timestep {:.3g}, or --settle)",
+        sim.model()->opt.timestep, kFixedStepDamperLags, PairName(sim, s.pair), s.lag, s.depth,
+        s.timestep());
+  } else if (cause && std::isfinite(cause->steps)) {
     const ContactEstimate& e = cause->shortest.estimate;
     const double limit = sim.contact_model().pairs()[cause->shortest.pair].depth_limit;
     if (e.max_depth > limit) {

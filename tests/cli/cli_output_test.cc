@@ -236,6 +236,70 @@ TEST(CliOutputTest, ABlockStartingDeepIsWarnedOnceAndCheckTakesTheStartsDepth) {
   EXPECT_EQ(fine.output.find("warning:"), std::string::npos) << fine.output;
 }
 
+// The text in text between the first before and the after that follows it
+// ("" when either is missing).
+std::string Between(const std::string& text, const std::string& before, const std::string& after) {
+  const size_t from = text.find(before);
+  if (from == std::string::npos) return "";
+  const size_t to = text.find(after, from + before.size());
+  if (to == std::string::npos) return "";
+  return text.substr(from + before.size(), to - from - before.size());
+}
+
+// A fixed-step run takes the damper's lag where a pair starts as check does:
+// the block 0.1 mm deep at 5e-5 s is warned with check's step and its
+// divergence names it; mjcf/friction_slide_roll.xml's ball starts 0.1 mm
+// deep with 10 N against its 9.81 N weight, its lag there 1.33e-4 s against
+// 1.36e-4 s at rest: a step between the two lags' 2 is warned, one within
+// both is not. The block at its static depth is warned as before.
+TEST(CliOutputTest, AFixedStepRunTakesTheLagWhereAPairStartsAsCheckDoes) {
+  const std::string deep = testing::WriteScene("starts_deep_run", testing::SlidingBlockXml(1e-4));
+  const std::string needs =
+      Between(RunCli("check " + deep).output, "  at the start: damping lag 1.81e-06 s",
+              " s, or --settle)");
+  ASSERT_NE(needs.find("(needs timestep <= 3.61e-06"), std::string::npos) << needs;
+  const std::string step = needs.substr(needs.find("<= ") + 3);
+  const Result run = RunCli("run " + deep + " --timestep 5e-5 --duration 0.002");
+  EXPECT_NE(run.output.find("contactlaw:block-floor (block, floor): timestep 5e-05 s is longer "
+                            "than 2 lags of its law's damping where it starts (lag 1.81e-06 s at "
+                            "the depth 0.0001 m, its law's force 40 N against the load 1.962 N): "
+                            "use --timestep " + step + " or smaller, or --settle\n"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("diverged at t = 0.00115 s"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("likely cause: the timestep 5e-05 s is longer than 2 lags of the "
+                            "law's damping where contactlaw:block-floor (block, floor) starts, "
+                            "1.81e-06 s at the depth 0.0001 m (--timestep " + step +
+                            ", or --settle)"),
+            std::string::npos)
+      << run.output;
+
+  const std::string ball = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/friction_slide_roll.xml";
+  const std::string where = "longer than 2 lags of its law's damping where it starts";
+  const std::string between = RunCli("check " + ball + " --timestep 2.7e-4").output;
+  EXPECT_NE(between.find("TOO COARSE (needs timestep <= 0.000267 s, or --settle)"),
+            std::string::npos)
+      << between;
+  const Result coarse = RunCli("run " + ball + " --timestep 2.7e-4 --duration 0.01");
+  EXPECT_NE(coarse.output.find("(ball, floor): timestep 0.00027 s is " + where +
+                               " (lag 0.000133 s at the depth 0.0001 m, its law's force 10 N "
+                               "against the load 9.81 N): use --timestep 0.000267 or smaller"),
+            std::string::npos)
+      << coarse.output;
+  const Result fine = RunCli("run " + ball + " --timestep 2.6e-4 --duration 0.01");
+  EXPECT_EQ(fine.output.find(where), std::string::npos) << fine.output;
+
+  // 4 K d^1.5 = 1.962 N: its lag at the start is the one at rest
+  const std::string rest = testing::WriteScene(
+      "starts_at_rest_run", testing::SlidingBlockXml(std::pow(1.962 / 4e7, 1 / 1.5)));
+  const Result resting = RunCli("run " + rest + " --timestep 1e-4 --duration 0.001");
+  EXPECT_EQ(resting.output.find(where), std::string::npos) << resting.output;
+  EXPECT_NE(resting.output.find("(block, floor): timestep 0.0001 s is longer than 2 lags of its "
+                                "law's damping at rest"),
+            std::string::npos)
+      << resting.output;
+}
+
 // The step of check's "  --timestep auto: steps of X s" line (the normal
 // contact's; the tangential line says it after "tangential: ...").
 double StepsOf(const std::string& output) {
