@@ -31,56 +31,6 @@
 namespace contactlaws::cli {
 namespace {
 
-// A number option: taken as text, read by the one number parser (the
-// commands' Parse* functions), shown as FLOAT in the help.
-CLI::Option* AddNumber(CLI::App* cmd, const std::string& name, std::string* value,
-                       const std::string& help) {
-  return cmd->add_option(name, *value, help)->type_name("FLOAT");
-}
-CLI::Option* AddNumber(CLI::App* cmd, const std::string& name,
-                       std::optional<std::string>* value, const std::string& help) {
-  return cmd->add_option(name, *value, help)->type_name("FLOAT");
-}
-
-constexpr char kDissipationHelp[] =
-    "override every tag's dissipation c, s/m >= 0, for the laws that read it "
-    "(hunt-crossley-constant); the others ignore it";
-
-constexpr char kSettleHelp[] =
-    "before t = 0, move the bodies that start in contact into the static equilibrium of their "
-    "contacts (positions only); refused when there is none";
-
-void AddFriction(CLI::App* cmd, std::optional<std::string>* friction,
-                 std::optional<std::string>* mu) {
-  cmd->add_option("--friction", *friction,
-                  fmt::format("override every tagged pair's friction model: {}", FrictionNameList()));
-  AddNumber(cmd, "--mu", mu, "override every tagged pair's friction coefficient (static = kinetic), >= 0");
-}
-
-void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
-  cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
-  AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
-  cmd->add_option("--timestep", args->timestep,
-                  "s (default: the scene's), or auto: long steps while the tagged pairs are "
-                  "apart, steps that resolve the contact near and in it (docs/timestep.md)");
-  AddNumber(cmd, "--max-timestep", &args->max_timestep,
-                  "s, with --timestep auto: an optional cap on every step (default: none)");
-  AddNumber(cmd, "--accuracy", &args->accuracy,
-            "with --timestep auto (implied): the relative error accepted in a collision's "
-            "rebound, peak force and duration, in (0, 0.1] (default 0.001)");
-  cmd->add_option("--integrator", args->integrator,
-                  "euler, rk4 or implicit (default: the scene's)");
-  AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
-  AddFriction(cmd, &args->friction, &args->mu);
-  cmd->add_flag("--settle", args->settle, kSettleHelp);
-  if (sampling) {
-    AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
-        ->capture_default_str();
-    cmd->add_option("--columns", args->columns,
-                    "trajectory column groups: any of bodies,joints,pairs,friction,energy (default: all)");
-  }
-}
-
 void AddSweep(CLI::App* cmd, SweepArgs* args, const char* restitution_help) {
   AddCommon(cmd, args, true);
   cmd->add_option("--laws", args->laws,
@@ -141,10 +91,7 @@ struct Commands {
 void AddRun(CLI::App* app, Commands* c) {
   c->run_cmd = app->add_subcommand("run", "simulate one tagged scene");
   AddCommon(c->run_cmd, &c->run, true);
-  c->run_cmd->add_option("--law", c->run.law,
-                         fmt::format("override every tag's law: {}", LawNameList()));
-  AddNumber(c->run_cmd, "--restitution", &c->run.restitution,
-            "override every tag's restitution e, in [0, 1]");
+  AddOverrides(c->run_cmd, &c->run.law, &c->run.restitution);
   c->run_cmd->add_option("--output", c->run.output,
                          "trajectory CSV ('-' for stdout); none if absent");
   c->run_cmd->add_option("--impacts", c->run.impacts,
@@ -188,7 +135,7 @@ void AddCheck(CLI::App* app, Commands* c) {
                            fmt::format("override every tag's law: {}", LawNameList()));
   AddNumber(c->check_cmd, "--restitution", &c->check.restitution,
             "override every tag's restitution");
-  AddNumber(c->check_cmd, "--dissipation", &c->check.dissipation, kDissipationHelp);
+  AddDissipation(c->check_cmd, &c->check.dissipation);
   AddFriction(c->check_cmd, &c->check.friction, &c->check.mu);
   c->check_cmd->add_option("--timestep", c->check.timestep,
                            "s (default: the scene's), or auto: the steps it would take");
@@ -211,12 +158,6 @@ void AddLaws(CLI::App* app, Commands* c) {
                           "0.9,0.7,0.5,0.3,0.1)");
 }
 
-void AddOverrides(CLI::App* cmd, std::optional<std::string>* law,
-                  std::optional<std::string>* restitution) {
-  cmd->add_option("--law", *law, fmt::format("override every tag's law: {}", LawNameList()));
-  AddNumber(cmd, "--restitution", restitution, "override every tag's restitution e, in [0, 1]");
-}
-
 void AddSimulate(CLI::App* app, Commands* c) {
   c->simulate_cmd = app->add_subcommand(
       "simulate", "MuJoCo's viewer (mujoco-simulate) with the laws acting: the plugin preloaded");
@@ -228,7 +169,7 @@ void AddSimulate(CLI::App* app, Commands* c) {
             "step with the contact-aware timestep (docs/timestep.md) at this relative error in a "
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
-  c->simulate_cmd->add_flag("--settle", c->simulate.settle, kSettleHelp);
+  AddSettle(c->simulate_cmd, &c->simulate.settle);
 }
 
 void AddRender(CLI::App* app, Commands* c) {
@@ -285,11 +226,11 @@ void AddReplayOptions(CLI::App* cmd, ReplayArgs* args) {
             "with --timestep auto: the relative error accepted in a collision, in (0, 0.1]");
   cmd->add_option("--integrator", args->integrator, "euler, rk4 or implicit (default: the scene's)");
   AddOverrides(cmd, &args->law, &args->restitution);
-  AddNumber(cmd, "--dissipation", &args->dissipation, kDissipationHelp);
+  AddDissipation(cmd, &args->dissipation);
   AddFriction(cmd, &args->friction, &args->mu);
   cmd->add_option("--set", args->set, "KEY=VALUE: set a contactlaw tag key on every tag "
                   "(repeatable)");
-  cmd->add_flag("--settle", args->settle, kSettleHelp);
+  AddSettle(cmd, &args->settle);
   cmd->add_option("--jobs", args->jobs,
                   "threads, >= 1 (default: the number of cores); the results do not depend on it")
       ->type_name("INT");

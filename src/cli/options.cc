@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "laws/param_range.h"
@@ -277,6 +278,66 @@ std::vector<double> ParseRestitutionList(std::string_view option, std::string_vi
     }
   }
   return values;
+}
+
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name, std::string* value,
+                       const std::string& help) {
+  return cmd->add_option(name, *value, help)->type_name("FLOAT");
+}
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name,
+                       std::optional<std::string>* value, const std::string& help) {
+  return cmd->add_option(name, *value, help)->type_name("FLOAT");
+}
+
+void AddDissipation(CLI::App* cmd, std::optional<std::string>* dissipation) {
+  AddNumber(cmd, "--dissipation", dissipation,
+            "override every tag's dissipation c, s/m >= 0, for the laws that read it "
+            "(hunt-crossley-constant); the others ignore it");
+}
+
+void AddSettle(CLI::App* cmd, bool* settle) {
+  cmd->add_flag("--settle", *settle,
+                "before t = 0, move the bodies that start in contact into the static equilibrium "
+                "of their contacts (positions only); refused when there is none");
+}
+
+void AddFriction(CLI::App* cmd, std::optional<std::string>* friction,
+                 std::optional<std::string>* mu) {
+  cmd->add_option("--friction", *friction,
+                  fmt::format("override every tagged pair's friction model: {}", FrictionNameList()));
+  AddNumber(cmd, "--mu", mu,
+            "override every tagged pair's friction coefficient (static = kinetic), >= 0");
+}
+
+void AddOverrides(CLI::App* cmd, std::optional<std::string>* law,
+                  std::optional<std::string>* restitution) {
+  cmd->add_option("--law", *law, fmt::format("override every tag's law: {}", LawNameList()));
+  AddNumber(cmd, "--restitution", restitution, "override every tag's restitution e, in [0, 1]");
+}
+
+void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
+  cmd->add_option("scene", args->scene, "MJCF scene with contactlaw tags")->required();
+  AddNumber(cmd, "--duration", &args->duration, "simulated time, s")->capture_default_str();
+  cmd->add_option("--timestep", args->timestep,
+                  "s (default: the scene's), or auto: long steps while the tagged pairs are "
+                  "apart, steps that resolve the contact near and in it (docs/timestep.md)");
+  AddNumber(cmd, "--max-timestep", &args->max_timestep,
+            "s, with --timestep auto: an optional cap on every step (default: none)");
+  AddNumber(cmd, "--accuracy", &args->accuracy,
+            "with --timestep auto (implied): the relative error accepted in a collision's "
+            "rebound, peak force and duration, in (0, 0.1] (default 0.001)");
+  cmd->add_option("--integrator", args->integrator,
+                  "euler, rk4 or implicit (default: the scene's)");
+  AddDissipation(cmd, &args->dissipation);
+  AddFriction(cmd, &args->friction, &args->mu);
+  AddSettle(cmd, &args->settle);
+  if (sampling) {
+    AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
+        ->capture_default_str();
+    cmd->add_option("--columns", args->columns,
+                    "trajectory column groups: any of bodies,joints,pairs,friction,energy "
+                    "(default: all)");
+  }
 }
 
 }  // namespace contactlaws::cli

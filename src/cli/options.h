@@ -1,7 +1,8 @@
 // Copyright contactlaws authors.
 //
-// The command line's shared options, parsed and validated: each refusal is an
-// Error whose message names the option, the value and what it must be.
+// The command line's shared options, declared to its parser (CLI11), parsed
+// and validated: each refusal is an Error whose message names the option, the
+// value and what it must be.
 
 #ifndef CONTACTLAWS_CLI_OPTIONS_H_
 #define CONTACTLAWS_CLI_OPTIONS_H_
@@ -12,6 +13,11 @@
 #include <vector>
 
 #include "contactlaws/contactlaws.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace contactlaws::cli {
 
@@ -92,6 +98,34 @@ double ParseRestitution(std::string_view option, std::string_view text);
 // 1e-9 of a step). Values are rounded to 12 decimals, so 0.1:1.0:0.1 gives
 // exactly the doubles 0.1, 0.2, ..., 1. Each in [0, 1]; no repeats.
 std::vector<double> ParseRestitutionList(std::string_view option, std::string_view text);
+
+// The shared options declared to the command line (CLI11), each into its
+// field of the *Args above as text; a command's own are in main.cc.
+
+// A number option: taken as text, read by the one number parser (the
+// Parse* functions), shown as FLOAT in the help.
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name, std::string* value,
+                       const std::string& help);
+CLI::Option* AddNumber(CLI::App* cmd, const std::string& name,
+                       std::optional<std::string>* value, const std::string& help);
+
+// --dissipation (ParseDissipation).
+void AddDissipation(CLI::App* cmd, std::optional<std::string>* dissipation);
+
+// --settle.
+void AddSettle(CLI::App* cmd, bool* settle);
+
+// --friction and --mu (ParseFrictionOverrides).
+void AddFriction(CLI::App* cmd, std::optional<std::string>* friction,
+                 std::optional<std::string>* mu);
+
+// --law and --restitution (ParseLawOverrides).
+void AddOverrides(CLI::App* cmd, std::optional<std::string>* law,
+                  std::optional<std::string>* restitution);
+
+// CommonArgs: the scene and the options ParseCommon reads, with
+// --sample-rate and --columns when sampling.
+void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling);
 
 }  // namespace contactlaws::cli
 
