@@ -28,6 +28,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +46,8 @@ struct FitParameter {
   ModelEdit edit;
   // The value at u in [0, 1].
   double At(double u) const;
+  // The u of value, At's inverse (to rounding).
+  double Unit(double value) const;
 };
 
 // "KEY=LO:HI[:log],KEY=..." checked against scene: a key that is neither a
@@ -53,6 +56,21 @@ struct FitParameter {
 // a range a model parameter cannot take, a key given twice. Throws Error
 // "--params: KEY=...: ...". The tag keys' ranges are checked by CheckFit.
 std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjModel* m);
+
+// "KEY=VALUE,..." the start of a fit over parameters, one entry per
+// parameter (nullopt: a key not given). Refuses (Error "--initial: KEY=VALUE:
+// ...") an item not of that form, a key that is no parameter at all, a key
+// not among parameters, a value that is not a finite number, a key given
+// twice, and (CheckInitial) a value outside the key's bounds.
+std::vector<std::optional<double>> ParseFitInitial(std::string_view text,
+                                                   const std::vector<FitParameter>& parameters,
+                                                   const mjModel* m);
+
+// Refuses (Error naming the key, the value and the bounds) a start of
+// another count than parameters' (an empty start is none) or a value
+// outside its parameter's [lo, hi].
+void CheckInitial(const std::vector<FitParameter>& parameters,
+                  const std::vector<std::optional<double>>& initial);
 
 // options with the parameters at values.
 ReplayOptions WithParameters(const ReplayOptions& options,
@@ -80,6 +98,10 @@ struct FitOptions {
   std::vector<FitParameter> parameters;
   int budget = 200;    // evaluations, each a replay of every trajectory
   uint64_t seed = 1;
+  // Where the search starts: empty, every parameter at its range's middle;
+  // else one entry per parameter, in its own units within [lo, hi] (nullopt:
+  // that one at its middle). The first evaluation is this point.
+  std::vector<std::optional<double>> initial;
   // After each evaluation: its number (from 1), its mean score, the best so far.
   std::function<void(int, double, double)> on_evaluation;
 };
@@ -92,7 +114,8 @@ struct FitResult {
   double wall_seconds = 0;
 };
 
-// Minimises the mean score of replay's trajectories over the parameters.
+// Minimises the mean score of replay's trajectories over the parameters,
+// from options.initial (refused as CheckInitial does).
 FitResult Fit(const Replay& replay, const FitOptions& options);
 
 // The mean of metric over replayed trajectories (0 when empty), summed in order.

@@ -4,162 +4,16 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
 #include <nlopt.h>
 
 #include "contactlaws/error.h"
-#include "scene/number.h"
 #include "scene/tag_keys.h"
 #include "scene/tags.h"
 
 namespace contactlaws {
-
-namespace {
-
-// The model parameters: name after the dot, what it edits, whether it names
-// a body (else a geom, else nothing), and its range.
-struct ModelKey {
-  std::string_view name;
-  ModelEdit::Kind kind;
-  mjtObj object;  // mjOBJ_BODY, mjOBJ_GEOM, or mjOBJ_UNKNOWN for mujoco.*
-  double min;     // the smallest value allowed
-  bool min_open;  // min itself excluded
-  double max;
-  std::string_view range;  // for messages
-};
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr ModelKey kModelKeys[] = {
-    {"mass_scale", ModelEdit::Kind::kMassScale, mjOBJ_BODY, 0, true, kInf, "> 0"},
-    {"inertia_scale", ModelEdit::Kind::kInertiaScale, mjOBJ_BODY, 0, true, kInf, "> 0"},
-    {"offset", ModelEdit::Kind::kOffset, mjOBJ_GEOM, -kInf, false, kInf, "finite (m)"},
-    {"timeconst", ModelEdit::Kind::kMujocoTimeconst, mjOBJ_UNKNOWN, 0, true, kInf, "> 0 (s)"},
-    {"dampratio", ModelEdit::Kind::kMujocoDampratio, mjOBJ_UNKNOWN, 0, true, kInf, "> 0"},
-    {"dmin", ModelEdit::Kind::kMujocoDmin, mjOBJ_UNKNOWN, 0, true, 1, "in (0, 1)"},
-    {"dmax", ModelEdit::Kind::kMujocoDmax, mjOBJ_UNKNOWN, 0, true, 1, "in (0, 1)"},
-    {"width", ModelEdit::Kind::kMujocoWidth, mjOBJ_UNKNOWN, 0, true, kInf, "> 0 (m)"},
-    {"friction", ModelEdit::Kind::kMujocoFriction, mjOBJ_UNKNOWN, 0, false, kInf, ">= 0"},
-};
-
-bool InRange(const ModelKey& k, double v) {
-  return (k.min_open ? v > k.min : v >= k.min) && (k.max == kInf ? v < kInf : v < k.max);
-}
-
-}  // namespace
-
-double FitParameter::At(double u) const {
-  if (log) return std::exp(std::log(lo) + u * (std::log(hi) - std::log(lo)));
-  return lo + u * (hi - lo);
-}
-
-std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjModel* m) {
-  std::vector<FitParameter> parameters;
-  auto fail = [](std::string_view item, std::string_view what) -> void {
-    throw Error(fmt::format("--params: {}: {}", item, what));
-  };
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t comma = text.find(',', start);
-    const std::string_view item = text.substr(start, comma - start);
-    start = comma == std::string_view::npos ? text.size() + 1 : comma + 1;
-    const size_t eq = item.find('=');
-    if (eq == std::string_view::npos || eq == 0) {
-      fail(item, "is not of the form KEY=LO:HI or KEY=LO:HI:log");
-    }
-    FitParameter p;
-    p.key = std::string(item.substr(0, eq));
-    // LO:HI[:log]
-    std::string_view bounds = item.substr(eq + 1);
-    std::vector<std::string_view> parts;
-    for (size_t s = 0;;) {
-      const size_t colon = bounds.find(':', s);
-      parts.push_back(bounds.substr(s, colon - s));
-      if (colon == std::string_view::npos) break;
-      s = colon + 1;
-    }
-    if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[2] != "log")) {
-      fail(item, "bounds must be LO:HI or LO:HI:log");
-    }
-    const std::optional<double> lo = ParseNumber(parts[0]);
-    const std::optional<double> hi = ParseNumber(parts[1]);
-    if (!lo || !hi) fail(item, fmt::format("'{}' is not a finite number", !lo ? parts[0] : parts[1]));
-    p.lo = *lo;
-    p.hi = *hi;
-    p.log = parts.size() == 3;
-    if (!(p.lo < p.hi)) fail(item, fmt::format("the bounds are empty ({} >= {})", p.lo, p.hi));
-    if (p.log && !(p.lo > 0)) fail(item, fmt::format("a log scale needs LO > 0, not {}", p.lo));
-    for (const FitParameter& q : parameters) {
-      if (q.key == p.key) fail(item, fmt::format("key '{}' is given twice", p.key));
-    }
-
-    const size_t dot = p.key.rfind('.');
-    if (dot == std::string::npos) {
-      // a tag key
-      const TagKey* key = FindTagKey(p.key);
-      if (!key) {
-        const std::vector<std::string_view>& names = TagKeyNames();
-        const std::string_view hint = NearestWord(p.key, names.data(), names.size());
-        fail(item, fmt::format("'{}' is not a contactlaw tag key{}, nor OBJECT.KEY (mass_scale, "
-                               "inertia_scale, offset, mujoco.*)",
-                               p.key, hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint)));
-      }
-      if (key->value != TagValue::kNumber) {
-        fail(item, fmt::format("'{}' is not a numeric key (--laws and --frictions choose laws and "
-                               "friction models)",
-                               p.key));
-      }
-      parameters.push_back(std::move(p));
-      continue;
-    }
-    const std::string object = p.key.substr(0, dot);
-    const std::string_view name = std::string_view(p.key).substr(dot + 1);
-    const ModelKey* key = nullptr;
-    for (const ModelKey& k : kModelKeys) {
-      if (k.name == name && (k.object == mjOBJ_UNKNOWN) == (object == "mujoco")) key = &k;
-    }
-    if (!key) {
-      fail(item, fmt::format("'{}' is not a model parameter: BODY.mass_scale, BODY.inertia_scale, "
-                             "GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction",
-                             p.key));
-    }
-    p.tag_key = false;
-    p.edit.kind = key->kind;
-    if (key->object != mjOBJ_UNKNOWN) {
-      p.edit.id = mj_name2id(m, key->object, object.c_str());
-      if (p.edit.id < 0 || (key->object == mjOBJ_BODY && p.edit.id == 0)) {
-        fail(item, fmt::format("the scene has no {} '{}'",
-                               key->object == mjOBJ_BODY ? "moving body" : "geom", object));
-      }
-    }
-    if (!InRange(*key, p.lo) || !InRange(*key, p.hi)) {
-      fail(item, fmt::format("{} must be {}", name, key->range));
-    }
-    parameters.push_back(std::move(p));
-  }
-  if (parameters.empty()) throw Error("--params: no parameter given");
-  return parameters;
-}
-
-ReplayOptions WithParameters(const ReplayOptions& options,
-                             const std::vector<FitParameter>& parameters,
-                             const std::vector<double>& values) {
-  ReplayOptions out = options;
-  for (size_t i = 0; i < parameters.size(); ++i) {
-    const FitParameter& p = parameters[i];
-    if (p.tag_key) {
-      // 17 significant digits: the tag parser reads back the same double
-      out.simulation.overrides.keys.emplace_back(p.key, fmt::format("{:.17g}", values[i]));
-    } else {
-      ModelEdit edit = p.edit;
-      edit.value = values[i];
-      out.edits.push_back(edit);
-    }
-  }
-  return out;
-}
 
 namespace {
 
@@ -250,6 +104,9 @@ struct Objective {
   const FitOptions* options;
   nlopt_opt opt = nullptr;
   FitResult* result;
+  // the start, scaled and in units: at start_u, a parameter takes the start's
+  // value itself, which At(start_u) may miss by a rounding
+  std::vector<double> start_u, start;
   std::vector<double> values;  // scratch
 };
 
@@ -264,7 +121,10 @@ double Evaluate(unsigned n, const double* u, double* /*gradient*/, void* data) {
     return std::numeric_limits<double>::infinity();
   }
   o->values.resize(n);
-  for (unsigned i = 0; i < n; ++i) o->values[i] = options.parameters[i].At(std::clamp(u[i], 0.0, 1.0));
+  for (unsigned i = 0; i < n; ++i) {
+    o->values[i] = u[i] == o->start_u[i] ? o->start[i]
+                                         : options.parameters[i].At(std::clamp(u[i], 0.0, 1.0));
+  }
   const std::vector<ReplayedTrajectory> replayed =
       o->replay->Run(WithParameters(options.replay, options.parameters, o->values));
   for (const ReplayedTrajectory& r : replayed) {
@@ -316,8 +176,9 @@ void Minimize(nlopt_algorithm algorithm, int budget, std::vector<double>* u, Obj
 
 FitResult Fit(const Replay& replay, const FitOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  CheckInitial(options.parameters, options.initial);
   FitResult result;
-  Objective objective{&replay, &options, nullptr, &result, {}};
+  Objective objective{&replay, &options, nullptr, &result, {}, {}, {}};
   const size_t n = options.parameters.size();
   // the global search's share; the local search polishes its best point
   const int global = std::max(static_cast<int>(0.7 * options.budget), 1);
@@ -329,14 +190,17 @@ FitResult Fit(const Replay& replay, const FitOptions& options) {
     return result;
   }
   nlopt_srand(options.seed);
-  std::vector<double> u(n, 0.5);
+  // the start: CRS2 evaluates it first
+  for (size_t i = 0; i < n; ++i) {
+    const FitParameter& p = options.parameters[i];
+    const bool given = !options.initial.empty() && options.initial[i];
+    objective.start_u.push_back(given ? std::clamp(p.Unit(*options.initial[i]), 0.0, 1.0) : 0.5);
+    objective.start.push_back(given ? *options.initial[i] : p.At(0.5));
+  }
+  std::vector<double> u = objective.start_u;
   Minimize(NLOPT_GN_CRS2_LM, global, &u, &objective);
   if (!result.interrupted && result.evaluations < options.budget && !result.values.empty()) {
-    for (size_t i = 0; i < n; ++i) {
-      const FitParameter& p = options.parameters[i];
-      u[i] = p.log ? std::log(result.values[i] / p.lo) / std::log(p.hi / p.lo)
-                   : (result.values[i] - p.lo) / (p.hi - p.lo);
-    }
+    for (size_t i = 0; i < n; ++i) u[i] = options.parameters[i].Unit(result.values[i]);
     // BOBYQA needs two parameters at least; COBYLA does with one
     Minimize(n >= 2 ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA, options.budget - result.evaluations, &u,
              &objective);

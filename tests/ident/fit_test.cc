@@ -3,6 +3,8 @@
 #include "contactlaws/fit.h"
 
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -17,15 +19,20 @@ using testing::CubeScene;
 using testing::Simulated;
 using testing::TossStarts;
 
-std::string Refusal(const std::string& params) {
-  const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3");
+// The message of the Error that check throws, or "accepted".
+std::string Refused(const std::function<void()>& check) {
   try {
-    const std::vector<FitParameter> p = ParseFitParameters(params, scene.model());
-    CheckFit(scene, ReplayOptions(), p);
+    check();
   } catch (const Error& e) {
     return e.what();
   }
   return "accepted";
+}
+
+std::string Refusal(const std::string& params) {
+  const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3");
+  return Refused(
+      [&] { CheckFit(scene, ReplayOptions(), ParseFitParameters(params, scene.model())); });
 }
 
 TEST(FitTest, RefusesParametersNamingTheKey) {
@@ -105,13 +112,18 @@ TEST(FitTest, ModelEditsMoveTheBoardAndWeighTheCube) {
               0.0524 - depth * std::pow(2.0, 1 / 1.5), 1e-7);
 }
 
-// Tosses simulated with a known tag, their positions and orientations
-// blurred as a camera tracker's, fitted back.
-TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
-  const Scene truth = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.35");
+// The recovery tests' truth, and their rollouts' options.
+constexpr char kTruth[] = "law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.35";
+ReplayOptions TossOptions() {
   ReplayOptions options;
   options.simulation.timestep = 6.756756756756757e-4;  // the published 10 steps per sample
-  MeasuredData data = Simulated(truth, TossStarts(12, 7), options);
+  return options;
+}
+
+// 12 tosses simulated with kTruth, their positions and orientations blurred
+// as a camera tracker's.
+MeasuredData NoisyTosses() {
+  const MeasuredData data = Simulated(CubeScene(kTruth), TossStarts(12, 7), TossOptions());
   // 1 mm of position and 0.01 rad of orientation noise: the order of the
   // tracking's (the tosses rest ~2 mm from the board's plane); no velocity
   // columns, the refit takes them from the positions
@@ -133,7 +145,13 @@ TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
     }
     noisy.trajectories.push_back(std::move(n));
   }
+  return noisy;
+}
 
+// Tosses simulated with a known tag, blurred, fitted back.
+TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
+  const MeasuredData noisy = NoisyTosses();
+  const ReplayOptions options = TossOptions();
   const Scene scene = CubeScene("law=flores restitution=0.7 stiffness=1e6 friction=coulomb mu=0.8");
   const Replay replay(scene, noisy);
   FitOptions fit;
@@ -168,6 +186,100 @@ TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
   fit.budget = 15;
   const FitResult a = Fit(replay, fit);
   fit.replay.jobs = 3;
+  const FitResult b = Fit(replay, fit);
+  EXPECT_EQ(a.values, b.values);
+  EXPECT_EQ(a.score, b.score);
+}
+
+// The start of a fit refused in one line naming the key, value and bounds.
+TEST(FitTest, RefusesAStartNamingTheKey) {
+  const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3");
+  const std::vector<FitParameter> p = ParseFitParameters(
+      "restitution=0.1:0.9,stiffness=1e4:1e7:log,board.offset=-0.004:0.001", scene.model());
+  const std::vector<std::optional<double>> accepted =
+      ParseFitInitial("board.offset=-0.002,restitution=0.5", p, scene.model());
+  EXPECT_EQ(accepted, (std::vector<std::optional<double>>{0.5, std::nullopt, -0.002}));
+  auto refusal = [&](const std::string& text) {
+    return Refused([&] { ParseFitInitial(text, p, scene.model()); });
+  };
+  EXPECT_EQ(refusal("restitutoin=0.5"),
+            "--initial: restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did you mean "
+            "'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
+  EXPECT_EQ(refusal("ball.mass_scale=1"),
+            "--initial: ball.mass_scale=1: the scene has no moving body 'ball'");
+  EXPECT_EQ(refusal("mu=0.3"),
+            "--initial: mu=0.3: 'mu' is not one of --params (restitution, stiffness, "
+            "board.offset)");
+  EXPECT_EQ(refusal("restitution=0.95"),
+            "--initial: restitution=0.95: outside its bounds [0.1, 0.9]");
+  EXPECT_EQ(refusal("stiffness=1e3"),
+            "--initial: stiffness=1000: outside its bounds [10000, 10000000]");
+  EXPECT_EQ(refusal("restitution=x"), "--initial: restitution=x: 'x' is not a finite number");
+  EXPECT_EQ(refusal("restitution=nan"), "--initial: restitution=nan: 'nan' is not a finite number");
+  EXPECT_EQ(refusal("restitution=0.5,restitution=0.6"),
+            "--initial: restitution=0.6: key 'restitution' is given twice");
+  EXPECT_EQ(refusal("restitution"), "--initial: restitution: is not of the form KEY=VALUE");
+  // the library's own check, for a start not parsed from text
+  EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5}); }),
+            "--initial: 1 values given for 3 parameters (restitution, stiffness, board.offset)");
+  EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5, std::nullopt, 0.002}); }),
+            "--initial: board.offset=0.002: outside its bounds [-0.004, 0.001]");
+  EXPECT_EQ(Refused([&] { CheckInitial(p, {}); }), "accepted");  // no start: the middle
+}
+
+// The first evaluation is the start, at the values given to the bit: with a
+// budget of one, the fit's point and score are the start's.
+TEST(FitTest, ABudgetOfOneEvaluatesTheStart) {
+  const Scene scene = CubeScene("law=flores restitution=0.7 stiffness=1e6 friction=coulomb mu=0.8");
+  const MeasuredData data = Simulated(CubeScene(kTruth), TossStarts(3, 5), TossOptions());
+  const Replay replay(scene, data);
+  FitOptions fit;
+  fit.replay = TossOptions();
+  fit.parameters =
+      ParseFitParameters("restitution=0.05:0.9,stiffness=3e4:3e6:log,mu=0.05:1", scene.model());
+  fit.budget = 1;
+  // values that At(Unit(value)) misses by a rounding (0.3 and 3e5 here)
+  fit.initial = {0.3, 3e5, std::nullopt};
+  const FitResult result = Fit(replay, fit);
+  ASSERT_EQ(result.evaluations, 1);
+  // mu, not given, at its range's middle
+  const std::vector<double> start = {0.3, 3e5, fit.parameters[2].At(0.5)};
+  EXPECT_EQ(result.values, start);
+  EXPECT_EQ(result.score,
+            MeanScore(replay.Run(WithParameters(fit.replay, fit.parameters, start)), Metric::kEq));
+  // a log range's middle is the geometric mean of its bounds
+  EXPECT_NEAR(fit.parameters[1].At(0.5), 3e5, 3e5 * 1e-14);  // exp(log) rounds
+  fit.initial = {0.3, 3e6 * 1.01, std::nullopt};
+  EXPECT_THROW(Fit(replay, fit), Error);
+}
+
+// Started at the truth of the noisy tosses, a small budget ends no worse
+// than the truth scores (the first evaluation is the truth), and the same
+// seed gives the same bits.
+TEST(FitTest, AStartAtTheTruthEndsNoWorseThanIt) {
+  const MeasuredData noisy = NoisyTosses();
+  const Scene scene = CubeScene("law=flores restitution=0.7 stiffness=1e6 friction=coulomb mu=0.8");
+  const Replay replay(scene, noisy);
+  FitOptions fit;
+  fit.replay = TossOptions();
+  fit.replay.start = StartRule::kRefit;
+  fit.replay.jobs = 2;
+  fit.parameters =
+      ParseFitParameters("restitution=0.05:0.9,stiffness=3e4:3e6:log,mu=0.05:1", scene.model());
+  fit.budget = 12;
+  fit.seed = 3;
+  fit.initial = {0.3, 3e5, 0.35};
+  double first = -1;
+  fit.on_evaluation = [&](int n, double score, double) {
+    if (n == 1) first = score;
+  };
+  const FitResult a = Fit(replay, fit);
+  const double at_truth = MeanScore(
+      replay.Run(WithParameters(fit.replay, fit.parameters, {0.3, 3e5, 0.35})), Metric::kEq);
+  EXPECT_EQ(first, at_truth);
+  EXPECT_LE(a.score, at_truth);
+  EXPECT_EQ(a.evaluations, 12);
+  fit.replay.jobs = 1;
   const FitResult b = Fit(replay, fit);
   EXPECT_EQ(a.values, b.values);
   EXPECT_EQ(a.score, b.score);
