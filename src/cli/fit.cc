@@ -107,6 +107,9 @@ int FitCommand(const FitArgs& args) {
   Metric metric = Metric::kEq;
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
   const std::vector<FitParameter> parameters = ParseFitParameters(args.params, scene.model());
+  const std::vector<std::optional<double>> initial =
+      args.initial ? ParseFitInitial(*args.initial, parameters, scene.model())
+                   : std::vector<std::optional<double>>();
   const std::optional<long> budget = ParseWholeNumber(args.budget, 1, 1000000);
   if (!budget) Refuse("--budget", args.budget, "must be a whole number in [1, 1000000]");
   const std::optional<long> seed = ParseWholeNumber(args.seed, 0, 4294967295L);
@@ -163,6 +166,10 @@ int FitCommand(const FitArgs& args) {
     options.replay = combos[c];
     options.metric = metric;
     options.parameters = f.parameters;
+    // the start of the parameters this combination fits
+    for (size_t k = 0; k < f.place.size() && !initial.empty(); ++k) {
+      options.initial.push_back(initial[f.place[k]]);
+    }
     options.budget = static_cast<int>(*budget);
     options.seed = static_cast<uint64_t>(*seed);
     if (!args.quiet && WritesOutputs()) {  // rank 0 of a job reports alone

@@ -37,6 +37,7 @@ struct ReplayArgs : CommonArgs {
 
 struct FitArgs : ReplayArgs {
   std::string params;
+  std::optional<std::string> initial;    // KEY=VALUE,...: where the search starts
   std::optional<std::string> laws;       // L1,L2,... or all
   std::optional<std::string> frictions;  // M1,M2,... or all
   std::optional<std::string> validate;   // trajectories not fitted on

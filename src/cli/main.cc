@@ -254,6 +254,10 @@ void AddFit(CLI::App* app, Commands* c) {
                          "KEY=LO:HI[:log],...: tag keys, BODY.mass_scale, BODY.inertia_scale, "
                          "GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction")
       ->required();
+  c->fit_cmd->add_option("--initial", f.initial,
+                         "KEY=VALUE,...: where the search starts, keys of --params (the others at "
+                         "the middle of their range, sqrt(LO HI) for :log); every --laws/--frictions "
+                         "combination starts there");
   c->fit_cmd->add_option("--laws", f.laws, fmt::format("L1,L2,... or all ({})", LawNameList()));
   c->fit_cmd->add_option("--frictions", f.frictions,
                          fmt::format("M1,M2,... or all ({})", FrictionNameList()));

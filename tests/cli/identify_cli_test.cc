@@ -113,6 +113,23 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
            ": contactlaw:cube-board: restitution=2 must be in [0, 1]"},
       {fmt::format("fit {} --data {} --params mu=0.5:0.5 --output {}", scene, data, dir),
        "contactlaws: --params: mu=0.5:0.5: the bounds are empty (0.5 >= 0.5)"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=0.3,restitutoin=0.5 "
+                   "--output {}",
+                   scene, data, dir),
+       "contactlaws: --initial: restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did "
+       "you mean 'restitution'?)"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial restitution=0.5 --output {}",
+                   scene, data, dir),
+       "contactlaws: --initial: restitution=0.5: 'restitution' is not one of --params (mu)"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=0.6 --output {}", scene,
+                   data, dir),
+       "contactlaws: --initial: mu=0.6: outside its bounds [0.1, 0.5]"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=low --output {}", scene,
+                   data, dir),
+       "contactlaws: --initial: mu=low: 'low' is not a finite number"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=0.2,mu=0.3 --output {}",
+                   scene, data, dir),
+       "contactlaws: --initial: mu=0.3: key 'mu' is given twice"},
   };
   for (const auto& [arguments, message] : cases) {
     const Result r = RunCli(arguments);
@@ -154,6 +171,29 @@ TEST(IdentifyCliTest, AFitWritesItsRankingAndTheTagToPaste) {
             0u)
       << tag;
   EXPECT_EQ(Lines(ReadFile(dir + "/errors.csv")).size(), 1u + 2 * 2 * 2);
+}
+
+// With a budget of one, every combination's one evaluation is the start:
+// its values are the ranking's, the same for each law that reads them.
+TEST(IdentifyCliTest, AFitStartsWhereItIsTold) {
+  const std::string truth = CubeScene("fit_initial_truth", kTag);
+  const std::string data = MeasuredFromRun(truth, "fit_initial_data");
+  const std::string dir = ::testing::TempDir() + "/fit_initial_out";
+  const Result r = RunCli(fmt::format("fit {} --data {} --timestep 5e-4 --params "
+                                      "restitution=0.1:0.9,mu=0.1:0.9 --initial mu=0.25,"
+                                      "restitution=0.35 --budget 1 --laws flores,hertz --quiet "
+                                      "--output {}",
+                                      truth, data, dir));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> ranking = Lines(ReadFile(dir + "/ranking.csv"));
+  ASSERT_EQ(ranking.size(), 3u);
+  // law,friction,restitution,mu,train_mean,...,evaluations,...
+  for (size_t i = 1; i < ranking.size(); ++i) {
+    const std::vector<std::string> row = Split(ranking[i], ',');
+    EXPECT_EQ(row[2], row[0] == "hertz" ? "" : "0.35") << ranking[i];
+    EXPECT_EQ(row[3], "0.25") << ranking[i];
+    EXPECT_EQ(row[row.size() - 3], "1") << ranking[i];
+  }
 }
 
 TEST(IdentifyCliTest, CtrlCEndsAFitWithTheBestSoFarWritten) {
