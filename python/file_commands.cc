@@ -183,6 +183,7 @@ py::tuple Fit(const std::string& scene, const py::dict& kwargs, const std::strin
   cli::FitArgs args;
   TakeReplay(scene, kwargs, &args);
   Take(kwargs, "params", &args.params);
+  Take(kwargs, "initial", &args.initial);
   Take(kwargs, "laws", &args.laws);
   Take(kwargs, "frictions", &args.frictions);
   Take(kwargs, "validate", &args.validate);

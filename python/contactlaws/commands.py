@@ -25,6 +25,16 @@ def _text_list(value):
     return value
 
 
+def _assignments(value):
+    """A mapping {KEY: VALUE} as the command line's KEY=VALUE,... text,
+    each number in its shortest exact form (the same double read back); text
+    or a list of KEY=VALUE as _text_list."""
+    if isinstance(value, dict):
+        return ",".join(f"{key}={v if isinstance(v, str) else repr(float(v))}"
+                        for key, v in value.items())
+    return _text_list(value)
+
+
 def _read(path):
     """A CSV the command wrote, its numbers the very doubles it computed
     (they are written in their shortest exact form)."""
@@ -166,8 +176,8 @@ class FitResult:
         self.report = report
 
 
-def fit(scene, data, params, *, laws=None, frictions=None, validate=None, budget=200, seed=1,
-        start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
+def fit(scene, data, params, *, initial=None, laws=None, frictions=None, validate=None,
+        budget=200, seed=1, start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
         weights=None, length=None, timestep=None, max_timestep=None, accuracy=None,
         integrator=None, law=None, restitution=None, dissipation=None, friction=None, mu=None,
         set=None, jobs=None):
@@ -178,13 +188,17 @@ def fit(scene, data, params, *, laws=None, frictions=None, validate=None, budget
     BODY.mass_scale, GEOM.offset m, mujoco.*). laws, frictions: the
     combinations to fit ("all", names, or lists). validate: trajectories not
     fitted on. budget: evaluations per combination; seed: the search's seed.
+    initial: where the search starts, {KEY: VALUE} (or "KEY=VALUE,...") of
+    params' keys in their units, the others at their range's middle; every
+    combination starts there, and its first evaluation is that point.
     The other options as replay's. Returns a FitResult. Ctrl-C stops the
     search after its current evaluation and raises KeyboardInterrupt.
     """
     options = _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric,
                               weights, length, timestep, max_timestep, accuracy, integrator,
                               law, restitution, dissipation, friction, mu, set, jobs)
-    options.update(params=_text_list(params), laws=_text_list(laws),
+    options.update(params=_text_list(params), initial=_assignments(initial),
+                   laws=_text_list(laws),
                    frictions=_text_list(frictions),
                    validate=None if validate is None else str(validate), budget=budget,
                    seed=seed)

@@ -1,7 +1,7 @@
 # Type stubs of contactlaws.commands: compare, restitution, replay, fit, laws
 # and check. Units: s, m, m/s, N, J, s/m.
 from os import PathLike
-from typing import List, Literal, Optional, Sequence, Union
+from typing import List, Literal, Mapping, Optional, Sequence, Union
 
 import pandas as pd
 
@@ -60,7 +60,8 @@ def replay(scene: Scene, data: Scene, *, start: Literal["first", "refit"] = ...,
            friction: Optional[str] = ..., mu: Optional[Number] = ...,
            set: Optional[Names] = ..., jobs: Optional[int] = ...) -> ReplayResult: ...
 
-def fit(scene: Scene, data: Scene, params: Names, *, laws: Optional[Names] = ...,
+def fit(scene: Scene, data: Scene, params: Names, *,
+        initial: Union[Mapping[str, Number], Names, None] = ..., laws: Optional[Names] = ...,
         frictions: Optional[Names] = ..., validate: Optional[Scene] = ..., budget: int = ...,
         seed: int = ..., start: Literal["first", "refit"] = ...,
         refit_height: Optional[Number] = ..., refit_lead: int = ...,

@@ -106,6 +106,29 @@ def test_fit_gives_the_command_lines_files(tmp_path, measured):
     assert result.best_tag == (tmp_path / "best_tag.txt").read_text()
 
 
+def test_fit_starts_where_it_is_told(tmp_path, measured):
+    # a budget of one: the one evaluation is the start, 0.45 exactly
+    flags = ["--params=restitution=0.3:0.9", "--law=flores", "--timestep=1e-4", "--budget=1"]
+    cli("fit", BALL, "--data", str(measured), *flags, "--initial=restitution=0.45", "--quiet",
+        "--output", str(tmp_path))
+    result = contactlaws.fit(BALL, measured, "restitution=0.3:0.9", initial={"restitution": 0.45},
+                             law="flores", timestep=1e-4, budget=1)
+    frame = result.ranking.drop(columns="wall_seconds")
+    expected = read(tmp_path / "ranking.csv").drop(columns="wall_seconds")
+    pd.testing.assert_frame_equal(frame, expected, check_exact=True)
+    assert list(frame["restitution"]) == [0.45]
+    assert list(frame["evaluations"]) == [1]
+    # outside its bounds: the command line's message
+    refused = cli("fit", BALL, "--data", str(measured), *flags, "--initial=restitution=0.95",
+                  check=False)
+    assert refused.returncode == 2
+    with pytest.raises(contactlaws.Error) as error:
+        contactlaws.fit(BALL, measured, "restitution=0.3:0.9", initial={"restitution": 0.95},
+                        law="flores", timestep=1e-4, budget=1)
+    assert refused.stderr == f"contactlaws: {error.value}\n"
+    assert str(error.value) == "--initial: restitution=0.95: outside its bounds [0.3, 0.9]"
+
+
 def test_laws_gives_the_command_lines_tables():
     printed = cli("laws").stdout
     tables = contactlaws.laws()
