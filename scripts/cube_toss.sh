@@ -4,7 +4,8 @@
 # set (200-299) that no fit and no choice sees, and fitted with `contactlaws fit`:
 #   A. every law of the table with every friction model (65 fits), BUDGET evaluations each;
 #   B. the REFINE combinations that A ranks best by their training score, fitted again with
-#      REFINE_BUDGET evaluations;
+#      REFINE_BUDGET evaluations, each from its stage-A fit's best values (--initial): its first
+#      evaluation is A's point, so B cannot end worse than A;
 #   C. MuJoCo's own contact (mjcf/cube_toss_mujoco.xml: solref and friction), the peer, with
 #      REFINE_BUDGET evaluations (the most any of ours gets).
 # Each fit identifies the restitution, stiffness, friction coefficient and the board's offset
@@ -48,6 +49,7 @@ scripts/cube_tosses_to_csv.py data/cube_tosses/train.csv.gz "$out/validate.csv" 
 common=(--data "$out/train.csv" --validate "$out/validate.csv" --start refit --timestep "$step"
         --seed "$seed" --quiet)
 shared="stiffness=1e4:3e6:log,mu=0.05:1,board.offset=-0.005:0.001"
+mujoco_params="mujoco.timeconst=0.002:0.1:log,mujoco.dampratio=0.05:2:log,mujoco.friction=0.05:1,board.offset=-0.005:0.001"
 
 # The parameters a law reads: the shared ones, and restitution or dissipation where its row of
 # `contactlaws laws` names them.
@@ -62,11 +64,14 @@ law_params() {
     }'
 }
 
-# fit NAME SCENE FIT_OPTIONS...: one fit into $out/NAME, what it prints into $out/NAME.log
+# fit NAME SCENE FIT_OPTIONS...: one fit into $out/NAME; its command line, then what it prints,
+# into $out/NAME.log
 fit() {
   local name="$1" scene="$2"
   shift 2
-  "$cl" fit "$scene" "${common[@]}" --jobs "$jobs" "$@" --output "$out/$name" >"$out/$name.log" 2>&1 ||
+  local args=(fit "$scene" "${common[@]}" --jobs "$jobs" "$@" --output "$out/$name")
+  echo "$cl ${args[*]}" >"$out/$name.log"
+  "$cl" "${args[@]}" >>"$out/$name.log" 2>&1 ||
     { echo "cube_toss: fit $name failed:"; cat "$out/$name.log"; return 1; }
 }
 
@@ -89,6 +94,27 @@ best_combinations() {
            $c ~ /^[0-9.eE+-]+$/ {print $c, $1, $2}' "$out"/law-*/ranking.csv | sort -g | head -n "$refine" | cut -d" " -f2-
 }
 
+# "LAW FRICTION TRAIN_MEAN" of the row of ranking.csv $1 whose friction is $2 (the first row
+# when $2 is empty).
+train_mean() {
+  awk -F, -v friction="$2" '
+    FNR == 1 {for (i = 1; i <= NF; ++i) if ($i == "train_mean") c = i; next}
+    friction == "" || $2 == friction {print $1, $2, $c; exit}' "$1"
+}
+
+# "KEY=VALUE,..." of the values stage A fitted for law $1 with friction $2: its row of
+# $out/law-$1/ranking.csv (law,friction, the --params keys, train_mean,...), the keys the law
+# reads (the others' fields are empty).
+stage_a_values() {
+  awk -F, -v friction="$2" '
+    FNR == 1 {for (i = 1; i <= NF; ++i) {key[i] = $i; if ($i == "train_mean") last = i - 1}; next}
+    $2 == friction {
+      s = ""
+      for (i = 3; i <= last; ++i) if ($i != "") s = s (s == "" ? "" : ",") key[i] "=" $i
+      print s; exit
+    }' "$out/law-$1/ranking.csv"
+}
+
 start=$(date +%s)
 laws=$("$cl" laws --format csv | awk -F, 'NR > 1 && !seen[$1]++ {print $1}')
 echo "cube_toss: A. every law with friction ${frictions} (budget ${budget})"
@@ -99,11 +125,18 @@ done | fit_all
 echo "cube_toss: B. the ${refine} best of A again; C. MuJoCo's own contact (budget ${refine_budget})"
 {
   best_combinations | while read -r law friction; do
-    echo "refine-$law-$friction mjcf/cube_toss.xml --budget $refine_budget --laws $law --frictions $friction --params $(law_params "$law")"
+    echo "refine-$law-$friction mjcf/cube_toss.xml --budget $refine_budget --laws $law --frictions $friction --params $(law_params "$law") --initial $(stage_a_values "$law" "$friction")"
   done
-  echo "mujoco mjcf/cube_toss_mujoco.xml --budget $refine_budget --params mujoco.timeconst=0.002:0.1:log,mujoco.dampratio=0.05:2:log,mujoco.friction=0.05:1,board.offset=-0.005:0.001"
+  echo "mujoco mjcf/cube_toss_mujoco.xml --budget $refine_budget --params $mujoco_params"
 } | fit_all
 
+# each refit beside the stage-A fit it started from (its first evaluation): never worse
+for ranking in "$out"/refine-*/ranking.csv; do
+  read -r law friction refined < <(train_mean "$ranking" "")
+  read -r _ _ screened < <(train_mean "$out/law-$law/ranking.csv" "$friction")
+  echo "cube_toss: B. $law/$friction from stage A's point, train mean $screened, to $refined"
+done
+
 echo "cube_toss: $(($(date +%s) - start)) s of fitting (budgets ${budget} and ${refine_budget}, ${parallel} fits x ${jobs} threads)"
-CUBE_TOSS_PARAMS="${shared},restitution=0.01:0.95,dissipation=0.01:10:log" \
+CUBE_TOSS_PARAMS="${shared},restitution=0.01:0.95,dissipation=0.01:10:log,${mujoco_params}" \
   /usr/bin/python3 scripts/cube_toss_report.py "$out" docs

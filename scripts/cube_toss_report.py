@@ -201,7 +201,8 @@ def main():
         "## Every fit",
         "",
         "Stage A fits every law with every friction model, stage B fits the combinations that A "
-        "ranks best by their training score again with a larger budget, stage C fits MuJoCo's "
+        "ranks best by their training score again with a larger budget, each starting from its "
+        "stage-A fit's values (`--initial`: B cannot end worse than A), stage C fits MuJoCo's "
         "own contact (solref's time constant and damping ratio, friction) through the same "
         "`contactlaws fit` with that larger budget. Rows are sorted by training mean. A '-' is "
         "a key the law or model does not read.",
