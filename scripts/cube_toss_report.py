@@ -22,6 +22,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 PUBLISHED = [("Drake", 0.270), ("Bullet", 0.272), ("MuJoCo", 0.371)]
 GOAL_MEDIAN = 0.045
 CUBE_MASS, GRAVITY, HALF_SIDE = 0.37, 9.81, 0.0524
+# a fitted value this close to a bound, as a share of its range (of log(hi/lo) on a log scale),
+# may be held there by the bound rather than found: a wider range tells which
+EDGE = 0.02
 
 
 def read_csv(path):
@@ -88,15 +91,16 @@ def meaning(row):
 
 
 def at_bounds(row, bounds):
-    """The fitted values within 1% of their range from a bound: the search range was too narrow."""
+    """The fitted values within EDGE of their range from a bound: the search range was too
+    narrow."""
     out = []
     for key, (lo, hi, log) in bounds.items():
         v = value(row, key)
         if v is None:
             continue
         a, b, x = (math.log(lo), math.log(hi), math.log(v)) if log else (lo, hi, v)
-        if min(x - a, b - x) < 0.01 * (b - a):
-            out.append(f"{key} = {v:.4g} (range {lo:g}:{hi:g})")
+        if min(x - a, b - x) <= EDGE * (b - a):
+            out.append(f"{key} = {v:.4g} (range {lo:g}:{hi:g}{':log' if log else ''})")
     return out
 
 
@@ -216,13 +220,16 @@ def main():
                      f" | {fmt(value(row, 'train_mean'))} | {fmt(value(row, 'train_median'))}"
                      f" | {fmt(value(row, 'validate_mean'))} | {fmt(value(row, 'validate_median'))}"
                      f" | {fmt(value(row, 'validate_p90'))} | {row['evaluations']} |")
+    params = os.environ.get("CUBE_TOSS_PARAMS")
+    bounds = parse_bounds(params) if params else {}
+    edges = [f"{label(row)} ({stage}): {', '.join(edge)}" for stage, row, _ in table
+             for edge in [at_bounds(row, bounds)] if edge]
+    if edges:
+        lines += ["", f"At its bound (within {EDGE:.0%} of its range, of log(hi/lo) for a log "
+                  "range): the range should widen, a value outside it may score better."]
+        lines += [f"- {e}" for e in edges]
     lines += ["", "## What the fitted values mean", ""]
     lines += [f"- {m}." for m in meaning(w)]
-    bounds = parse_bounds(os.environ.get("CUBE_TOSS_PARAMS", ""))if os.environ.get("CUBE_TOSS_PARAMS") else {}
-    edge = at_bounds(w, bounds)
-    if edge:
-        lines += ["", "At a bound of its range (the search stopped there; a wider range may "
-                  "score better): " + ", ".join(edge) + "."]
     budgets = sorted({int(row["evaluations"]) for _, row, _ in rows})
     lines += ["", f"Evaluations per fit: {', '.join(map(str, budgets))} (`BUDGET`, `REFINE_BUDGET`). "
               "With four parameters, stage A is a screening: the seeded search's first population "
