@@ -104,6 +104,18 @@ def at_bounds(row, bounds):
     return out
 
 
+def rest_height(measured, simulated):
+    """Simulated minus measured cube.z at each toss's last sample (the cube at rest), m: the
+    median over the tosses both hold, and how many; None when none."""
+    gaps = sorted(float(simulated[t][-1]["cube.z"]) - float(measured[t][-1]["cube.z"])
+                  for t in simulated if t in measured)
+    if not gaps:
+        return None
+    middle = len(gaps) // 2
+    median = gaps[middle] if len(gaps) % 2 else (gaps[middle - 1] + gaps[middle]) / 2
+    return median, len(gaps)
+
+
 def parse_bounds(text):
     bounds = {}
     for item in text.split(","):
@@ -230,6 +242,15 @@ def main():
         lines += [f"- {e}" for e in edges]
     lines += ["", "## What the fitted values mean", ""]
     lines += [f"- {m}." for m in meaning(w)]
+    rest = rest_height(measured, simulated)
+    if rest:
+        gap, tosses = rest
+        lines.append(
+            f"- At rest the winner's cube sits {abs(gap) * 1e3:.2f} mm "
+            f"{'below' if gap < 0 else 'above'} the tracked cube (cube.z at the last sample, "
+            f"median over {tosses} held-out tosses). e_q weighs a position error as |dp|^2 / L: "
+            f"that gap costs {gap * gap / HALF_SIDE:.2g}, a 0.1 rad turn 0.01. The score hardly "
+            f"sees the board's height, so the fitted offset is not a measurement of the board.")
     budgets = sorted({int(row["evaluations"]) for _, row, _ in rows})
     lines += ["", f"Evaluations per fit: {', '.join(map(str, budgets))} (`BUDGET`, `REFINE_BUDGET`). "
               "With four parameters, stage A is a screening: the seeded search's first population "

@@ -1,4 +1,4 @@
-"""scripts/cube_toss_report.py's flag of fitted values at a bound of their search range."""
+"""scripts/cube_toss_report.py's flag of fitted values at a bound of their search range, and\nits resting height of the winner against the data."""
 import importlib.util
 import os
 
@@ -44,3 +44,18 @@ def test_the_note_names_the_key_its_value_and_range():
     # a key the row does not have (a law that does not read it) is not flagged
     assert report.at_bounds(row(stiffness=1e4), BOUNDS) == [
         "stiffness = 1e+04 (range 10000:3e+06:log)"]
+
+
+def samples(*z):
+    return [{"cube.z": str(v)} for v in z]
+
+
+def test_the_rest_height_is_the_median_gap_of_the_last_samples():
+    measured = {"1": samples(0.2, 0.0512), "2": samples(0.3, 0.0510), "3": samples(0.1, 0.0520)}
+    # the last samples 9, 8 and 7 mm low; toss 4 is not measured and counts for nothing
+    simulated = {"1": samples(0.2, 0.0422), "2": samples(0.0430), "3": samples(0.0450),
+                 "4": samples(0.0)}
+    gap, tosses = report.rest_height(measured, simulated)
+    assert tosses == 3
+    assert gap == pytest.approx(-0.008, abs=1e-12)
+    assert report.rest_height(measured, {"9": samples(0.0)}) is None
