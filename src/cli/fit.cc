@@ -173,8 +173,10 @@ int FitCommand(const FitArgs& args) {
     options.budget = static_cast<int>(*budget);
     options.seed = static_cast<uint64_t>(*seed);
     if (!args.quiet && WritesOutputs()) {  // rank 0 of a job reports alone
+      // the first evaluation (the start: --initial's values, or the middle of each range),
+      // then every 10th, and the last
       options.on_evaluation = [&](int n, double score, double best) {
-        if (n % 10 == 0 || n == options.budget) {
+        if (n == 1 || n % 10 == 0 || n == options.budget) {
           fmt::print(stderr, "fit {}: evaluation {}/{}: {:.4g} (best {:.4g})\n", f.label, n,
                      options.budget, score, best);
         }

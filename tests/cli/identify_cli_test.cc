@@ -207,7 +207,7 @@ TEST(IdentifyCliTest, CtrlCEndsAFitWithTheBestSoFarWritten) {
                               "--output", dir},
                              log);
   ASSERT_GE(pid, 0);
-  // progress every 10 evaluations: Ctrl-C once the 10th is done
+  // progress at the first evaluation and every 10th: Ctrl-C once the 10th is done
   bool evaluated = false;
   for (int i = 0; i < 1200 && !evaluated; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -222,6 +222,8 @@ TEST(IdentifyCliTest, CtrlCEndsAFitWithTheBestSoFarWritten) {
   EXPECT_NE(ReadFile(log).find("interrupted: the best result so far is written"),
             std::string::npos)
       << ReadFile(log);
+  // the start's score is shown: the first line of progress is the first evaluation's
+  EXPECT_NE(ReadFile(log).find(": evaluation 1/100000: "), std::string::npos) << ReadFile(log);
   const std::vector<std::string> ranking = Lines(ReadFile(dir + "/ranking.csv"));
   ASSERT_EQ(ranking.size(), 2u);
   EXPECT_EQ(ranking[1].substr(ranking[1].rfind(',') + 1), "interrupted");
