@@ -59,3 +59,8 @@ def test_the_rest_height_is_the_median_gap_of_the_last_samples():
     assert tosses == 3
     assert gap == pytest.approx(-0.008, abs=1e-12)
     assert report.rest_height(measured, {"9": samples(0.0)}) is None
+
+
+def test_published_scores_within_two_percent_share_a_label():
+    assert report.published_labels(report.PUBLISHED) == [
+        (0.270, "Drake 0.27, Bullet 0.272"), (0.371, "MuJoCo 0.371")]
