@@ -129,6 +129,13 @@ class ContactData {
   // calls it when the time has gone back (mj_resetData).
   void Reset();
 
+  // After Reset: opens an episode for each of points at the data's time, as
+  // a step's commit of that state would, with its friction_state as its
+  // committed friction (a settled start's contacts carrying their load:
+  // Simulation with SimulationOptions::settle). Each point is taken as a
+  // contact there at the start (PointEvaluation::at_start).
+  void StartWith(const std::vector<PointEvaluation>& points);
+
   // From now on, steps (and mj_forward with model_view()) keep up to date
   // only the state, what MuJoCo computes from it for the dynamics, and the
   // contacts' memory: MuJoCo's cameras and lights are not placed

@@ -184,6 +184,8 @@ class Simulation {
   std::vector<int> recorded_joints_;  // hinge and slide joints
   std::optional<SettleReport> settled_;
   std::vector<mjtNum> settled_qpos_;  // the initial positions after settle
+  // their contacts with the friction they carry at the start (settle_friction.h)
+  std::vector<PointEvaluation> settled_contacts_;
 };
 
 // An MJCF scene, parsed once; its simulations share its model, which nothing

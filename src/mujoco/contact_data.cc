@@ -69,6 +69,10 @@ void ContactData::Reset() {
   step_start_->Forget();
 }
 
+void ContactData::StartWith(const std::vector<PointEvaluation>& points) {
+  committer_->StartWith(d_->time, points);
+}
+
 void ContactData::KeepMotionOnly() {
   view_.ncam = 0;
   view_.nlight = 0;

@@ -48,6 +48,16 @@ void StepCommitter::Reset() {
   divergence_.reset();
 }
 
+void StepCommitter::StartWith(double t, const std::vector<PointEvaluation>& points) {
+  std::vector<PointEvaluation> touches(points);
+  for (PointEvaluation& e : touches) {
+    e.episode = -1;
+    e.touch = e.at_start = true;
+  }
+  episodes_.Commit(t, touches);
+  impacts_.Commit(t, touches, episodes_);
+}
+
 void StepCommitter::CheckDivergence(const mjData* d, const StepCapture& capture,
                                     const StepStartVelocities& start) {
   if (divergence_) return;

@@ -43,6 +43,10 @@ class StepCommitter {
   // Forgets every episode, impact, the energy and any divergence.
   void Reset();
 
+  // Opens an episode and an impact for each of points at time t (after
+  // Reset), touches there at the start, with their friction states.
+  void StartWith(double t, const std::vector<PointEvaluation>& points);
+
   // AfterStep lists the tagged points in d->contact (the default), or not.
   void ListVisiblePoints(bool list) { list_visible_points_ = list; }
 

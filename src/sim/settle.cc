@@ -14,15 +14,20 @@
 #include "contactlaws/model_io.h"
 #include "contactlaws/simulation.h"
 #include "mujoco/narrowphase.h"
+#include "sim/settle_directions.h"
+#include "sim/settle_friction.h"
 
 namespace contactlaws {
 namespace {
 
 // The movable bodies of tagged pairs touching at sim's state (1 per body),
-// with the depth their contacts allow (the largest GeomPair::depth_limit).
+// with the depth their contacts allow (the largest GeomPair::depth_limit)
+// and the normals of their contacts.
 struct Touching {
   std::vector<uint8_t> body;
   std::vector<double> limit;
+  std::vector<int> other;  // a body it touches
+  SettleDirections directions;
   int count = 0;
 };
 
@@ -32,11 +37,11 @@ Touching FindTouching(const Simulation& sim) {
   Touching t;
   t.body.assign(m->nbody, 0);
   t.limit.assign(m->nbody, 0.0);
+  t.other.assign(m->nbody, 0);
   ContactBuffer contacts = MakeContactBuffer();
   for (const GeomPair& pair : cm.pairs()) {
-    if (Collide(m, sim.data(), pair.geom[0], pair.geom[1], kTouchingGap, contacts.get()) == 0) {
-      continue;
-    }
+    const int n = Collide(m, sim.data(), pair.geom[0], pair.geom[1], kTouchingGap, contacts.get());
+    if (n == 0) continue;
     for (const int b : {0, 1}) {
       const int body = pair.body[b];
       if (cm.FindDrive(body)) {
@@ -49,7 +54,9 @@ Touching FindTouching(const Simulation& sim) {
       if (Immovable(cm, body)) continue;
       t.count += !t.body[body];
       t.body[body] = 1;
+      t.other[body] = pair.body[1 - b];
       t.limit[body] = std::max(t.limit[body], pair.depth_limit);
+      for (int c = 0; c < n; ++c) t.directions.AddNormal(m, body, contacts[c].frame);
     }
   }
   return t;
@@ -69,6 +76,27 @@ std::vector<uint8_t> MovingJoints(const mjModel* m, const Touching& touching) {
   return moving;
 }
 
+// Refuses a free body in contact whose load (gravity, the scene's actuator
+// and applied forces) lies along its contact surfaces: its contacts carry
+// none of it, and it would fall as if they were not there.
+void RefuseUnsupported(const Simulation& sim, const Touching& touching) {
+  const mjModel* m = sim.model();
+  const mjData* d = sim.data();
+  for (int b = 1; b < m->nbody; ++b) {
+    if (!touching.body[b] || !touching.directions.Held(b)) continue;
+    mjtNum load[3];
+    SettleDirections::Load(m, d, b, load);
+    const double carried = touching.directions.Carried(b, load);
+    if (carried < kSettleCarried) {
+      throw Error(fmt::format(
+          "{}: --settle: no contact carries body '{}': its load ({:.3g} N) lies along its "
+          "contact with '{}' ({:.3g} of it along the normal): it would fall",
+          sim.source(), ObjectName(m, mjOBJ_BODY, b), mju_norm3(load),
+          ObjectName(m, mjOBJ_BODY, touching.other[b]), carried));
+    }
+  }
+}
+
 // qpos and qvel entries of joint j.
 int QposSize(int type) { return type == mjJNT_FREE ? 7 : type == mjJNT_BALL ? 4 : 1; }
 int DofSize(int type) { return type == mjJNT_FREE ? 6 : type == mjJNT_BALL ? 3 : 1; }
@@ -79,11 +107,17 @@ double Kinetic(const mjModel* m, mjData* d, std::vector<mjtNum>* mv) {
   return 0.5 * mju_dot(d->qvel, mv->data(), m->nv);
 }
 
-// The largest |qacc| of the moving joints' dofs at rest (after mj_forward).
-double Residual(const mjModel* m, const mjData* d, const std::vector<uint8_t>& moving) {
+// The largest |qacc| of the moving joints' dofs at rest (after mj_forward),
+// a held body's in its directions.
+double Residual(const mjModel* m, const mjData* d, const std::vector<uint8_t>& moving,
+                const SettleDirections& directions) {
   double residual = 0;
   for (int j = 0; j < m->njnt; ++j) {
     if (!moving[j]) continue;
+    if (directions.Held(m->jnt_bodyid[j])) {
+      residual = std::max(residual, directions.Residual(m, d, m->jnt_bodyid[j]));
+      continue;
+    }
     for (int v = 0; v < DofSize(m->jnt_type[j]); ++v) {
       residual = std::max(residual, std::abs(d->qacc[m->jnt_dofadr[j] + v]));
     }
@@ -101,14 +135,19 @@ std::string SettleReport::Line() const {
       bodies, bodies == 1 ? "y" : "ies", relaxation, body, distance, angle);
 }
 
-SettleReport Settle(Simulation* sim) {
+SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contacts) {
   const mjModel* m = sim->model();
   mjData* d = sim->data();
   mj_forward(m, d);
-  const Touching touching = FindTouching(*sim);
+  Touching touching = FindTouching(*sim);
   SettleReport report;
   if (touching.count == 0) return report;
+  RefuseUnsupported(*sim, touching);
+  touching.directions.Start(m, d);
   const std::vector<uint8_t> moving = MovingJoints(m, touching);
+  // the scene's applied forces, given back at the end
+  const std::vector<mjtNum> applied(d->qfrc_applied, d->qfrc_applied + m->nv);
+  touching.directions.CancelAlongSurfaces(m, d);
   const std::vector<mjtNum> qpos0(d->qpos, d->qpos + m->nq);
   const std::vector<mjtNum> xpos0(d->xpos, d->xpos + 3 * m->nbody);
   const std::vector<mjtNum> xquat0(d->xquat, d->xquat + 4 * m->nbody);
@@ -132,20 +171,20 @@ SettleReport Settle(Simulation* sim) {
       report.angle = std::max(report.angle, 2 * std::acos(cosine));
       if (distance > touching.limit[b]) {
         throw Error(fmt::format(
-            "{}: --settle: no static equilibrium: body '{}' moved {:.3g} m in {:.3g} s of "
-            "relaxation, farther than its contacts can compress ({:.3g} m): it would fall or "
-            "slide",
+            "{}: --settle: no contact holds body '{}': it moved {:.3g} m in {:.3g} s of "
+            "relaxation, farther than its contacts can compress ({:.3g} m): it would fall",
             sim->source(), ObjectName(m, mjOBJ_BODY, b), distance, d->time - start,
             touching.limit[b]));
       }
     }
   };
 
-  // quasi-static relaxation: the other bodies held, the velocities quenched
-  // as the kinetic energy starts to fall, until the residual is small
+  // quasi-static relaxation: the other bodies held, the free bodies in
+  // contact moved along their contacts' normals only, the velocities
+  // quenched as the kinetic energy starts to fall, until the residual is small
   double previous = 0;
   std::vector<mjtNum> mv(m->nv);
-  bool converged = Residual(m, d, moving) < kSettleResidual;
+  bool converged = Residual(m, d, moving, touching.directions) < kSettleResidual;
   while (!converged && d->time - start < kSettleDuration) {
     sim->Step();
     if (sim->contacts().divergence()) {
@@ -159,36 +198,30 @@ SettleReport Settle(Simulation* sim) {
       mju_copy(d->qpos + m->jnt_qposadr[j], qpos0.data() + m->jnt_qposadr[j], QposSize(type));
       mju_zero(d->qvel + m->jnt_dofadr[j], DofSize(type));
     }
+    touching.directions.Project(m, d);
     measure();
     const double kinetic = Kinetic(m, d, &mv);
     if (kinetic < previous) {
       mju_zero(d->qvel, m->nv);
       mj_forward(m, d);
-      converged = Residual(m, d, moving) < kSettleResidual;
+      converged = Residual(m, d, moving, touching.directions) < kSettleResidual;
       previous = 0;
     } else {
       previous = kinetic;
     }
   }
   report.relaxation = d->time - start;
+  mju_copy(d->qfrc_applied, applied.data(), m->nv);
   mj_forward(m, d);
   measure();
   if (!converged) {
     throw Error(fmt::format(
-        "{}: --settle: no static equilibrium: the bodies in contact still accelerate at "
-        "{:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m): they would slide",
-        sim->source(), Residual(m, d, moving), kSettleDuration, report.body, report.distance));
-  }
-  for (const ContactData::Evaluation& e : sim->contacts().latest()) {
-    if (!e.friction_state.sliding) continue;
-    const GeomPair& pair = sim->contact_model().pairs()[e.pair];
-    throw Error(fmt::format(
-        "{}: --settle: no static equilibrium: the contact of '{}' and '{}' needs more "
-        "friction than mu_s F_n: it would slide",
-        sim->source(), ObjectName(m, mjOBJ_GEOM, pair.named[0]),
-        ObjectName(m, mjOBJ_GEOM, pair.named[1])));
+        "{}: --settle: no equilibrium along the contacts' normals: the bodies in contact still "
+        "accelerate at {:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m)",
+        sim->source(), Residual(m, d, moving, touching.directions), kSettleDuration, report.body, report.distance));
   }
   report.bodies = touching.count;
+  if (start_contacts) *start_contacts = StartFriction(*sim, touching.directions);
   return report;
 }
 

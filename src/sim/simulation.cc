@@ -52,7 +52,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   RecordBodiesAndJoints();
   Reset(/*fresh=*/true);
   if (options.settle) {
-    settled_ = Settle(this);
+    settled_ = Settle(this, &settled_contacts_);
     settled_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
     Reset();
   }
@@ -76,6 +76,8 @@ void Simulation::Reset(bool fresh) {
   for (const Drive& drive : contact_model_->drives()) {
     drive.Position(data_->time, data_->mocap_pos + 3 * drive.mocap);
   }
+  // a settled start's contacts, with the friction their load asks
+  if (!settled_contacts_.empty()) contacts_->StartWith(settled_contacts_);
 }
 
 void Simulation::RecordBodiesAndJoints() {
