@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -147,13 +148,10 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
   const std::vector<uint8_t> moving = MovingJoints(m, touching);
   // the scene's applied forces, given back at the end
   const std::vector<mjtNum> applied(d->qfrc_applied, d->qfrc_applied + m->nv);
-  touching.directions.CancelAlongSurfaces(m, d);
   const std::vector<mjtNum> qpos0(d->qpos, d->qpos + m->nq);
   const std::vector<mjtNum> xpos0(d->xpos, d->xpos + 3 * m->nbody);
   const std::vector<mjtNum> xquat0(d->xquat, d->xquat + 4 * m->nbody);
   const double start = d->time;
-  mju_zero(d->qvel, m->nv);
-  mj_forward(m, d);
 
   // the farthest touching body from its start, and the largest turn
   auto measure = [&] {
@@ -179,49 +177,79 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
     }
   };
 
-  // quasi-static relaxation: the other bodies held, the free bodies in
-  // contact moved along their contacts' normals only, the velocities
-  // quenched as the kinetic energy starts to fall, until the residual is small
-  double previous = 0;
+  // quasi-static relaxation: the other bodies held, the velocities quenched
+  // as the kinetic energy starts to fall, until the residual is small;
+  // directions: the free bodies in contact moved along their contacts'
+  // normals only, their load along the surfaces cancelled (else the full
+  // dynamics, friction's springs holding them). Whether it converged.
+  const SettleDirections anywhere;
   std::vector<mjtNum> mv(m->nv);
-  bool converged = Residual(m, d, moving, touching.directions) < kSettleResidual;
-  while (!converged && d->time - start < kSettleDuration) {
-    sim->Step();
-    if (sim->contacts().divergence()) {
-      throw Error(fmt::format("{}: --settle: the relaxation diverged at t = {:.6g} s: {}",
-                              sim->source(), d->time - start,
-                              sim->contacts().divergence()->what));
+  auto relax = [&](const SettleDirections& directions) {
+    mju_copy(d->qfrc_applied, applied.data(), m->nv);
+    mju_zero(d->qvel, m->nv);
+    mj_forward(m, d);
+    directions.CancelAlongSurfaces(m, d);
+    mj_forward(m, d);
+    double previous = 0;
+    bool converged = Residual(m, d, moving, directions) < kSettleResidual;
+    while (!converged && d->time - start < kSettleDuration) {
+      sim->Step();
+      if (sim->contacts().divergence()) {
+        throw Error(fmt::format("{}: --settle: the relaxation diverged at t = {:.6g} s: {}",
+                                sim->source(), d->time - start,
+                                sim->contacts().divergence()->what));
+      }
+      for (int j = 0; j < m->njnt; ++j) {
+        if (moving[j]) continue;
+        const int type = m->jnt_type[j];
+        mju_copy(d->qpos + m->jnt_qposadr[j], qpos0.data() + m->jnt_qposadr[j], QposSize(type));
+        mju_zero(d->qvel + m->jnt_dofadr[j], DofSize(type));
+      }
+      directions.Project(m, d);
+      measure();
+      const double kinetic = Kinetic(m, d, &mv);
+      if (kinetic < previous) {
+        mju_zero(d->qvel, m->nv);
+        mj_forward(m, d);
+        converged = Residual(m, d, moving, directions) < kSettleResidual;
+        previous = 0;
+      } else {
+        previous = kinetic;
+      }
     }
-    for (int j = 0; j < m->njnt; ++j) {
-      if (moving[j]) continue;
-      const int type = m->jnt_type[j];
-      mju_copy(d->qpos + m->jnt_qposadr[j], qpos0.data() + m->jnt_qposadr[j], QposSize(type));
-      mju_zero(d->qvel + m->jnt_dofadr[j], DofSize(type));
-    }
-    touching.directions.Project(m, d);
+    mju_copy(d->qfrc_applied, applied.data(), m->nv);
+    mj_forward(m, d);
     measure();
-    const double kinetic = Kinetic(m, d, &mv);
-    if (kinetic < previous) {
-      mju_zero(d->qvel, m->nv);
-      mj_forward(m, d);
-      converged = Residual(m, d, moving, touching.directions) < kSettleResidual;
-      previous = 0;
-    } else {
-      previous = kinetic;
-    }
-  }
-  report.relaxation = d->time - start;
-  mju_copy(d->qfrc_applied, applied.data(), m->nv);
-  mj_forward(m, d);
-  measure();
-  if (!converged) {
+    return converged;
+  };
+
+  // the normal equilibrium
+  if (!relax(touching.directions)) {
     throw Error(fmt::format(
         "{}: --settle: no equilibrium along the contacts' normals: the bodies in contact still "
         "accelerate at {:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m)",
-        sim->source(), Residual(m, d, moving, touching.directions), kSettleDuration, report.body, report.distance));
+        sim->source(), Residual(m, d, moving, touching.directions), kSettleDuration,
+        report.body, report.distance));
   }
+  bool sliding = false;
+  std::vector<PointEvaluation> contacts = StartFriction(*sim, touching.directions, &sliding);
+  // nothing slides: on to the static equilibrium, the friction's springs
+  // loaded (kept where it does not converge, or a contact ends sliding)
+  if (!sliding) {
+    const std::vector<mjtNum> normal(d->qpos, d->qpos + m->nq);
+    bool held = relax(anywhere);
+    for (const PointEvaluation& e : sim->contacts().latest()) held = held && !e.friction_state.sliding;
+    if (held) {
+      contacts = HeldFriction(*sim);
+    } else {
+      mju_copy(d->qpos, normal.data(), m->nq);
+      mj_forward(m, d);
+    }
+  }
+  report.relaxation = d->time - start;
   report.bodies = touching.count;
-  if (start_contacts) *start_contacts = StartFriction(*sim, touching.directions);
+  if (start_contacts) *start_contacts = std::move(contacts);
+  mju_zero(d->qvel, m->nv);
   return report;
 }
 

@@ -17,18 +17,26 @@ void NormalForceOn(const GeomPair& pair, const PointEvaluation& e, int b, mjtNum
 
 }  // namespace
 
+std::vector<PointEvaluation> HeldFriction(const Simulation& sim) {
+  std::vector<PointEvaluation> points = sim.contacts().latest();
+  for (PointEvaluation& e : points) {
+    e.depth_rate = e.max_approach = e.touch_velocity = 0;
+    e.impact_velocity = sim.contact_model().pairs()[e.pair].params.min_impact_velocity;
+  }
+  return points;
+}
+
 std::vector<PointEvaluation> StartFriction(const Simulation& sim,
-                                           const SettleDirections& directions) {
+                                           const SettleDirections& directions, bool* sliding) {
   const mjModel* m = sim.model();
   const mjData* d = sim.data();
   const std::vector<GeomPair>& pairs = sim.contact_model().pairs();
-  std::vector<PointEvaluation> points = sim.contacts().latest();
+  std::vector<PointEvaluation> points = HeldFriction(sim);
   for (PointEvaluation& e : points) {
     e.friction_state.spring[0] = e.friction_state.spring[1] = e.friction_state.spring[2] = 0;
     e.friction_state.sliding = false;
-    e.depth_rate = e.max_approach = e.touch_velocity = 0;
-    e.impact_velocity = pairs[e.pair].params.min_impact_velocity;
   }
+  *sliding = false;
 
   // the held bodies, highest first; what each passes down to the others
   std::vector<int> bodies;
@@ -61,18 +69,19 @@ std::vector<PointEvaluation> StartFriction(const Simulation& sim,
     }
     const double size = mju_norm3(tangential);
     if (support.empty() || size == 0) continue;
-    const bool sliding = size > capacity;
+    const bool slides = size > capacity;
+    *sliding = *sliding || slides;
     for (PointEvaluation* e : support) {
       const GeomPair& pair = pairs[e->pair];
       // the friction on b, in the point's tangent plane
       mjtNum friction[3];
       mju_scl3(friction, tangential,
-               sliding ? -pair.friction.mu_kinetic * e->force / size : -e->force / normal);
+               slides ? -pair.friction.mu_kinetic * e->force / size : -e->force / normal);
       mju_addToScl3(friction, e->normal, -mju_dot3(friction, e->normal));
       // the spring's force on body[1]; the other body takes the reaction
       const int other = pair.body[0] == b ? pair.body[1] : pair.body[0];
       mju_scl3(e->friction_state.spring, friction, pair.body[1] == b ? 1.0 : -1.0);
-      e->friction_state.sliding = sliding;
+      e->friction_state.sliding = slides;
       mju_subFrom3(passed.data() + 3 * other, friction);
     }
   }

@@ -19,6 +19,12 @@
 // The bodies are taken from the highest (against gravity) down, so that a
 // stack's lower contacts carry what the upper ones pass down. Only the
 // stick-spring models (coulomb, stribeck) keep such a state.
+//
+// Where no body slides, Settle goes on to the static equilibrium (the
+// friction's springs in the dynamics, the bodies free to turn and shift by
+// their stretch: a block on a slope tips onto its downhill corners under the
+// friction below its centre) and starts the contacts with the friction
+// they hold there (HeldFriction).
 
 #ifndef CONTACTLAWS_SIM_SETTLE_FRICTION_H_
 #define CONTACTLAWS_SIM_SETTLE_FRICTION_H_
@@ -32,9 +38,15 @@
 namespace contactlaws {
 
 // The points of sim's latest evaluation (at the settled state, after
-// mj_forward), each with the friction state it starts with.
+// mj_forward), each with the friction state it starts with as above;
+// *sliding: whether a body slides.
 std::vector<PointEvaluation> StartFriction(const Simulation& sim,
-                                           const SettleDirections& directions);
+                                           const SettleDirections& directions, bool* sliding);
+
+// The points of sim's latest evaluation with the friction they hold (after a
+// static relaxation, whose stick springs carry the load), as touches at the
+// start at rest.
+std::vector<PointEvaluation> HeldFriction(const Simulation& sim);
 
 }  // namespace contactlaws
 
