@@ -16,7 +16,11 @@ namespace contactlaws {
 // then compressed far faster, as touching bodies are when a pulse comes
 // through; not a contact there at the start that settles): its first such
 // pair and how many more, how many impacts, the first one's touch speed
-// and largest approach rate, and what the library did about it.
+// and largest approach rate, and what the library did about it. A chained
+// impact that touched slower than its law's floor of v0 and compressed no
+// faster than twice the speed its bodies' weight sinks them to its depth
+// (bodies placed touching, or come to rest, settling into their springs) is
+// no push: such impacts make one line for the scene, pointing to --settle.
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim);
 
 }  // namespace contactlaws
