@@ -69,6 +69,7 @@ struct RenderArgs : CommonArgs {
   std::string slowmo = "1";
   std::optional<std::string> camera;
   std::optional<std::string> force_scale;
+  bool plain = false;  // MuJoCo's default look, not render/scene_look.h's
 };
 
 int RunCommand(const RunArgs& args);

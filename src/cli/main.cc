@@ -192,6 +192,9 @@ void AddRender(CLI::App* app, Commands* c) {
   AddNumber(cmd, "--force-scale", &r.force_scale,
             "force arrows, m/N (default: a body's weight as long as the body, at most 3 "
             "times)");
+  cmd->add_flag("--plain", r.plain,
+                "MuJoCo's default look (default: a scene's sky, light, floor or body colours "
+                "that it lacks are those of MuJoCo's samples, docs/render.md)");
 }
 
 // The options replay and fit share.

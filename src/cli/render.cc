@@ -25,6 +25,7 @@
 #include "contactlaws/error.h"
 #include "render/frame_renderer.h"
 #include "render/frame_sink.h"
+#include "render/scene_look.h"
 #include "render/tracking_camera.h"
 #include "scene/number.h"
 #include "sim/start_contact.h"
@@ -95,6 +96,14 @@ int RenderCommand(const RenderArgs& args) {
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
   UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
+  if (!args.plain) {
+    const render::LookPlan look = render::PlanLook(model.get());
+    model = render::Dress(std::move(model), args.scene, look);
+    if (!look.empty()) {
+      fmt::print("{}: drawn with what it lacks of MuJoCo's samples' look: {} (--plain: "
+                 "MuJoCo's defaults)\n", args.scene, look.Describe());
+    }
+  }
   render::FrameRenderer::Prepare(model.get(), plan.frame);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
   const Scene scene(args.scene, std::move(model));
