@@ -96,18 +96,16 @@ int RenderCommand(const RenderArgs& args) {
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
   UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
-  if (!args.plain) {
-    const render::LookPlan look = render::PlanLook(model.get());
-    model = render::Dress(std::move(model), args.scene, look);
-    if (!look.empty()) {
-      fmt::print("{}: drawn with what it lacks of MuJoCo's samples' look: {} (--plain: "
-                 "MuJoCo's defaults)\n", args.scene, look.Describe());
-    }
-  }
-  render::FrameRenderer::Prepare(model.get(), plan.frame);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
+  const render::LookPlan look = args.plain ? render::LookPlan{} : render::PlanLook(model.get());
+  model = render::Dress(std::move(model), args.scene, look);
+  render::FrameRenderer::Prepare(model.get(), plan.frame);
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
+  if (!look.empty()) {
+    fmt::print("{}: drawn with what it lacks of MuJoCo's samples' look: {} (--plain: MuJoCo's "
+               "defaults)\n", scene.path(), look.Describe());
+  }
   ReportSettle(*sim);
   const std::vector<StartContact> starts = StartContacts(sim.get());
   for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);

@@ -88,7 +88,7 @@ std::string Additions(const LookPlan& plan) {
   std::string assets;
   if (plan.sky) {
     assets += fmt::format(R"(<texture name="{}" type="skybox" builtin="gradient" )"
-                          R"(rgb1="0.3 0.5 0.7" rgb2="0 0 0" width="64" height="64"/>)",
+                          R"(rgb1="0.4 0.6 0.8" rgb2="0 0 0" width="64" height="64"/>)",
                           kSky);
   }
   if (!plan.floors.empty()) {
