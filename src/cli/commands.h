@@ -56,6 +56,7 @@ struct SimulateArgs {
   std::optional<std::string> mu;
   std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
   bool settle = false;  // the plugin starts the bodies in contact settled
+  bool plain = false;   // MuJoCo's default look, not render/scene_look.h's
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.

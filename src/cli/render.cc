@@ -98,7 +98,7 @@ int RenderCommand(const RenderArgs& args) {
   UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
   const render::LookPlan look = args.plain ? render::LookPlan{} : render::PlanLook(model.get());
-  model = render::Dress(std::move(model), args.scene, look);
+  if (!look.empty()) model = render::Dressed(model.get(), args.scene, look);
   render::FrameRenderer::Prepare(model.get(), plan.frame);
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);

@@ -175,8 +175,7 @@ LookPlan PlanLook(const mjModel* m) {
   return plan;
 }
 
-UniqueModel Dress(UniqueModel m, const std::string& path, const LookPlan& plan) {
-  if (plan.empty()) return m;
+UniqueModel Dressed(const mjModel* m, const std::string& path, const LookPlan& plan) {
   std::string xml = ReadFile(path);
   const size_t end = xml.rfind("</mujoco");
   if (end == std::string::npos) {

@@ -47,11 +47,11 @@ struct LookPlan {
 // What m (compiled from a scene) lacks, by the rule above.
 LookPlan PlanLook(const mjModel* m);
 
-// The scene's model with plan's additions: its file (path) compiled again
-// with them, the arena's sizes set after compile (njmax, nconmax, nstack)
-// carried over from m; m itself when the plan is empty. Error when the file
-// cannot be read again or compiled with them.
-UniqueModel Dress(UniqueModel m, const std::string& path, const LookPlan& plan);
+// The scene's model with plan's additions (not empty): its file (path)
+// compiled again with them, the arena's sizes set after compile (njmax,
+// nconmax, nstack) carried over from m. Error when the file cannot be read
+// again or compiled with them.
+UniqueModel Dressed(const mjModel* m, const std::string& path, const LookPlan& plan);
 
 }  // namespace contactlaws::render
 

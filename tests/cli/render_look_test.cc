@@ -202,7 +202,7 @@ TEST(RenderLookTest, DressedModelStepsAsTheScene) {
   const std::string scene = PlainDie("look_steps");
   const UniqueModel plain = LoadModelFile(scene);
   const render::LookPlan plan = render::PlanLook(plain.get());
-  UniqueModel dressed = render::Dress(LoadModelFile(scene), scene, plan);
+  const UniqueModel dressed = render::Dressed(plain.get(), scene, plan);
   ASSERT_EQ(dressed->nlight, 1);
   ASSERT_EQ(dressed->ntex, 2);
   EXPECT_EQ(dressed->geom_matid[0], 0);
