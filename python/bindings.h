@@ -40,6 +40,12 @@ void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
 // mu, timestep).
 std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const pybind11::dict& kwargs);
 
+// A command line's message with the keyword arguments' names for its
+// flags (python/keywords.cc).
+std::string KeywordSpelling(const std::string& message);
+
+// contactlaws.Error and the spelling of every message (KeywordSpelling).
+void BindKeywordSpelling(pybind11::module_& m);
 void BindSimulation(pybind11::module_& m);
 void BindCommands(pybind11::module_& m);
 void BindFileCommands(pybind11::module_& m);

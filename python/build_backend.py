@@ -8,6 +8,7 @@ is downloaded: CMake, pybind11 and the libraries are Debian's.
 
 import base64
 import hashlib
+import importlib.util
 import os
 import subprocess
 import sys
@@ -28,8 +29,21 @@ def _tag():
     return f"{python}-{python}-{platform}"
 
 
+def require_debian_python():
+    """Stops in one line, before anything is built, on a Python that lacks
+    the Debian packages the module runs with (a pyenv or conda python3,
+    or a venv made without --system-site-packages): pip could only fetch
+    them from an index, after the whole build."""
+    missing = [name for name in ("numpy", "pandas") if importlib.util.find_spec(name) is None]
+    if missing:
+        sys.exit(f"contactlaws: {sys.executable} has no {' or '.join(missing)}: install into a "
+                 "venv of Debian's python3 (/usr/bin/python3 -m venv --system-site-packages "
+                 "DIR; apt-get install python3-numpy python3-pandas)")
+
+
 def _build():
     """Builds the module; returns the package directory."""
+    require_debian_python()
     build = os.path.join(ROOT, "build", "pip")
     subprocess.run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                     f"-DPython3_EXECUTABLE={sys.executable}", "-DCONTACTLAWS_PYTHON=ON",

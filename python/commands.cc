@@ -98,6 +98,8 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   std::string divergence;
   if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice);
+  for (std::string& w : warnings) w = KeywordSpelling(w);
+  divergence = KeywordSpelling(divergence);
 
   // the rows as an array that owns the vector
   const py::ssize_t width = static_cast<py::ssize_t>(columns.size());

@@ -7,8 +7,7 @@
 
 PYBIND11_MODULE(_contactlaws, m) {
   m.doc() = "contactlaws: continuous contact force laws in MuJoCo 2.2 (C++ core)";
-  // contactlaws.Error, a ValueError, carries the command line's message
-  pybind11::register_exception<contactlaws::Error>(m, "Error", PyExc_ValueError);
+  contactlaws::python::BindKeywordSpelling(m);
   contactlaws::python::BindSimulation(m);
   contactlaws::python::BindCommands(m);
   contactlaws::python::BindFileCommands(m);

@@ -15,6 +15,9 @@
 #             ThreadSanitizer
 #   fuzz      build-fuzz/: the libFuzzer target tag_fuzzer for about 60 s on a
 #             scratch copy of its corpus (only where clang and libFuzzer are)
+#   pip       not by default (a whole build of the module, minutes cold):
+#             python_pip_notebook (label pip), the README's pip install into
+#             a venv and the notebook on its kernel (docs/testing.md)
 # libmujoco itself is not instrumented: the sanitizers see this project's code
 # (and malloc/free everywhere), not MuJoCo's own memory accesses.
 #
@@ -72,7 +75,11 @@ build() {
 }
 
 run_ctest() {
-  ctest --test-dir build --output-on-failure -j"$jobs"
+  ctest --test-dir build --output-on-failure -j"$jobs" -LE pip
+}
+
+pip() {
+  ctest --test-dir build --output-on-failure -L pip
 }
 
 asan() {
@@ -176,8 +183,8 @@ main() {
   fi
   for name in "${stages[@]}"; do
     case "$name" in
-      build|run_ctest|asan|tsan|fuzz) stage "$name" ;;
-      *) echo "test.sh: unknown stage '$name' (build run_ctest asan tsan fuzz)" >&2; exit 2 ;;
+      build|run_ctest|asan|tsan|fuzz|pip) stage "$name" ;;
+      *) echo "test.sh: unknown stage '$name' (build run_ctest asan tsan fuzz pip)" >&2; exit 2 ;;
     esac
   done
   local IFS=','

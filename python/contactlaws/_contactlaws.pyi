@@ -3,6 +3,8 @@ from typing import Dict, List
 
 import numpy as np
 
+def _spelled(message: str) -> str: ...
+
 class Error(ValueError):
     """The command line's message for refused input."""
 

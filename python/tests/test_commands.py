@@ -12,6 +12,7 @@ import pandas as pd
 import pytest
 
 import contactlaws
+from contactlaws import _contactlaws
 
 CLI = os.environ["CONTACTLAWS_CLI"]
 BALL = os.path.join(os.environ["CONTACTLAWS_MJCF"], "bouncing_ball.xml")
@@ -20,6 +21,12 @@ INCLINE = os.path.join(os.environ["CONTACTLAWS_MJCF"], "friction_incline.xml")
 
 def cli(*args, check=True):
     return subprocess.run([CLI, *args], capture_output=True, text=True, check=check)
+
+
+def spoken(refused):
+    """The command line's refusal as Python raises it: its flags named as the
+    keyword arguments (python/keywords.cc)."""
+    return _contactlaws._spelled(refused.stderr.removeprefix("contactlaws: ").rstrip("\n"))
 
 
 def read(path):
@@ -125,8 +132,8 @@ def test_fit_starts_where_it_is_told(tmp_path, measured):
     with pytest.raises(contactlaws.Error) as error:
         contactlaws.fit(BALL, measured, "restitution=0.3:0.9", initial={"restitution": 0.95},
                         law="flores", timestep=1e-4, budget=1)
-    assert refused.stderr == f"contactlaws: {error.value}\n"
-    assert str(error.value) == "--initial: restitution=0.95: outside its bounds [0.3, 0.9]"
+    assert str(error.value) == spoken(refused)
+    assert str(error.value) == "initial: restitution=0.95: outside its bounds [0.3, 0.9]"
 
 
 def test_laws_gives_the_command_lines_tables():
@@ -178,7 +185,7 @@ def test_a_wrong_value_is_the_command_lines_message(args, call):
     with pytest.raises(contactlaws.Error) as error:
         call()
     # the command line prints "contactlaws: MESSAGE"
-    assert refused.stderr == f"contactlaws: {error.value}\n"
+    assert str(error.value) == spoken(refused)
 
 
 def test_a_wrong_measured_value_in_fit(measured):
@@ -187,7 +194,7 @@ def test_a_wrong_measured_value_in_fit(measured):
     assert refused.returncode == 2
     with pytest.raises(contactlaws.Error) as error:
         contactlaws.fit(BALL, measured, "restitution=0.5:2", law="flores", timestep=1e-4)
-    assert refused.stderr == f"contactlaws: {error.value}\n"
+    assert str(error.value) == spoken(refused)
 
 
 def test_ctrl_c_interrupts_a_long_fit_and_the_next_call_runs(measured):
@@ -203,3 +210,18 @@ def test_ctrl_c_interrupts_a_long_fit_and_the_next_call_runs(measured):
     # 1e-5 s takes ~0.3 s alone, allow 10 s on 2 loaded cores
     assert time.perf_counter() - start < 10
     assert len(contactlaws.restitution(BALL, laws="flores", restitution=0.5)) == 1
+
+
+def test_messages_name_the_keyword_arguments(capfd):
+    # the warning the notebook printed in the command line's flags (--laws
+    # all ... give --dissipation), on stderr as the command line prints it
+    contactlaws.compare(BALL, restitution=0.5, duration=0.05)
+    printed = capfd.readouterr().err
+    assert ('laws="all" leaves out hunt-crossley-constant: it needs a dissipation '
+            '(give dissipation, s/m)') in printed
+    assert "--" not in printed
+    with pytest.raises(contactlaws.Error) as error:
+        contactlaws.run(BALL, max_timestep=-1, timestep="auto")
+    assert str(error.value).startswith("max_timestep=-1 ")
+    assert (_contactlaws._spelled("use --impacts-per-point or --settle; see contactlaws check")
+            == "use impacts_per_point=True or settle=True; see contactlaws.check()")

@@ -56,6 +56,7 @@ struct SimulateArgs {
   std::optional<std::string> mu;
   std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
   bool settle = false;  // the plugin starts the bodies in contact settled
+  bool plain = false;   // MuJoCo's default look, not render/scene_look.h's
 };
 
 // contactlaws render: the run drawn offscreen into a video or PNG files.
@@ -69,6 +70,7 @@ struct RenderArgs : CommonArgs {
   std::string slowmo = "1";
   std::optional<std::string> camera;
   std::optional<std::string> force_scale;
+  bool plain = false;  // MuJoCo's default look, not render/scene_look.h's
 };
 
 int RunCommand(const RunArgs& args);

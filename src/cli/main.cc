@@ -158,6 +158,13 @@ void AddLaws(CLI::App* app, Commands* c) {
                           "0.9,0.7,0.5,0.3,0.1)");
 }
 
+// --plain of render and simulate
+void AddPlain(CLI::App* cmd, bool* plain) {
+  cmd->add_flag("--plain", *plain,
+                "MuJoCo's default look (default: what the scene lacks of a sky, a light, a "
+                "floor's checker and body colours is MuJoCo's samples', docs/render.md)");
+}
+
 void AddSimulate(CLI::App* app, Commands* c) {
   c->simulate_cmd = app->add_subcommand(
       "simulate", "MuJoCo's viewer (mujoco-simulate) with the laws acting: the plugin preloaded");
@@ -170,6 +177,7 @@ void AddSimulate(CLI::App* app, Commands* c) {
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
   AddSettle(c->simulate_cmd, &c->simulate.settle);
+  AddPlain(c->simulate_cmd, &c->simulate.plain);
 }
 
 void AddRender(CLI::App* app, Commands* c) {
@@ -192,6 +200,7 @@ void AddRender(CLI::App* app, Commands* c) {
   AddNumber(cmd, "--force-scale", &r.force_scale,
             "force arrows, m/N (default: a body's weight as long as the body, at most 3 "
             "times)");
+  AddPlain(cmd, &r.plain);
 }
 
 // The options replay and fit share.

@@ -25,6 +25,7 @@
 #include "contactlaws/error.h"
 #include "render/frame_renderer.h"
 #include "render/frame_sink.h"
+#include "render/scene_look.h"
 #include "render/tracking_camera.h"
 #include "scene/number.h"
 #include "sim/start_contact.h"
@@ -95,10 +96,16 @@ int RenderCommand(const RenderArgs& args) {
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
   UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
-  render::FrameRenderer::Prepare(model.get(), plan.frame);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
+  const render::LookPlan look = args.plain ? render::LookPlan{} : render::PlanLook(model.get());
+  if (!look.empty()) model = render::Dressed(model.get(), args.scene, look);
+  render::FrameRenderer::Prepare(model.get(), plan.frame);
   const Scene scene(args.scene, std::move(model));
   std::unique_ptr<Simulation> sim = scene.Make(plan.common.simulation);
+  if (!look.empty()) {
+    fmt::print("{}: drawn with what it lacks of MuJoCo's samples' look: {} (--plain: MuJoCo's "
+               "defaults)\n", scene.path(), look.Describe());
+  }
   ReportSettle(*sim);
   const std::vector<StartContact> starts = StartContacts(sim.get());
   for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);

@@ -52,6 +52,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SetVariable("CONTACTLAWS_MU", args.mu);
   SetVariable("CONTACTLAWS_ACCURACY", args.accuracy);
   SetVariable("CONTACTLAWS_SETTLE", args.settle ? std::optional<std::string>("1") : std::nullopt);
+  SetVariable("CONTACTLAWS_LOOK", args.plain ? std::nullopt : std::optional<std::string>("1"));
   const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};
   execv(viewer.c_str(), const_cast<char* const*>(argv));
   throw Error(fmt::format("simulate: could not start {}", viewer));

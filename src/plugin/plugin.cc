@@ -10,9 +10,11 @@
 
 #include "contactlaws/error.h"
 #include "contactlaws/law.h"
+#include "contactlaws/model_io.h"
 #include "sim/settle.h"
 #include "contactlaws/simulation.h"
 #include "laws/param_range.h"
+#include "render/scene_look.h"
 #include "scene/number.h"
 #include "scene/tags.h"
 
@@ -111,6 +113,21 @@ bool HasTags(const mjModel* m) {
     if (name.rfind(kPairTagPrefix, 0) == 0 || name.rfind(kDriveTagPrefix, 0) == 0) return true;
   }
   return false;
+}
+
+mjModel* WithLook(mjModel* m, const char* file, const mjVFS* vfs) {
+  const char* look = std::getenv(kLookVariable);
+  if (!m || !file || vfs || !look || std::string_view(look) != "1") return m;
+  const render::LookPlan plan = render::PlanLook(m);
+  if (plan.empty()) return m;
+  try {
+    UniqueModel dressed = render::Dressed(m, file, plan);
+    mj_deleteModel(m);
+    return dressed.release();
+  } catch (const Error& e) {
+    std::fprintf(stderr, "contactlaws: %s\n", e.what());
+    return m;
+  }
 }
 
 Plugin& Plugin::Get() {

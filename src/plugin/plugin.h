@@ -50,6 +50,10 @@ inline constexpr const char* kAccuracyVariable = "CONTACTLAWS_ACCURACY";
 // there (mj_makeData, mj_resetData). One line on stderr says what moved, or
 // why nothing could (the scene's positions are then kept).
 inline constexpr const char* kSettleVariable = "CONTACTLAWS_SETTLE";
+// 1: a model loaded from a file gets what it lacks of MuJoCo's samples' look
+// (render/scene_look.h), as render draws it (contactlaws simulate sets it
+// unless --plain)
+inline constexpr const char* kLookVariable = "CONTACTLAWS_LOOK";
 
 // The longest step the plugin's auto timestep takes, s: a frame of a 60 Hz
 // display. A viewer draws the state between steps, and a free flight's step
@@ -78,6 +82,11 @@ struct ManagedData {
   VisibleContactsOverflow overflow;
   bool divergence_reported = false;
 };
+
+// m (loaded from file by mj_loadXML, with vfs) with what it lacks of the
+// samples' look, under CONTACTLAWS_LOOK=1: a new model, m deleted; m itself
+// otherwise, or when the file cannot be dressed (one line on stderr).
+mjModel* WithLook(mjModel* m, const char* file, const mjVFS* vfs);
 
 class Plugin {
  public:

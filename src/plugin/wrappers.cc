@@ -4,7 +4,8 @@
 // functions, defined here so that a program linked against libmujoco calls
 // these first; each calls the real one, found with dlsym(RTLD_NEXT, name).
 //
-//   mj_loadXML, mj_loadModel  record the model's file (for messages)
+//   mj_loadXML, mj_loadModel  record the model's file (for messages);
+//                             mj_loadXML: the samples' look (CONTACTLAWS_LOOK)
 //   mj_makeData               a ContactData for the data of a tagged model
 //   mj_resetData              the settled positions (CONTACTLAWS_SETTLE)
 //   mj_deleteData             the data's ContactData removed first
@@ -106,7 +107,10 @@ mjModel* mj_loadXML(const char* filename, const mjVFS* vfs, char* error, int err
   CONTACTLAWS_REAL(mj_loadXML);
   Nesting nesting;
   mjModel* m = real(filename, vfs, error, error_sz);
-  if (nesting.outermost()) Plugin::Get().Loaded(m, filename);
+  if (nesting.outermost()) {
+    m = contactlaws::plugin::WithLook(m, filename, vfs);
+    Plugin::Get().Loaded(m, filename);
+  }
   return m;
 }
 

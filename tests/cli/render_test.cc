@@ -8,8 +8,6 @@
 // the body; the slow motion in the overlay; every scene of mjcf/ drawn; the
 // bad inputs.
 
-#include <png.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -22,10 +20,13 @@
 #include <mujoco/mujoco.h>
 
 #include "cli_test_util.h"
+#include "png_image.h"
 
 namespace contactlaws {
 namespace {
 
+using testing::Image;
+using testing::ReadPng;
 using testing::Result;
 using testing::RunCli;
 
@@ -66,29 +67,6 @@ std::string FallScene() {
       <freejoint/>
       <geom name="body" type="sphere" size="0.1" mass="1" rgba="1 0 0 1"/>
     </body>)", kStartHeight), "law=hunt-crossley restitution=0.8 stiffness=1e7");
-}
-
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<unsigned char> rgb;
-  const unsigned char* at(int x, int y) const { return &rgb[3 * (y * width + x)]; }
-};
-
-Image ReadPng(const std::string& path) {
-  png_image png = {};
-  png.version = PNG_IMAGE_VERSION;
-  Image image;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
-    ADD_FAILURE() << path << ": " << png.message;
-    return image;
-  }
-  png.format = PNG_FORMAT_RGB;
-  image.width = static_cast<int>(png.width);
-  image.height = static_cast<int>(png.height);
-  image.rgb.resize(PNG_IMAGE_SIZE(png));
-  png_image_finish_read(&png, nullptr, image.rgb.data(), 0, nullptr);
-  return image;
 }
 
 bool IsBall(const unsigned char* p) { return p[0] > 2 * p[1] + 20 && p[0] > 2 * p[2] + 20; }

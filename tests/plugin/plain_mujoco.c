@@ -13,7 +13,8 @@
    contacts d->contact held after a step with exclude = 1 (in gap: what the
    plugin appends to show the tagged points) and with exclude = 0 (MuJoCo's
    own), the steps it took, and the final height and vertical speed to 17
-   digits. */
+   digits. A first line "look" gives TAGGED's lights and textures and its
+   first geom's material (what the plugin's CONTACTLAWS_LOOK adds). */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,6 +79,9 @@ int main(int argc, char** argv) {
   double speed = atof(argv[3]);
   mjModel* tagged = Load(argv[1]);
   mjModel* untagged = Load(argv[2]);
+  if (tagged) {
+    printf("look nlight=%d ntex=%d matid=%d\n", tagged->nlight, tagged->ntex, tagged->geom_matid[0]);
+  }
   Run runs[3];
   Start(&runs[0], "tagged0", tagged, speed);
   Start(&runs[1], "tagged1", tagged, speed);

@@ -1,0 +1,75 @@
+// Copyright contactlaws authors.
+//
+// The command line's messages spoken to a Python caller: each --flag is the
+// functions' keyword argument of the same name (--max-timestep=1e-3 ->
+// max_timestep=1e-3, give --dissipation -> give dissipation, --settle ->
+// settle=True), the command line's phrases that have no flag form as
+// Python's. The errors raised (contactlaws.Error), the warnings (Python's
+// and the commands' lines on stderr) and the divergence messages pass
+// through it: the one place where flags become keywords.
+
+#include <algorithm>
+#include <array>
+#include <regex>
+#include <string>
+#include <utility>
+
+#include "bindings.h"
+#include "cli/report.h"
+
+namespace contactlaws::python {
+namespace {
+
+// Phrases first: a flag followed by its value as a word, and the commands.
+constexpr std::array<std::pair<const char*, const char*>, 4> kPhrases = {{
+    {"--laws all", "laws=\"all\""},
+    {"contactlaws check", "contactlaws.check()"},
+    {"contactlaws run", "contactlaws.run()"},
+    {"contactlaws compare", "contactlaws.compare()"},
+}};
+// The flags that take no value: keywords set to True.
+constexpr std::array<const char*, 2> kSwitches = {"settle", "impacts-per-point"};
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string KeywordSpelling(const std::string& message) {
+  std::string text = message;
+  for (const auto& [from, to] : kPhrases) text = Replace(text, from, to);
+  static const std::regex flag("--([a-z][a-z0-9]*(-[a-z0-9]+)*)");
+  std::string spoken;
+  auto last = text.cbegin();
+  for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
+    spoken.append(last, (*it)[0].first);
+    std::string name = (*it)[1];
+    const bool is_switch = std::find(kSwitches.begin(), kSwitches.end(), name) != kSwitches.end();
+    for (char& c : name) c = c == '-' ? '_' : c;
+    spoken += is_switch ? name + "=True" : name;
+    last = (*it)[0].second;
+  }
+  spoken.append(last, text.cend());
+  return spoken;
+}
+
+void BindKeywordSpelling(pybind11::module_& m) {
+  cli::SetSpelling(&KeywordSpelling);
+  // contactlaws.Error, a ValueError, carries the command line's message
+  // with the keywords' names
+  static pybind11::exception<Error> error(m, "Error", PyExc_ValueError);
+  pybind11::register_exception_translator([](std::exception_ptr raised) {
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const Error& e) {
+      error(KeywordSpelling(e.what()).c_str());
+    }
+  });
+  m.def("_spelled", &KeywordSpelling, "a command line's message with the keywords' names");
+}
+
+}  // namespace contactlaws::python
