@@ -35,7 +35,14 @@ double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body)
 }  // namespace
 
 double TimeToClose(double g, double v, double a) {
-  if (a > 0) return (-v + std::sqrt(v * v + 2 * a * g)) / a;
+  if (a > 0) {
+    // the positive root of a h^2 / 2 + v h = g; closing (v > 0) in the form
+    // without cancellation: -v + sqrt(v^2 + 2 a g) is 0 in doubles once
+    // 2 a g < v^2 1e-16 (gravity's rounding along a wall's normal, 2e-15
+    // m/s^2, made every ball beside a wall "touching now")
+    const double root = std::sqrt(v * v + 2 * a * g);
+    return v > 0 ? 2 * g / (v + root) : (root - v) / a;
+  }
   if (v > 0) return g / v;
   return kInfinity;
 }

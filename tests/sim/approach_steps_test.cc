@@ -1,0 +1,77 @@
+// Copyright contactlaws authors.
+//
+// The steps the pairs apart allow the auto timestep (sim/approach_steps.h):
+// the time to close a gap against its closed forms, and the first step of
+// scenes whose pairs are apart.
+
+#include "sim/approach_steps.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "contactlaws/contactlaws.h"
+#include "mujoco_test_util.h"
+
+namespace contactlaws {
+namespace {
+
+class ApproachStepsTest : public testing::MujocoTest {};
+
+// Closed forms are met to the last bits but a few roundings.
+constexpr double kRoundoff = 1e-14;
+
+TEST_F(ApproachStepsTest, TimeToCloseMeetsItsClosedForms) {
+  // speed alone: g / v; acceleration alone: sqrt(2 g / a); both: the root
+  // of a h^2 / 2 + v h = g
+  EXPECT_NEAR(TimeToClose(0.1, 2.0, 0.0), 0.05, kRoundoff * 0.05);
+  EXPECT_NEAR(TimeToClose(0.1, 0.0, 9.81), std::sqrt(0.2 / 9.81), kRoundoff);
+  const double h = TimeToClose(0.1, 2.0, 9.81);
+  EXPECT_NEAR(9.81 * h * h / 2 + 2.0 * h, 0.1, kRoundoff);
+  // moving apart while accelerated together: first away, then back
+  const double back = TimeToClose(0.1, -1.0, 9.81);
+  EXPECT_NEAR(9.81 * back * back / 2 - back, 0.1, kRoundoff);
+  // apart and not accelerated together: never
+  EXPECT_EQ(TimeToClose(0.1, -1.0, 0.0), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(TimeToClose(0.1, 0.0, 0.0), std::numeric_limits<double>::infinity());
+}
+
+TEST_F(ApproachStepsTest, ATinyAccelerationDoesNotCancelTheSpeed) {
+  // gravity's rounding along a vertical wall's normal (2e-15 m/s^2) against
+  // a ball closing at 1.4 m/s: -v + sqrt(v^2 + 2 a g) is 0 in doubles
+  const double v = 1.415, g = 0.106, a = 2.17826e-15;
+  EXPECT_NEAR(TimeToClose(g, v, a), g / v, kRoundoff * g / v);
+}
+
+// A ball flying at a wall (a plane whose normal is horizontal) from 0.1 m:
+// its first auto step closes half the gap (no other pair, no contact).
+TEST_F(ApproachStepsTest, ABallFlyingAtAWallStepsHalfItsGap) {
+  constexpr double kSpeed = 1.415;  // m/s, towards the wall
+  constexpr double kGap = 0.1;      // m, between the ball's surface and the wall
+  constexpr double kRadius = 0.05;  // m
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option integrator="RK4" gravity="0 0 -9.81"/>
+  <worldbody>
+    <geom name="wall" type="plane" pos="0.2 0 0" zaxis="-1 0 0" size="1 1 0.1"/>
+    <body pos="{} 0 1"><freejoint/><geom name="ball" type="sphere" size="{}" mass="0.125"/></body>
+  </worldbody>
+  <keyframe><key qvel="{} 0 0 0 0 0"/></keyframe>
+  <custom>
+    <text name="contactlaw:wall" data="geom1=ball geom2=wall law=hertz stiffness=1e8"/>
+  </custom>
+</mujoco>)",
+                                      0.2 - kGap - kRadius, kRadius, kSpeed);
+  const Scene scene("wall.xml", LoadModelString(xml, "wall.xml"));
+  std::unique_ptr<Simulation> sim = scene.Make({});
+  mj_forward(sim->model(), sim->data());
+  AutoTimestep stepper(sim->contacts());
+  // gravity is along the wall: only the speed closes the gap
+  const double half_gap_time = 0.5 * kGap / kSpeed;
+  EXPECT_NEAR(stepper.Next(sim->data(), 1.0), half_gap_time, 1e-9 * half_gap_time);
+}
+
+}  // namespace
+}  // namespace contactlaws
