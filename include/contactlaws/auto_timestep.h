@@ -16,7 +16,8 @@
 //   2. A pair apart, with surface gap g (bounding spheres, or the exact
 //      distance to a plane), closing speed v (the geom centres' relative
 //      velocity along the line between them, plus what spinning can add,
-//      |w| times the bounding radius) and closing acceleration a (gravity on
+//      |w| times the bounding radius, none for a sphere, whose surface
+//      turns within itself) and closing acceleration a (gravity on
 //      a body that can fall towards a static one, and a driven body's top
 //      acceleration A w^2), asks for the time in which it could close
 //      gap_fraction of g: h with v h + a h^2 / 2 = gap_fraction g. Once that

@@ -32,6 +32,13 @@ double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body)
   return accel;
 }
 
+// The radius at which spin moves geom g's surface towards another geom's, m:
+// its bounding radius, but 0 for a sphere, whose surface turns within itself
+// (spin neither closes its gap nor adds to its impact speed).
+double SpinRadius(const mjModel* m, int g) {
+  return m->geom_type[g] == mjGEOM_SPHERE ? 0.0 : m->geom_rbound[g];
+}
+
 }  // namespace
 
 double TimeToClose(double g, double v, double a) {
@@ -100,12 +107,12 @@ bool ApproachSteps::Closes(const std::array<int, 2>& g, const std::array<int, 2>
   double spin = 0;   // what rotation adds to the closing speed
   if (rb[0] > 0 && rb[1] > 0) {
     for (int b = 0; b < 2; ++b) {
-      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
+      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * SpinRadius(m, g[b]);
     }
   } else {
     // a plane and the other geom's sphere
     const int b = rb[0] > 0 ? 0 : 1;
-    spin = mju_norm3(d->cvel + 6 * body[b]) * rb[b];
+    spin = mju_norm3(d->cvel + 6 * body[b]) * SpinRadius(m, g[b]);
   }
   mjtNum v[2][3], relative[3];
   for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
@@ -181,7 +188,7 @@ void ApproachSteps::SetReach(double bound) {
     mjtNum v[3];
     contacts_.PointVelocity(body, d->geom_xpos + 3 * g, v);
     double speed = mju_norm3(v);
-    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * m->geom_rbound[g];
+    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * SpinRadius(m, g);
     double accel = DriveAcceleration(cm, {body, body}) / 2;
     if (!Immovable(cm, body)) accel += gravity;
     const double travel = speed * bound + 0.5 * accel * bound * bound;

@@ -50,7 +50,8 @@ class ApproachSteps {
   // How two geoms close, from the current state: the gap between their
   // bounding spheres (or a plane and a sphere), m, and its closing speed (the
   // centres' relative velocity along the line between them plus what spin
-  // can add) and acceleration (gravity, drives' top_acceleration).
+  // can add, nothing for a sphere) and acceleration (gravity, drives'
+  // top_acceleration).
   struct Closing {
     double gap = 0;
     double speed = 0;

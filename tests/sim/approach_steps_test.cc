@@ -2,7 +2,7 @@
 //
 // The steps the pairs apart allow the auto timestep (sim/approach_steps.h):
 // the time to close a gap against its closed forms, and the first step of
-// scenes whose pairs are apart.
+// a ball flying at a wall, spinning or not.
 
 #include "sim/approach_steps.h"
 
@@ -46,9 +46,10 @@ TEST_F(ApproachStepsTest, ATinyAccelerationDoesNotCancelTheSpeed) {
   EXPECT_NEAR(TimeToClose(g, v, a), g / v, kRoundoff * g / v);
 }
 
-// A ball flying at a wall (a plane whose normal is horizontal) from 0.1 m:
-// its first auto step closes half the gap (no other pair, no contact).
-TEST_F(ApproachStepsTest, ABallFlyingAtAWallStepsHalfItsGap) {
+// The first auto step of a ball (radius 0.05 m) flying at 1.415 m/s at a
+// wall (a plane whose normal is horizontal) from 0.1 m, spinning at spin
+// rad/s about the vertical: no other pair, no contact.
+double FirstStepAtAWall(double spin) {
   constexpr double kSpeed = 1.415;  // m/s, towards the wall
   constexpr double kGap = 0.1;      // m, between the ball's surface and the wall
   constexpr double kRadius = 0.05;  // m
@@ -58,19 +59,29 @@ TEST_F(ApproachStepsTest, ABallFlyingAtAWallStepsHalfItsGap) {
     <geom name="wall" type="plane" pos="0.2 0 0" zaxis="-1 0 0" size="1 1 0.1"/>
     <body pos="{} 0 1"><freejoint/><geom name="ball" type="sphere" size="{}" mass="0.125"/></body>
   </worldbody>
-  <keyframe><key qvel="{} 0 0 0 0 0"/></keyframe>
+  <keyframe><key qvel="{} 0 0 0 0 {}"/></keyframe>
   <custom>
     <text name="contactlaw:wall" data="geom1=ball geom2=wall law=hertz stiffness=1e8"/>
   </custom>
 </mujoco>)",
-                                      0.2 - kGap - kRadius, kRadius, kSpeed);
+                                      0.2 - kGap - kRadius, kRadius, kSpeed, spin);
   const Scene scene("wall.xml", LoadModelString(xml, "wall.xml"));
   std::unique_ptr<Simulation> sim = scene.Make({});
   mj_forward(sim->model(), sim->data());
   AutoTimestep stepper(sim->contacts());
+  return stepper.Next(sim->data(), 1.0);
+}
+
+TEST_F(ApproachStepsTest, ABallFlyingAtAWallStepsHalfItsGap) {
   // gravity is along the wall: only the speed closes the gap
-  const double half_gap_time = 0.5 * kGap / kSpeed;
-  EXPECT_NEAR(stepper.Next(sim->data(), 1.0), half_gap_time, 1e-9 * half_gap_time);
+  const double half_gap_time = 0.5 * 0.1 / 1.415;
+  EXPECT_NEAR(FirstStepAtAWall(0), half_gap_time, 1e-9 * half_gap_time);
+}
+
+TEST_F(ApproachStepsTest, SpinDoesNotCloseASpheresGap) {
+  // a sphere's surface turns within itself: spinning at 30 rad/s (1.5 m/s
+  // at its surface) it closes its gap as it does without spin
+  EXPECT_EQ(FirstStepAtAWall(30), FirstStepAtAWall(0));
 }
 
 }  // namespace
