@@ -77,7 +77,9 @@
 //   7. The step is the smallest asked for, at most max_step (none by
 //      default: free flight under gravity alone is a parabola, which RK4
 //      integrates exactly, so the gap closure of a pair apart is what limits
-//      it), and grows at most by `growth` from one step to the next. A scene with
+//      it), and grows at most by `growth` from one step to the next: from
+//      the step the rules asked for, not from a step cut to land on a
+//      predicted touch or separation or at `until` (StepBound). A scene with
 //      dynamics of its own (anything but free bodies, gravity, the tags and
 //      drives: joints with springs, damping or limits, actuators, tendons,
 //      equality constraints) keeps its own opt.timestep as the flight
@@ -163,6 +165,7 @@ inline constexpr double kSettledTouchFactor = 10;
 inline constexpr double kSettledDurations = 3;
 
 class PairSteps;      // src/sim/contact_steps.h
+struct StepBound;     // src/sim/contact_steps.h
 class ApproachSteps;  // src/sim/approach_steps.h
 namespace internal {
 class DamperRate;     // src/mujoco/damper_rate.h
@@ -191,9 +194,9 @@ class AutoTimestep {
   long steps() const { return steps_; }
 
  private:
-  // The step a pair in contact allows at evaluation e: its fine step, cut to
-  // end just past d = 0 when it separates within it.
-  double ContactStep(const ContactData::Evaluation& e) const;
+  // Limits *bound by the step a pair in contact allows at evaluation e: its
+  // fine step, landed just past d = 0 when it separates within it.
+  void ContactStep(const ContactData::Evaluation& e, StepBound* bound) const;
   // The law's view of an evaluated point.
   ContactState State(const ContactData::Evaluation& e) const;
   // The step the friction of a pair in contact allows at evaluation e: the

@@ -2,13 +2,15 @@
 //
 // The steps the pairs apart allow the auto timestep (sim/approach_steps.h):
 // the time to close a gap against its closed forms, and the first step of
-// a ball flying at a wall, spinning or not.
+// a ball flying at a wall, spinning or not; the step after a landing on a
+// touch.
 
 #include "sim/approach_steps.h"
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -82,6 +84,30 @@ TEST_F(ApproachStepsTest, SpinDoesNotCloseASpheresGap) {
   // a sphere's surface turns within itself: spinning at 30 rad/s (1.5 m/s
   // at its surface) it closes its gap as it does without spin
   EXPECT_EQ(FirstStepAtAWall(30), FirstStepAtAWall(0));
+}
+
+// The paper's ball dropped from 1 m: the steps that land on its touch (just
+// before, just past) are slivers of the fine step, and the contact after
+// them takes its fine step at once, not a growth from the sliver (2x a
+// step: ~10 steps of 1e-3 ... 1 fine step).
+TEST_F(ApproachStepsTest, AContactLandedOnTakesItsFineStepAtOnce) {
+  const Scene scene(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
+  std::unique_ptr<Simulation> sim = scene.Make({});
+  AutoTimestep stepper(sim->contacts());
+  mjData* d = sim->data();
+  const double fine = HertzContactDuration(1.4e8, 1.5, 1.0, std::sqrt(2 * 9.81 * 0.9)) /
+                      StepsPerContact(kDefaultAccuracy);
+  // the first two steps in contact
+  std::vector<double> in_contact;
+  while (in_contact.size() < 2) {
+    const double h = stepper.Next(d, 1.0);
+    if (!sim->contacts().latest().empty()) in_contact.push_back(h);
+    sim->Step(h);
+    ASSERT_LT(d->time, 1.0);
+  }
+  // the fine step at the impact speed read just before the touch (5%: as
+  // AutoTimestepTest.TheStepShrinksOnApproachAndIsFineInContact)
+  for (const double h : in_contact) EXPECT_NEAR(h, fine, 0.05 * fine);
 }
 
 }  // namespace
