@@ -192,6 +192,10 @@ class AutoTimestep {
   // Steps taken at the fine step of a contact, and all steps.
   long fine_steps() const { return fine_steps_; }
   long steps() const { return steps_; }
+  // The shortest step the rules asked for at a contact's fine step, s (the
+  // landings on a touch or a separation and the growth limit aside): a
+  // fixed step as fine as the auto step's finest (infinite before any).
+  double finest_step() const { return finest_step_; }
 
  private:
   // Limits *bound by the step a pair in contact allows at evaluation e: its
@@ -236,6 +240,7 @@ class AutoTimestep {
   double previous_ = 0;
   long fine_steps_ = 0;
   long steps_ = 0;
+  double finest_step_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace contactlaws

@@ -276,6 +276,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   }
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;
+  if (fine) finest_step_ = std::min(finest_step_, bound.pace);
   if (previous_ > 0) bound.Limit(options_.growth * previous_);
   // the next step grows from the pace: neither a landing on a touch or a
   // separation nor a cut at `until` slows the growth after it
