@@ -55,6 +55,9 @@ struct AdvanceResult {
   // With the auto timestep: the steps taken, and those at a contact's fine step.
   long steps = 0;
   long fine_steps = 0;
+  // s: AutoTimestep::finest_step(), a fixed step as fine as the finest
+  // step the rules asked for (infinite when no contact came near)
+  double finest_step = 0;
 };
 
 // Steps sim from its current time until options.duration (or the first

@@ -16,7 +16,8 @@
 //   2. A pair apart, with surface gap g (bounding spheres, or the exact
 //      distance to a plane), closing speed v (the geom centres' relative
 //      velocity along the line between them, plus what spinning can add,
-//      |w| times the bounding radius) and closing acceleration a (gravity on
+//      |w| times the bounding radius, none for a sphere, whose surface
+//      turns within itself) and closing acceleration a (gravity on
 //      a body that can fall towards a static one, and a driven body's top
 //      acceleration A w^2), asks for the time in which it could close
 //      gap_fraction of g: h with v h + a h^2 / 2 = gap_fraction g. Once that
@@ -76,7 +77,9 @@
 //   7. The step is the smallest asked for, at most max_step (none by
 //      default: free flight under gravity alone is a parabola, which RK4
 //      integrates exactly, so the gap closure of a pair apart is what limits
-//      it), and grows at most by `growth` from one step to the next. A scene with
+//      it), and grows at most by `growth` from one step to the next: from
+//      the step the rules asked for, not from a step cut to land on a
+//      predicted touch or separation or at `until` (StepBound). A scene with
 //      dynamics of its own (anything but free bodies, gravity, the tags and
 //      drives: joints with springs, damping or limits, actuators, tendons,
 //      equality constraints) keeps its own opt.timestep as the flight
@@ -162,6 +165,7 @@ inline constexpr double kSettledTouchFactor = 10;
 inline constexpr double kSettledDurations = 3;
 
 class PairSteps;      // src/sim/contact_steps.h
+struct StepBound;     // src/sim/contact_steps.h
 class ApproachSteps;  // src/sim/approach_steps.h
 namespace internal {
 class DamperRate;     // src/mujoco/damper_rate.h
@@ -188,11 +192,15 @@ class AutoTimestep {
   // Steps taken at the fine step of a contact, and all steps.
   long fine_steps() const { return fine_steps_; }
   long steps() const { return steps_; }
+  // The shortest step the rules asked for at a contact's fine step, s (the
+  // landings on a touch or a separation and the growth limit aside): a
+  // fixed step as fine as the auto step's finest (infinite before any).
+  double finest_step() const { return finest_step_; }
 
  private:
-  // The step a pair in contact allows at evaluation e: its fine step, cut to
-  // end just past d = 0 when it separates within it.
-  double ContactStep(const ContactData::Evaluation& e) const;
+  // Limits *bound by the step a pair in contact allows at evaluation e: its
+  // fine step, landed just past d = 0 when it separates within it.
+  void ContactStep(const ContactData::Evaluation& e, StepBound* bound) const;
   // The law's view of an evaluated point.
   ContactState State(const ContactData::Evaluation& e) const;
   // The step the friction of a pair in contact allows at evaluation e: the
@@ -232,6 +240,7 @@ class AutoTimestep {
   double previous_ = 0;
   long fine_steps_ = 0;
   long steps_ = 0;
+  double finest_step_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace contactlaws

@@ -132,6 +132,7 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   if (stepper) {
     result.steps = stepper->steps();
     result.fine_steps = stepper->fine_steps();
+    result.finest_step = stepper->finest_step();
   }
   if (energy.enabled()) {
     mj_forward(sim->model(), sim->data());  // the ledger of the final state

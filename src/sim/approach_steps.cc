@@ -32,10 +32,24 @@ double DriveAcceleration(const ContactModel& cm, const std::array<int, 2>& body)
   return accel;
 }
 
+// The radius at which spin moves geom g's surface towards another geom's, m:
+// its bounding radius, but 0 for a sphere, whose surface turns within itself
+// (spin neither closes its gap nor adds to its impact speed).
+double SpinRadius(const mjModel* m, int g) {
+  return m->geom_type[g] == mjGEOM_SPHERE ? 0.0 : m->geom_rbound[g];
+}
+
 }  // namespace
 
 double TimeToClose(double g, double v, double a) {
-  if (a > 0) return (-v + std::sqrt(v * v + 2 * a * g)) / a;
+  if (a > 0) {
+    // the positive root of a h^2 / 2 + v h = g; closing (v > 0) in the form
+    // without cancellation: -v + sqrt(v^2 + 2 a g) is 0 in doubles once
+    // 2 a g < v^2 1e-16 (gravity's rounding along a wall's normal, 2e-15
+    // m/s^2, made every ball beside a wall "touching now")
+    const double root = std::sqrt(v * v + 2 * a * g);
+    return v > 0 ? 2 * g / (v + root) : (root - v) / a;
+  }
   if (v > 0) return g / v;
   return kInfinity;
 }
@@ -56,9 +70,9 @@ ApproachSteps::ApproachSteps(const ContactData& contacts, double gap_fraction)
 ApproachSteps::~ApproachSteps() = default;
 ApproachSteps::ApproachSteps(ApproachSteps&&) noexcept = default;
 
-double ApproachSteps::Step(const mjData* d, double step, double reach_bound,
-                           const std::vector<uint8_t>& in_contact, const PairSteps& pair_steps,
-                           bool* fine) {
+void ApproachSteps::Step(const mjData* d, double reach_bound,
+                         const std::vector<uint8_t>& in_contact, const PairSteps& pair_steps,
+                         StepBound* bound, bool* fine) {
   const ContactModel& cm = contacts_.model();
   const mjModel* m = cm.model();
   // only the pairs that could close within reach_bound can shorten the
@@ -67,17 +81,15 @@ double ApproachSteps::Step(const mjData* d, double step, double reach_bound,
   sweep_->Overlaps(d, reach_, [&](int g0, int g1) {
     const int p = cm.FindPair(g0, g1);
     if (p >= 0) {
-      if (!in_contact[p]) step = std::min(step, PairStep(p, pair_steps, fine));
+      if (!in_contact[p]) PairStep(p, pair_steps, bound, fine);
     } else if (!DefaultContactFilter(m, g0, g1)) {
       // untagged: the scene's step while MuJoCo's contact can reach it
-      step = std::min(step, UntaggedStep(g0, g1, std::max(m->geom_margin[g0],
-                                                          m->geom_margin[g1])));
+      bound->Limit(UntaggedStep(g0, g1, std::max(m->geom_margin[g0], m->geom_margin[g1])));
     }
   });
   for (int i = 0; i < m->npair; ++i) {
-    step = std::min(step, UntaggedStep(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]));
+    bound->Limit(UntaggedStep(m->pair_geom1[i], m->pair_geom2[i], m->pair_margin[i]));
   }
-  return step;
 }
 
 bool ApproachSteps::Closes(const std::array<int, 2>& g, const std::array<int, 2>& body,
@@ -93,12 +105,12 @@ bool ApproachSteps::Closes(const std::array<int, 2>& g, const std::array<int, 2>
   double spin = 0;   // what rotation adds to the closing speed
   if (rb[0] > 0 && rb[1] > 0) {
     for (int b = 0; b < 2; ++b) {
-      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * rb[b];
+      if (!cm.FindDrive(body[b])) spin += mju_norm3(d->cvel + 6 * body[b]) * SpinRadius(m, g[b]);
     }
   } else {
     // a plane and the other geom's sphere
     const int b = rb[0] > 0 ? 0 : 1;
-    spin = mju_norm3(d->cvel + 6 * body[b]) * rb[b];
+    spin = mju_norm3(d->cvel + 6 * body[b]) * SpinRadius(m, g[b]);
   }
   mjtNum v[2][3], relative[3];
   for (int b = 0; b < 2; ++b) contacts_.PointVelocity(body[b], d->geom_xpos + 3 * g[b], v[b]);
@@ -108,13 +120,15 @@ bool ApproachSteps::Closes(const std::array<int, 2>& g, const std::array<int, 2>
   return true;
 }
 
-double ApproachSteps::PairStep(int p, const PairSteps& pair_steps, bool* fine) const {
+void ApproachSteps::PairStep(int p, const PairSteps& pair_steps, StepBound* bound,
+                             bool* fine) const {
   const GeomPair& pair = contacts_.model().pairs()[p];
   Closing c;
   if (!Closes(pair.geom, pair.body, top_acceleration_[p], &c)) {
     // always near
     *fine = true;
-    return pair_steps.Fine(p, 0.0);
+    bound->Limit(pair_steps.Fine(p, 0.0));
+    return;
   }
   const double gap = c.gap;
   const double closing = c.speed;
@@ -122,7 +136,10 @@ double ApproachSteps::PairStep(int p, const PairSteps& pair_steps, bool* fine) c
   const double pair_fine = pair_steps.Fine(p, SpeedAtTouch(closing, accel, gap));
   const double allowed =
       gap > 0 ? TimeToClose(gap_fraction_ * gap, closing, accel) : 0.0;
-  if (allowed > pair_fine) return allowed;
+  if (allowed > pair_fine) {
+    bound->Limit(allowed);
+    return;
+  }
   // near: fine steps, and the ones that reach the touch end just before and
   // just past it,
   // so that a force that jumps at d = 0+ acts from the start of a step (a
@@ -130,13 +147,15 @@ double ApproachSteps::PairStep(int p, const PairSteps& pair_steps, bool* fine) c
   // first order in the step)
   *fine = true;
   // bounding spheres that overlap out of contact: no touch to predict
-  if (!(gap > 0)) return pair_fine;
+  if (!(gap > 0)) {
+    bound->Limit(pair_fine);
+    return;
+  }
   const double touch = TimeToClose(gap, closing, accel);
   // first to just before the touch (the impact speed is read there, before
   // any force), then across it
   const double lead = kTouchOvershoot * pair_fine;
-  if (touch > 2 * lead) return std::min(touch - lead, pair_fine);
-  return touch + lead;
+  bound->Land(touch > 2 * lead ? touch - lead : touch + lead, pair_fine);
 }
 
 double ApproachSteps::UntaggedStep(int g0, int g1, double margin) const {
@@ -174,7 +193,7 @@ void ApproachSteps::SetReach(double bound) {
     mjtNum v[3];
     contacts_.PointVelocity(body, d->geom_xpos + 3 * g, v);
     double speed = mju_norm3(v);
-    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * m->geom_rbound[g];
+    if (!cm.FindDrive(body)) speed += mju_norm3(d->cvel + 6 * body) * SpinRadius(m, g);
     double accel = DriveAcceleration(cm, {body, body}) / 2;
     if (!Immovable(cm, body)) accel += gravity;
     const double travel = speed * bound + 0.5 * accel * bound * bound;

@@ -35,13 +35,12 @@ class ApproachSteps {
   ~ApproachSteps();
   ApproachSteps(ApproachSteps&&) noexcept;
 
-  // The smallest of step and the steps the pairs apart allow from the
-  // current state of d (its kinematics computed), among those that could
-  // close within reach_bound (s). in_contact: per pair, nonzero for the
-  // pairs in contact, which are skipped. *fine is set when a tagged pair is
-  // near.
-  double Step(const mjData* d, double step, double reach_bound,
-              const std::vector<uint8_t>& in_contact, const PairSteps& pair_steps, bool* fine);
+  // Limits *bound by the steps the pairs apart allow from the current state
+  // of d (its kinematics computed), among those that could close within
+  // reach_bound (s). in_contact: per pair, nonzero for the pairs in contact,
+  // which are skipped. *fine is set when a tagged pair is near.
+  void Step(const mjData* d, double reach_bound, const std::vector<uint8_t>& in_contact,
+            const PairSteps& pair_steps, StepBound* bound, bool* fine);
 
   // Whether a pair that MuJoCo's own contact handles exists.
   bool has_untagged() const { return has_untagged_; }
@@ -50,7 +49,8 @@ class ApproachSteps {
   // How two geoms close, from the current state: the gap between their
   // bounding spheres (or a plane and a sphere), m, and its closing speed (the
   // centres' relative velocity along the line between them plus what spin
-  // can add) and acceleration (gravity, drives' top_acceleration).
+  // can add, nothing for a sphere) and acceleration (gravity, drives'
+  // top_acceleration).
   struct Closing {
     double gap = 0;
     double speed = 0;
@@ -60,10 +60,11 @@ class ApproachSteps {
   // height field, ...): then no gap is known.
   bool Closes(const std::array<int, 2>& geom, const std::array<int, 2>& body,
               double top_acceleration, Closing* c) const;
-  // The step tagged pair p (out of contact) allows: the time to close a
-  // fraction of its gap, or the fine step when it is near (then *fine is
-  // set), cut to end at its predicted touch.
-  double PairStep(int p, const PairSteps& pair_steps, bool* fine) const;
+  // Limits *bound by the step tagged pair p (out of contact) allows: the
+  // time to close a fraction of its gap, or the fine step when it is near
+  // (then *fine is set), landed just before and just past its predicted
+  // touch.
+  void PairStep(int p, const PairSteps& pair_steps, StepBound* bound, bool* fine) const;
   // The step the untagged pair of geoms g0, g1 allows (MuJoCo's contact
   // starts at margin, m): the scene's own step while it is within margin or
   // could close gap_fraction of its gap beyond it within that step;

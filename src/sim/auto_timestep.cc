@@ -198,7 +198,7 @@ ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
   return PointState(e, effective_mass_[e.pair]);
 }
 
-double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
+void AutoTimestep::ContactStep(const ContactData::Evaluation& e, StepBound* bound) const {
   const double floor = contacts_.model().pairs()[e.pair].params.min_impact_velocity;
   const double tangential = TangentialStep(e);
   // a settled contact (it touched barely faster than the law's floor of v0
@@ -209,31 +209,35 @@ double AutoTimestep::ContactStep(const ContactData::Evaluation& e) const {
     const double lasted = contacts_.data()->time - contacts_.point_episodes()[e.episode].time_contact;
     const bool slow_touch = e.impact_velocity <= kSettledTouchFactor * floor;
     if (slow_touch || lasted > kSettledDurations * fine * pair_steps_->PerContact(e.pair)) {
-      return std::min(pair_steps_->Settled(e.pair), tangential);
+      bound->Limit(std::min(pair_steps_->Settled(e.pair), tangential));
+      return;
     }
   }
   // a separation slower than the law's floor of v0 (a resting contact's
   // chatter) is left to the fine step
-  if (!(-e.depth_rate > floor)) return std::min(fine, tangential);
+  if (!(-e.depth_rate > floor)) {
+    bound->Limit(std::min(fine, tangential));
+    return;
+  }
   const GeomPair& pair = contacts_.model().pairs()[e.pair];
   const double closing = GravityClosingAcceleration(contacts_.model(), pair, e.normal);
   const double overshoot = kSeparationOvershoot * fine;
   const double separation = TimeToSeparate(e.depth, -e.depth_rate, closing) + overshoot;
-  return std::min({separation, fine, tangential});
+  bound->Land(separation, std::min(fine, tangential));
 }
 
 double AutoTimestep::Next(mjData* d, double until) {
   const ContactModel& cm = contacts_.model();
   const mjModel* m = cm.model();
   const int npair = static_cast<int>(cm.pairs().size());
-  double step = flight_step_;
+  StepBound bound{flight_step_, flight_step_};
   bool fine = false;
 
   // pairs in contact at the last evaluation (a pair may have several
   // points): their fine step
   int in_contact = 0;
   for (const ContactData::Evaluation& e : contacts_.latest()) {
-    step = std::min(step, ContactStep(e));
+    ContactStep(e, &bound);
     fine = true;
     if (!in_contact_[e.pair]) {
       in_contact_[e.pair] = 1;
@@ -246,7 +250,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   // DampingCoefficient)
   for (const ContactData::Evaluation& e : contacts_.latest()) {
     double& c = pair_damping_[e.pair];
-    step = std::min(step, DamperLag(effective_mass_[e.pair], c));
+    bound.Limit(DamperLag(effective_mass_[e.pair], c));
     c = 0;
   }
   // and friction's dampers, on the inertia at the points (the points come
@@ -255,8 +259,8 @@ double AutoTimestep::Next(mjData* d, double until) {
   const size_t points = contacts_.latest().size();
   for (size_t first = 0, end = 0; first < points; first = end) {
     while (end < points && contacts_.latest()[end].pair == contacts_.latest()[first].pair) ++end;
-    step = std::min(step, FrictionLag(d, first, end));
-    if (end - first > 1) step = std::min(step, NormalLag(d, first, end));
+    bound.Limit(FrictionLag(d, first, end));
+    if (end - first > 1) bound.Limit(NormalLag(d, first, end));
   }
 
   // the other pairs: the time to close a fraction of their gap, from the
@@ -266,14 +270,18 @@ double AutoTimestep::Next(mjData* d, double until) {
     mj_comPos(m, d);
     mj_comVel(m, d);
     // the pairs that could close within the step so far, growth included
-    const double reach = previous_ > 0 ? std::min(step, options_.growth * previous_) : step;
-    step = approach_->Step(d, step, reach, in_contact_, *pair_steps_, &fine);
+    const double reach =
+        previous_ > 0 ? std::min(bound.step, options_.growth * previous_) : bound.step;
+    approach_->Step(d, reach, in_contact_, *pair_steps_, &bound, &fine);
   }
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;
-  if (previous_ > 0) step = std::min(step, options_.growth * previous_);
-  previous_ = step;  // a cut at `until` does not slow the growth after it
-  step = std::min(step, until);
+  if (fine) finest_step_ = std::min(finest_step_, bound.pace);
+  if (previous_ > 0) bound.Limit(options_.growth * previous_);
+  // the next step grows from the pace: neither a landing on a touch or a
+  // separation nor a cut at `until` slows the growth after it
+  previous_ = bound.pace;
+  const double step = std::min(bound.step, until);
   ++steps_;
   fine_steps_ += fine;
   return step;

@@ -9,6 +9,7 @@
 #ifndef CONTACTLAWS_SIM_CONTACT_STEPS_H_
 #define CONTACTLAWS_SIM_CONTACT_STEPS_H_
 
+#include <algorithm>
 #include <vector>
 
 #include "contactlaws/auto_timestep.h"
@@ -16,6 +17,27 @@
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws {
+
+// The step the auto timestep takes, as its rules bound it, and the pace it
+// keeps: the same step but for the cuts that land it on a pair's predicted
+// touch or separation. The next step grows from the pace: a landing is a
+// sliver of a fine step (kTouchOvershoot of it past a touch), and growing
+// from it took ~10 steps back to the fine step after every touch (64 balls
+// in a box: 2/3 of the steps).
+struct StepBound {
+  double step;  // s
+  double pace;  // s, >= step
+  // A rule's bound on both.
+  void Limit(double bound) {
+    step = std::min(step, bound);
+    pace = std::min(pace, bound);
+  }
+  // A landing at landing (s) on a pair that asks for pace_bound otherwise.
+  void Land(double landing, double pace_bound) {
+    Limit(pace_bound);
+    step = std::min(step, landing);
+  }
+};
 
 // Steps per contact duration, by the law's family.
 class ContactSteps {

@@ -1,11 +1,12 @@
 // Copyright contactlaws authors.
 //
-// auto_cost: issue 22's costs of the contact-aware step, as ratios of CPU
+// auto_cost: issues 22's and 34's costs of the contact-aware step, as ratios of CPU
 // time from one run (scripts/bench.sh prints them; no timed test holds them).
 //
-//   auto_cost [--short] [ITEM...]   the goals below (ITEM: 1, 1b, 1c; all by
-//                                   default), with the runs' energy drifts;
-//                                   --short: a tenth of each duration
+//   auto_cost [--short] [ITEM...]   the goals below (ITEM: 1, 1b, 1c, 7; all
+//                                   by default), with the runs' energy drifts;
+//                                   --short: a tenth of each duration, item 7
+//                                   run once
 //   auto_cost write DIR        the scenes as files (for the command line)
 //
 // Goals (CPU time of this thread):
@@ -13,6 +14,10 @@
 //   1b  49 balls, ball-ball masked, 20 s at --accuracy 1e-5, rows at
 //       1000 per second / no rows                                   <= 1.3
 //   1c  the 666 pile, 0.1 s under auto / at a fixed 3e-5 s          <= 1.5
+//   7   issue 34: auto at 1e-3 / a fixed step as fine as the finest step
+//       it asked for (AdvanceResult::finest_step), medians of 3 runs
+//       alternated, on the 64 balls in a box (mjcf/ball_box_64.xml) 0.1 s,
+//       the 666 pile 0.1 s and the 49 balls tagged 2 s           <= 1.5
 
 #include <time.h>
 
@@ -26,6 +31,7 @@
 #include <fmt/format.h>
 
 #include "auto_scenes.h"
+#include "ball_box.h"
 #include "contactlaws/contactlaws.h"
 
 namespace contactlaws::bench {
@@ -43,6 +49,7 @@ struct Measured {
   double energy_scale = 0;  // J: |total| at the start
   long steps = 0;
   long rows = 0;
+  double finest_step = 0;  // s, AdvanceResult::finest_step under auto
 };
 
 // Runs xml for duration s: auto at accuracy (fixed_step 0) or at fixed_step,
@@ -73,7 +80,8 @@ Measured Run(const std::string& xml, const std::string& name, double duration,
   mj_forward(sim->model(), sim->data());
   out.energy_drift = sim->Energy().total() - start;
   out.energy_scale = std::abs(start);
-  out.steps = result.steps;
+  out.steps = fixed_step > 0 ? std::lround(duration / fixed_step) : result.steps;
+  out.finest_step = result.finest_step;
   return out;
 }
 
@@ -90,6 +98,7 @@ void Ratio(const char* what, double ratio, double goal) {
 void Drop(double scale);
 void Rows(double scale);
 void Pile(double scale);
+void AgainstFinest(bool short_runs);
 
 int Goals(double scale, const std::vector<std::string>& items) {
   auto wanted = [&](const char* item) {
@@ -98,6 +107,7 @@ int Goals(double scale, const std::vector<std::string>& items) {
   if (wanted("1")) Drop(scale);
   if (wanted("1b")) Rows(scale);
   if (wanted("1c")) Pile(scale);
+  if (wanted("7")) AgainstFinest(scale < 1);
   return 0;
 }
 
@@ -132,12 +142,53 @@ void Pile(double scale) {
   Ratio("auto / fixed 3e-5 s", automatic.cpu / fixed.cpu, 1.5);
 }
 
+// The median of runs' CPU times.
+double MedianCpu(std::vector<Measured> runs) {
+  std::sort(runs.begin(), runs.end(),
+            [](const Measured& a, const Measured& b) { return a.cpu < b.cpu; });
+  return runs[runs.size() / 2].cpu;
+}
+
+// xml for duration s under auto at 1e-3, and at a fixed step as fine as the
+// finest step the auto run asked for; runs times each, alternated.
+void AutoAgainstItsFinest(const char* what, const std::string& xml, const std::string& name,
+                          double duration, int runs) {
+  std::vector<Measured> automatic, fixed;
+  for (int i = 0; i < runs; ++i) {
+    automatic.push_back(Run(xml, name, duration, 1e-3, 0, 0));
+    if (!std::isfinite(automatic.back().finest_step)) {
+      fmt::print("  {}, {:g} s: no contact came near\n", what, duration);
+      return;
+    }
+    fixed.push_back(Run(xml, name, duration, 0, automatic.back().finest_step, 0));
+  }
+  fmt::print("  {}, {:g} s: finest auto step {:.4g} s\n", what, duration,
+             automatic.back().finest_step);
+  Print("auto at 1e-3", automatic.back());
+  Print("fixed at the finest", fixed.back());
+  Ratio("auto / fixed at its finest, CPU (median)", MedianCpu(automatic) / MedianCpu(fixed), 1.5);
+}
+
+void AgainstFinest(bool short_runs) {
+  const int runs = short_runs ? 1 : 3;
+  fmt::print("issue 34, items 6 and 7: auto against a fixed step as fine as its finest, "
+             "no rows, {} run(s) each\n", runs);
+  // --short: still past the first contacts (the pile lands at 0.045 s, the
+  // drop at 1.0 s)
+  AutoAgainstItsFinest("64 balls in a box", BallBoxXml(64), "ball_box_64.xml",
+                       short_runs ? 0.01 : 0.1, runs);
+  AutoAgainstItsFinest("the 666 pile", PileXml(), "pile_216.xml", short_runs ? 0.05 : 0.1, runs);
+  AutoAgainstItsFinest("49 balls dropped, ball-ball tagged", BallDropXml(BallBallPairs::kTagged),
+                       "drop_tagged.xml", short_runs ? 1.02 : 2, runs);
+}
+
 int Write(const std::string& dir) {
   const std::pair<std::string, std::string> files[] = {
       {"drop_untagged.xml", BallDropXml(BallBallPairs::kUntagged)},
       {"drop_tagged.xml", BallDropXml(BallBallPairs::kTagged)},
       {"drop_masked.xml", BallDropXml(BallBallPairs::kMasked)},
-      {"pile_216.xml", PileXml()}};
+      {"pile_216.xml", PileXml()},
+      {"ball_box_64.xml", BallBoxXml(64)}};
   for (const auto& [name, xml] : files) {
     const std::string path = dir + "/" + name;
     std::ofstream file(path, std::ios::binary);
@@ -154,7 +205,7 @@ int Write(const std::string& dir) {
 }  // namespace contactlaws::bench
 
 int Usage() {
-  fmt::print(stderr, "usage: auto_cost [--short] [1|1b|1c]... | auto_cost write DIR\n");
+  fmt::print(stderr, "usage: auto_cost [--short] [1|1b|1c|7]... | auto_cost write DIR\n");
   return 2;
 }
 
@@ -166,7 +217,7 @@ int main(int argc, char** argv) {
       const bool short_runs = first == "--short";
       std::vector<std::string> items(argv + 1 + short_runs, argv + argc);
       for (const std::string& item : items) {
-        if (item != "1" && item != "1b" && item != "1c") return Usage();
+        if (item != "1" && item != "1b" && item != "1c" && item != "7") return Usage();
       }
       return contactlaws::bench::Goals(short_runs ? 0.1 : 1.0, items);
     }

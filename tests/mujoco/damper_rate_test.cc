@@ -83,5 +83,29 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
               6 * kDamping / kMass, 1e-9 * kDamping / kMass);
 }
 
+TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
+  // balls 0 and 4 of a row of 6 free balls (their dofs apart, others'
+  // between), touching along x: a normal damper between their centres
+  // moves both masses, c (1/m + 1/m), and turns neither; the others' dofs
+  // take no part
+  constexpr double kRadius = 0.1;
+  std::string bodies;
+  for (int i = 0; i < 6; ++i) {
+    // ball 4 touches ball 0; the others stand apart along y
+    bodies += fmt::format(R"(<body pos="{} {} 1"><freejoint/><geom type="sphere" size="{}"
+      mass="{}"/></body>)", i == 4 ? 2 * kRadius : 0.0, i == 4 ? 0 : i, kRadius, kMass);
+  }
+  model_ = Load("<mujoco><worldbody>" + bodies + "</worldbody></mujoco>");
+  mjData* d = MakeData(model_.get());
+  mj_forward(model_.get(), d);
+  pair_.body = {1, 5};  // balls 0 and 4: body 0 is the world
+  const mjtNum pos[3] = {kRadius, 0, 1};
+  const mjtNum normal[3] = {1, 0, 0};
+  DamperRate rate;
+  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, pos, normal, &kDamping,
+                        DamperDirection::kNormal),
+              2 * kDamping / kMass, 1e-9 * kDamping / kMass);
+}
+
 }  // namespace
 }  // namespace contactlaws::internal
