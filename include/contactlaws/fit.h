@@ -82,8 +82,18 @@ ReplayOptions WithParameters(const ReplayOptions& options,
 std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
                                  const std::vector<FitParameter>& parameters);
 
-// "law/friction" of the scene's first contactlaw tag with the overrides
-// ("flores/coulomb"); "mujoco" for a scene without one.
+// A law and a friction model (a tag's, with the overrides).
+struct Combination {
+  LawId law{};
+  FrictionKind friction = FrictionKind::kCoulomb;
+};
+
+// The law and friction model of the scene's first contactlaw tag with the
+// overrides; nullopt for a scene without one (MuJoCo's own contact).
+std::optional<Combination> FirstCombination(const Scene& scene, const Overrides& overrides);
+
+// "law/friction" of FirstCombination ("flores/coulomb"); "mujoco" for a
+// scene without a contactlaw tag.
 std::string CombinationName(const Scene& scene, const Overrides& overrides);
 
 // Refuses (Error naming the key) a parameter no tag of the scene reads under

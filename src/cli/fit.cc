@@ -27,6 +27,7 @@ struct Fitted {
   FitResult fit;
   std::vector<ReplayedTrajectory> train, validate;
   std::string label;  // "flores/coulomb"
+  std::optional<Combination> combination;  // the label's law and friction; none: "mujoco"
 };
 
 // The first contactlaw tag of the scene with the fitted values, as a line
@@ -45,11 +46,16 @@ std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& op
     if (o.restitution) keys.emplace_back("restitution", fmt::format("{}", *o.restitution));
     if (o.dissipation) keys.emplace_back("dissipation", fmt::format("{}", *o.dissipation));
     if (o.mu) keys.emplace_back("mu", fmt::format("{}", *o.mu));
-    const ReplayOptions fitted = WithParameters(options, parameters, f.fit.values);
-    for (const auto& kv : fitted.simulation.overrides.keys) {
-      // the fitted values to 6 digits: what a scene's author writes
-      const std::optional<double> v = ParseNumber(kv.second);
-      keys.emplace_back(kv.first, v ? fmt::format("{:.6g}", *v) : kv.second);
+    // --set's words, then the fitted values; numbers to 6 digits: what a
+    // scene's author writes
+    for (const auto& [key, value] : o.keys) {
+      const std::optional<double> v = ParseNumber(value);
+      keys.emplace_back(key, v ? fmt::format("{:.6g}", *v) : value);
+    }
+    for (size_t k = 0; k < parameters.size(); ++k) {
+      if (parameters[k].tag_key) {
+        keys.emplace_back(parameters[k].key, fmt::format("{:.6g}", f.fit.values[k]));
+      }
     }
     const std::string_view data = m->text_data + m->text_adr[i];
     lines += fmt::format("<text name=\"{}\" data=\"{}\"/>\n", name, WithKeys(data, keys));
@@ -148,6 +154,7 @@ int FitCommand(const FitArgs& args) {
       f.law = law;
       f.friction = friction;
       f.label = CombinationName(scene, o.simulation.overrides);
+      f.combination = FirstCombination(scene, o.simulation.overrides);
       fitted.push_back(std::move(f));
       combos.push_back(std::move(o));
     }
@@ -215,9 +222,8 @@ int FitCommand(const FitArgs& args) {
   for (const std::string& column : ReplayColumns()) error_header.push_back(column);
   errors.Header(error_header);
   for (const Fitted& f : fitted) {
-    const std::string law = f.label.substr(0, f.label.find('/'));
-    const size_t slash = f.label.find('/');
-    const std::string friction = slash == std::string::npos ? "" : f.label.substr(slash + 1);
+    const std::string law(f.combination ? LawName(f.combination->law) : "mujoco");
+    const std::string friction(f.combination ? FrictionName(f.combination->friction) : "");
     std::vector<std::string> row = {law, friction};
     for (size_t i = 0; i < parameters.size(); ++i) {
       const std::optional<double> v = ValueOf(f, i);

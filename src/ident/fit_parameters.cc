@@ -216,8 +216,7 @@ ReplayOptions WithParameters(const ReplayOptions& options,
   for (size_t i = 0; i < parameters.size(); ++i) {
     const FitParameter& p = parameters[i];
     if (p.tag_key) {
-      // 17 significant digits: the tag parser reads back the same double
-      out.simulation.overrides.keys.emplace_back(p.key, fmt::format("{:.17g}", values[i]));
+      out.simulation.overrides.values.push_back({p.key, values[i]});
     } else {
       ModelEdit edit = p.edit;
       edit.value = values[i];

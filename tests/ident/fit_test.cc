@@ -81,9 +81,11 @@ TEST(FitTest, ParametersMapToTagKeysAndModelEdits) {
   EXPECT_NEAR(p[0].At(0.5), 1e6, 1e6 * 1e-14);  // exp(log) rounds
   EXPECT_DOUBLE_EQ(p[1].At(0.25), -0.005);
   const ReplayOptions o = WithParameters(ReplayOptions(), p, {2.5e5, -0.002});
-  ASSERT_EQ(o.simulation.overrides.keys.size(), 1u);
-  EXPECT_EQ(o.simulation.overrides.keys[0].first, "stiffness");
-  EXPECT_EQ(std::stod(o.simulation.overrides.keys[0].second), 2.5e5);
+  // the tag key as a number, no word
+  EXPECT_TRUE(o.simulation.overrides.keys.empty());
+  ASSERT_EQ(o.simulation.overrides.values.size(), 1u);
+  EXPECT_EQ(o.simulation.overrides.values[0].key, "stiffness");
+  EXPECT_EQ(o.simulation.overrides.values[0].value, 2.5e5);
   ASSERT_EQ(o.edits.size(), 1u);
   UniqueModel m(mj_copyModel(nullptr, scene.model()));
   ApplyEdits(m.get(), o.edits);
@@ -189,6 +191,34 @@ TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
   const FitResult b = Fit(replay, fit);
   EXPECT_EQ(a.values, b.values);
   EXPECT_EQ(a.score, b.score);
+}
+
+// A fit's evaluation sets its values on the tags as numbers and its edits on
+// a copy of the model: the tags' text is read once, when the scene is made.
+// Overwritten after that with words the parser refuses, it changes no
+// evaluation (tag keys and a model edit); read again, it would be refused.
+TEST(FitTest, AnEvaluationReadsNoText) {
+  const Scene scene = CubeScene(kTruth);
+  const MeasuredData tosses = Simulated(scene, TossStarts(4, 5), TossOptions());
+  const Replay replay(scene, tosses);
+  FitOptions fit;
+  fit.replay = TossOptions();
+  fit.replay.jobs = 2;
+  fit.parameters =
+      ParseFitParameters("restitution=0.1:0.9,mu=0.1:1,cube.mass_scale=0.5:2", scene.model());
+  fit.budget = 5;
+  fit.seed = 5;
+  const FitResult intact = Fit(replay, fit);
+  // the test's own model: nothing else reads it
+  mjModel* m = const_cast<mjModel*>(scene.model());
+  for (int i = 0; i < m->ntextdata; ++i) {
+    if (m->text_data[i] != '\0') m->text_data[i] = '!';
+  }
+  EXPECT_THROW(ContactModel(scene.model(), "cube.xml"), Error);
+  const FitResult unread = Fit(replay, fit);
+  EXPECT_EQ(unread.evaluations, 5);
+  EXPECT_EQ(unread.values, intact.values);
+  EXPECT_EQ(unread.score, intact.score);
 }
 
 // The start of a fit refused in one line naming the key, value and bounds.
