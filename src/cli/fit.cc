@@ -112,9 +112,13 @@ int FitCommand(const FitArgs& args) {
   if (validate_data) validate.emplace(scene, *validate_data);
   Metric metric = Metric::kEq;
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
-  const std::vector<FitParameter> parameters = ParseFitParameters(args.params, scene.model());
+  const std::vector<FitParameter> parameters =
+      UnderOption("--params", [&] { return ParseFitParameters(args.params, scene.model()); });
   const std::vector<std::optional<double>> initial =
-      args.initial ? ParseFitInitial(*args.initial, parameters, scene.model())
+      args.initial ? UnderOption("--initial",
+                                 [&] {
+                                   return ParseFitInitial(*args.initial, parameters, scene.model());
+                                 })
                    : std::vector<std::optional<double>>();
   const std::optional<long> budget = ParseWholeNumber(args.budget, 1, 1000000);
   if (!budget) Refuse("--budget", args.budget, "must be a whole number in [1, 1000000]");
@@ -149,7 +153,7 @@ int FitCommand(const FitArgs& args) {
         f.place.push_back(i);
         read_by_any[i] = true;
       }
-      CheckFit(scene, o, f.parameters);
+      UnderOption("--params", [&] { CheckFit(scene, o, f.parameters); });
       o.should_stop = [] { return stop_signal.load(); };
       f.law = law;
       f.friction = friction;
@@ -160,7 +164,9 @@ int FitCommand(const FitArgs& args) {
     }
   }
   for (size_t i = 0; i < parameters.size(); ++i) {
-    if (!read_by_any[i]) CheckFit(scene, combos.front(), {parameters[i]});  // refuses it
+    if (read_by_any[i]) continue;
+    // refuses it
+    UnderOption("--params", [&] { CheckFit(scene, combos.front(), {parameters[i]}); });
   }
   const std::string dir = CreateDirectory(args.output.value_or("fit"));
   CsvFile ranking(dir + "/ranking.csv"), errors(dir + "/errors.csv");

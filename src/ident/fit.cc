@@ -80,7 +80,7 @@ void CheckFit(const Scene& scene, const ReplayOptions& options,
       laws += fmt::format("{}law={}, friction={}", laws.empty() ? "" : "; ", LawName(tag.law),
                           FrictionName(tag.friction));
     }
-    throw Error(fmt::format("--params: {}: no tag of {} reads it ({})", parameters[i].key,
+    throw Error(fmt::format("{}: no tag of {} reads it ({})", parameters[i].key,
                             scene.path(), laws));
   }
   for (size_t i = 0; i < parameters.size(); ++i) {
@@ -91,7 +91,7 @@ void CheckFit(const Scene& scene, const ReplayOptions& options,
       try {
         make(values);
       } catch (const Error& e) {
-        throw Error(fmt::format("--params: {}={}:{}: the bound {} is refused: {}", parameters[i].key,
+        throw Error(fmt::format("{}={}:{}: the bound {} is refused: {}", parameters[i].key,
                                 parameters[i].lo, parameters[i].hi, bound, e.what()));
       }
     }

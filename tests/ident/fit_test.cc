@@ -40,37 +40,37 @@ TEST(FitTest, RefusesParametersNamingTheKey) {
                     "board.offset=-0.004:0.001"),
             "accepted");
   EXPECT_EQ(Refusal("restitutoin=0.1:0.9"),
-            "--params: restitutoin=0.1:0.9: 'restitutoin' is not a contactlaw tag key (did you "
+            "restitutoin=0.1:0.9: 'restitutoin' is not a contactlaw tag key (did you "
             "mean 'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
   EXPECT_EQ(Refusal("law=0:1"),
-            "--params: law=0:1: 'law' is not a numeric key (--laws and --frictions choose laws "
-            "and friction models)");
+            "law=0:1: 'law' is not a numeric key (laws and friction models are "
+            "compared, not fitted)");
   EXPECT_EQ(Refusal("restitution=0.9:0.1"),
-            "--params: restitution=0.9:0.1: the bounds are empty (0.9 >= 0.1)");
+            "restitution=0.9:0.1: the bounds are empty (0.9 >= 0.1)");
   EXPECT_EQ(Refusal("restitution=0.1"),
-            "--params: restitution=0.1: bounds must be LO:HI or LO:HI:log");
+            "restitution=0.1: bounds must be LO:HI or LO:HI:log");
   EXPECT_EQ(Refusal("stiffness=0:1e6:log"),
-            "--params: stiffness=0:1e6:log: a log scale needs LO > 0, not 0");
-  EXPECT_EQ(Refusal("mu=0.1:x"), "--params: mu=0.1:x: 'x' is not a finite number");
-  EXPECT_EQ(Refusal("mu=0.1:0.2,mu=0.2:0.3"), "--params: mu=0.2:0.3: key 'mu' is given twice");
+            "stiffness=0:1e6:log: a log scale needs LO > 0, not 0");
+  EXPECT_EQ(Refusal("mu=0.1:x"), "mu=0.1:x: 'x' is not a finite number");
+  EXPECT_EQ(Refusal("mu=0.1:0.2,mu=0.2:0.3"), "mu=0.2:0.3: key 'mu' is given twice");
   EXPECT_EQ(Refusal("ball.mass_scale=0.5:2"),
-            "--params: ball.mass_scale=0.5:2: the scene has no moving body 'ball'");
+            "ball.mass_scale=0.5:2: the scene has no moving body 'ball'");
   EXPECT_EQ(Refusal("cube.mass_scale=0:2"),
-            "--params: cube.mass_scale=0:2: mass_scale must be > 0");
-  EXPECT_EQ(Refusal("mujoco.dmin=0.5:1.5"), "--params: mujoco.dmin=0.5:1.5: dmin must be in (0, 1)");
+            "cube.mass_scale=0:2: mass_scale must be > 0");
+  EXPECT_EQ(Refusal("mujoco.dmin=0.5:1.5"), "mujoco.dmin=0.5:1.5: dmin must be in (0, 1)");
   EXPECT_EQ(Refusal("cube.speed=0:1"),
-            "--params: cube.speed=0:1: 'cube.speed' is not a model parameter: BODY.mass_scale, "
+            "cube.speed=0:1: 'cube.speed' is not a model parameter: BODY.mass_scale, "
             "BODY.inertia_scale, GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction");
   // the tag's own checks, at the bounds
   EXPECT_EQ(Refusal("restitution=0.5:1.5"),
-            "--params: restitution=0.5:1.5: the bound 1.5 is refused: cube.xml: "
+            "restitution=0.5:1.5: the bound 1.5 is refused: cube.xml: "
             "contactlaw:cube-board: restitution=1.5 must be in [0, 1]");
   // a key the law or friction model does not read
   EXPECT_EQ(Refusal("transition_velocity=1e-4:1e-2:log"),
-            "--params: transition_velocity: no tag of cube.xml reads it (law=flores, "
+            "transition_velocity: no tag of cube.xml reads it (law=flores, "
             "friction=coulomb)");
   EXPECT_EQ(Refusal("linear_stiffness=1e4:1e6"),
-            "--params: linear_stiffness: no tag of cube.xml reads it (law=flores, "
+            "linear_stiffness: no tag of cube.xml reads it (law=flores, "
             "friction=coulomb)");
 }
 
@@ -233,27 +233,27 @@ TEST(FitTest, RefusesAStartNamingTheKey) {
     return Refused([&] { ParseFitInitial(text, p, scene.model()); });
   };
   EXPECT_EQ(refusal("restitutoin=0.5"),
-            "--initial: restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did you mean "
+            "restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did you mean "
             "'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
   EXPECT_EQ(refusal("ball.mass_scale=1"),
-            "--initial: ball.mass_scale=1: the scene has no moving body 'ball'");
+            "ball.mass_scale=1: the scene has no moving body 'ball'");
   EXPECT_EQ(refusal("mu=0.3"),
-            "--initial: mu=0.3: 'mu' is not one of --params (restitution, stiffness, "
+            "mu=0.3: 'mu' is not one of the parameters (restitution, stiffness, "
             "board.offset)");
   EXPECT_EQ(refusal("restitution=0.95"),
-            "--initial: restitution=0.95: outside its bounds [0.1, 0.9]");
+            "restitution=0.95: outside its bounds [0.1, 0.9]");
   EXPECT_EQ(refusal("stiffness=1e3"),
-            "--initial: stiffness=1000: outside its bounds [10000, 10000000]");
-  EXPECT_EQ(refusal("restitution=x"), "--initial: restitution=x: 'x' is not a finite number");
-  EXPECT_EQ(refusal("restitution=nan"), "--initial: restitution=nan: 'nan' is not a finite number");
+            "stiffness=1000: outside its bounds [10000, 10000000]");
+  EXPECT_EQ(refusal("restitution=x"), "restitution=x: 'x' is not a finite number");
+  EXPECT_EQ(refusal("restitution=nan"), "restitution=nan: 'nan' is not a finite number");
   EXPECT_EQ(refusal("restitution=0.5,restitution=0.6"),
-            "--initial: restitution=0.6: key 'restitution' is given twice");
-  EXPECT_EQ(refusal("restitution"), "--initial: restitution: is not of the form KEY=VALUE");
+            "restitution=0.6: key 'restitution' is given twice");
+  EXPECT_EQ(refusal("restitution"), "restitution: is not of the form KEY=VALUE");
   // the library's own check, for a start not parsed from text
   EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5}); }),
-            "--initial: 1 values given for 3 parameters (restitution, stiffness, board.offset)");
+            "1 values given for 3 parameters (restitution, stiffness, board.offset)");
   EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5, std::nullopt, 0.002}); }),
-            "--initial: board.offset=0.002: outside its bounds [-0.004, 0.001]");
+            "board.offset=0.002: outside its bounds [-0.004, 0.001]");
   EXPECT_EQ(Refused([&] { CheckInitial(p, {}); }), "accepted");  // no start: the middle
 }
 
