@@ -22,6 +22,12 @@
 
 namespace contactlaws {
 
+// A numeric contactlaw tag key and its value (Overrides::values).
+struct KeyValue {
+  std::string key;   // "restitution", "stiffness", "mu", ... (tag_keys: TagValue::kNumber)
+  double value = 0;  // in the key's unit
+};
+
 // Command-line style overrides applied to every tagged pair before
 // validation (contactlaws run --law ... --restitution ...).
 struct Overrides {
@@ -33,10 +39,16 @@ struct Overrides {
   // every tagged pair's friction model, and its mu (mu_static = mu_kinetic)
   std::optional<FrictionKind> friction;
   std::optional<double> mu;
-  // key=value words set on every contactlaw tag before it is read (a fit's
-  // parameters): each replaces the tag's own value of the key or adds it,
-  // and is checked as the tag's own words are
+  // key=value words set on every contactlaw tag after its own words (the
+  // command line's --set): each replaces the tag's own value of the key or
+  // adds it, and is checked as the tag's own words are
   std::vector<std::pair<std::string, std::string>> keys;
+  // numeric keys set on every contactlaw tag as values, after keys (a fit's
+  // parameters): each replaces the tag's own value of the key or adds it, and
+  // is refused outside the key's range as the tag's own value is. With keys
+  // or values and a law override, the tag is read under that law (a key it
+  // reads, dissipation, is then not refused as the tag's own law's).
+  std::vector<KeyValue> values;
 };
 
 // One contactlaw tag.
@@ -118,9 +130,12 @@ struct Drive {
   void Velocity(double t, double vel[3]) const;
 };
 
+class Simulation;
+
 namespace internal {
 struct PairTagSpec;  // src/scene/tags.h
 class TagResolver;   // src/scene/contact_model.cc
+class ParsedTags;    // src/scene/parsed_tags.h
 }  // namespace internal
 
 class ContactModel {
@@ -155,8 +170,13 @@ class ContactModel {
   }
 
  private:
-  void ReadDrives();
-  void ReadTags(const Overrides& overrides);
+  friend class Simulation;  // makes a Scene's from the tags it read once
+  // The tags already read (a Scene's: the same <text> entries as m's).
+  ContactModel(const mjModel* m, std::string source, const Overrides& overrides,
+               const internal::ParsedTags& tags);
+
+  void ReadDrives(const internal::ParsedTags& tags);
+  void ReadTags(const internal::ParsedTags& tags, const Overrides& overrides);
   // The geom pairs of one tag (appended to pairs_ and tag->pairs).
   void AddPairs(const internal::PairTagSpec& spec, const LawParams& base,
                 const internal::TagResolver& resolve, PairTag* tag);

@@ -5,7 +5,8 @@
 // optimisers. A parameter is
 //   - a numeric key of the contactlaw tags (restitution, stiffness,
 //     exponent, dissipation, mu_static, mu_kinetic, tangential_stiffness,
-//     rolling_friction, ...), set on every tag (Overrides::keys);
+//     rolling_friction, ...), set on every tag as a number
+//     (Overrides::values);
 //   - BODY.mass_scale, BODY.inertia_scale: a body's mass or principal
 //     inertia times the value;
 //   - GEOM.offset: a geom moved along its own z axis (a plane's normal), m;
@@ -54,12 +55,13 @@ struct FitParameter {
 // numeric tag key nor a model parameter, a body or geom the scene lacks,
 // bounds that are not numbers, empty (lo >= hi), a log scale with lo <= 0,
 // a range a model parameter cannot take, a key given twice. Throws Error
-// "--params: KEY=...: ...". The tag keys' ranges are checked by CheckFit.
+// "KEY=LO:HI: ..." (the command line adds "--params: "). The tag keys'
+// ranges are checked by CheckFit.
 std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjModel* m);
 
 // "KEY=VALUE,..." the start of a fit over parameters, one entry per
-// parameter (nullopt: a key not given). Refuses (Error "--initial: KEY=VALUE:
-// ...") an item not of that form, a key that is no parameter at all, a key
+// parameter (nullopt: a key not given). Refuses (Error "KEY=VALUE: ...") an
+// item not of that form, a key that is no parameter at all, a key
 // not among parameters, a value that is not a finite number, a key given
 // twice, and (CheckInitial) a value outside the key's bounds.
 std::vector<std::optional<double>> ParseFitInitial(std::string_view text,
@@ -72,7 +74,8 @@ std::vector<std::optional<double>> ParseFitInitial(std::string_view text,
 void CheckInitial(const std::vector<FitParameter>& parameters,
                   const std::vector<std::optional<double>>& initial);
 
-// options with the parameters at values.
+// options with the parameters at values: a tag key's value set on every tag
+// as a number (Overrides::values), a model parameter's as an edit.
 ReplayOptions WithParameters(const ReplayOptions& options,
                              const std::vector<FitParameter>& parameters,
                              const std::vector<double>& values);
@@ -82,13 +85,24 @@ ReplayOptions WithParameters(const ReplayOptions& options,
 std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
                                  const std::vector<FitParameter>& parameters);
 
-// "law/friction" of the scene's first contactlaw tag with the overrides
-// ("flores/coulomb"); "mujoco" for a scene without one.
+// A law and a friction model (a tag's, with the overrides).
+struct Combination {
+  LawId law{};
+  FrictionKind friction = FrictionKind::kCoulomb;
+};
+
+// The law and friction model of the scene's first contactlaw tag with the
+// overrides; nullopt for a scene without one (MuJoCo's own contact).
+std::optional<Combination> FirstCombination(const Scene& scene, const Overrides& overrides);
+
+// "law/friction" of FirstCombination ("flores/coulomb"); "mujoco" for a
+// scene without a contactlaw tag.
 std::string CombinationName(const Scene& scene, const Overrides& overrides);
 
-// Refuses (Error naming the key) a parameter no tag of the scene reads under
-// options' law and friction, and bounds outside a tag key's range (the tags
-// are read with each parameter at lo and at hi).
+// Refuses (Error naming the key, and the file) a parameter no tag of the
+// scene reads under options' law and friction, and bounds outside a tag
+// key's range (the tags are read with each parameter at lo and at hi: "KEY=
+// LO:HI: the bound HI is refused: FILE: contactlaw:TAG: KEY=HI must be ...").
 void CheckFit(const Scene& scene, const ReplayOptions& options,
               const std::vector<FitParameter>& parameters);
 

@@ -21,6 +21,12 @@
 
 namespace contactlaws {
 
+class Scene;
+namespace internal {
+class ParsedTags;  // src/scene/parsed_tags.h
+const ParsedTags& TagsOf(const Scene& scene);
+}  // namespace internal
+
 // The energy ledger, J. total = kinetic + potential + elastic + dissipated is
 // constant for a scene without drives, up to the integrator's error.
 struct EnergyLedger {
@@ -165,6 +171,10 @@ class Simulation {
   const std::optional<SettleReport>& settled() const { return settled_; }
 
  private:
+  friend class Scene;
+  // With the tags already read (tags: a Scene's), else reads m's.
+  Simulation(std::shared_ptr<const mjModel> model, std::string source,
+             const SimulationOptions& options, const internal::ParsedTags* tags);
   // Reset(); fresh: the data is mj_makeData's, already at qpos0.
   void Reset(bool fresh);
   // The ledger's kinetic and potential energy at d (elastic, dissipated 0).
@@ -188,8 +198,8 @@ class Simulation {
   std::vector<PointEvaluation> settled_contacts_;
 };
 
-// An MJCF scene, parsed once; its simulations share its model, which nothing
-// writes.
+// An MJCF scene, parsed once, its tags too; its simulations share its model,
+// which nothing writes, and read its tags without reading text again.
 class Scene {
  public:
   explicit Scene(std::string path);  // throws Error "PATH: ..."
@@ -202,10 +212,18 @@ class Scene {
   // A fresh simulation of the shared model; throws Error when the tags (with
   // the overrides) are refused.
   std::unique_ptr<Simulation> Make(const SimulationOptions& options) const;
+  // A fresh simulation of edited, a copy of the scene's model (mj_copyModel)
+  // with numbers changed (masses, positions: ApplyEdits): the scene's tags,
+  // with the overrides, on it. Throws Error when its <text> entries are not
+  // the scene's, or as above.
+  std::unique_ptr<Simulation> Make(const SimulationOptions& options, UniqueModel edited) const;
 
  private:
+  friend const internal::ParsedTags& internal::TagsOf(const Scene& scene);
+
   std::string path_;
   std::shared_ptr<const mjModel> model_;
+  std::shared_ptr<const internal::ParsedTags> tags_;  // of model_, read once
 };
 
 }  // namespace contactlaws

@@ -27,6 +27,7 @@ struct Fitted {
   FitResult fit;
   std::vector<ReplayedTrajectory> train, validate;
   std::string label;  // "flores/coulomb"
+  std::optional<Combination> combination;  // the label's law and friction; none: "mujoco"
 };
 
 // The first contactlaw tag of the scene with the fitted values, as a line
@@ -45,11 +46,16 @@ std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& op
     if (o.restitution) keys.emplace_back("restitution", fmt::format("{}", *o.restitution));
     if (o.dissipation) keys.emplace_back("dissipation", fmt::format("{}", *o.dissipation));
     if (o.mu) keys.emplace_back("mu", fmt::format("{}", *o.mu));
-    const ReplayOptions fitted = WithParameters(options, parameters, f.fit.values);
-    for (const auto& kv : fitted.simulation.overrides.keys) {
-      // the fitted values to 6 digits: what a scene's author writes
-      const std::optional<double> v = ParseNumber(kv.second);
-      keys.emplace_back(kv.first, v ? fmt::format("{:.6g}", *v) : kv.second);
+    // --set's words, then the fitted values; numbers to 6 digits: what a
+    // scene's author writes
+    for (const auto& [key, value] : o.keys) {
+      const std::optional<double> v = ParseNumber(value);
+      keys.emplace_back(key, v ? fmt::format("{:.6g}", *v) : value);
+    }
+    for (size_t k = 0; k < parameters.size(); ++k) {
+      if (parameters[k].tag_key) {
+        keys.emplace_back(parameters[k].key, fmt::format("{:.6g}", f.fit.values[k]));
+      }
     }
     const std::string_view data = m->text_data + m->text_adr[i];
     lines += fmt::format("<text name=\"{}\" data=\"{}\"/>\n", name, WithKeys(data, keys));
@@ -106,9 +112,13 @@ int FitCommand(const FitArgs& args) {
   if (validate_data) validate.emplace(scene, *validate_data);
   Metric metric = Metric::kEq;
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
-  const std::vector<FitParameter> parameters = ParseFitParameters(args.params, scene.model());
+  const std::vector<FitParameter> parameters =
+      UnderOption("--params", [&] { return ParseFitParameters(args.params, scene.model()); });
   const std::vector<std::optional<double>> initial =
-      args.initial ? ParseFitInitial(*args.initial, parameters, scene.model())
+      args.initial ? UnderOption("--initial",
+                                 [&] {
+                                   return ParseFitInitial(*args.initial, parameters, scene.model());
+                                 })
                    : std::vector<std::optional<double>>();
   const std::optional<long> budget = ParseWholeNumber(args.budget, 1, 1000000);
   if (!budget) Refuse("--budget", args.budget, "must be a whole number in [1, 1000000]");
@@ -143,17 +153,20 @@ int FitCommand(const FitArgs& args) {
         f.place.push_back(i);
         read_by_any[i] = true;
       }
-      CheckFit(scene, o, f.parameters);
+      UnderOption("--params", [&] { CheckFit(scene, o, f.parameters); });
       o.should_stop = [] { return stop_signal.load(); };
       f.law = law;
       f.friction = friction;
       f.label = CombinationName(scene, o.simulation.overrides);
+      f.combination = FirstCombination(scene, o.simulation.overrides);
       fitted.push_back(std::move(f));
       combos.push_back(std::move(o));
     }
   }
   for (size_t i = 0; i < parameters.size(); ++i) {
-    if (!read_by_any[i]) CheckFit(scene, combos.front(), {parameters[i]});  // refuses it
+    if (read_by_any[i]) continue;
+    // refuses it
+    UnderOption("--params", [&] { CheckFit(scene, combos.front(), {parameters[i]}); });
   }
   const std::string dir = CreateDirectory(args.output.value_or("fit"));
   CsvFile ranking(dir + "/ranking.csv"), errors(dir + "/errors.csv");
@@ -215,9 +228,8 @@ int FitCommand(const FitArgs& args) {
   for (const std::string& column : ReplayColumns()) error_header.push_back(column);
   errors.Header(error_header);
   for (const Fitted& f : fitted) {
-    const std::string law = f.label.substr(0, f.label.find('/'));
-    const size_t slash = f.label.find('/');
-    const std::string friction = slash == std::string::npos ? "" : f.label.substr(slash + 1);
+    const std::string law(f.combination ? LawName(f.combination->law) : "mujoco");
+    const std::string friction(f.combination ? FrictionName(f.combination->friction) : "");
     std::vector<std::string> row = {law, friction};
     for (size_t i = 0; i < parameters.size(); ++i) {
       const std::optional<double> v = ValueOf(f, i);

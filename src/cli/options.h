@@ -51,6 +51,18 @@ struct CommonOptions {
 [[noreturn]] void Refuse(std::string_view option, std::string_view value,
                          std::string_view requirement);
 
+// f(), its Error said of the option that gave what it refused: "OPTION:
+// MESSAGE" (the library names the key, value and range; the command line its
+// flag).
+template <typename F>
+auto UnderOption(std::string_view option, const F& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    throw Error(std::string(option) + ": " + e.what());
+  }
+}
+
 // The number text, or Refuse: "OPTION=TEXT is not a finite number".
 double ParseOption(std::string_view option, std::string_view text);
 

@@ -10,34 +10,40 @@
 #include <nlopt.h>
 
 #include "contactlaws/error.h"
+#include "scene/parsed_tags.h"
 #include "scene/tag_keys.h"
-#include "scene/tags.h"
 
 namespace contactlaws {
 
 namespace {
 
-// Each tag's law and friction model as written, with the overrides: read
-// without the fit's parameters, whose keys another law may refuse.
-std::vector<std::pair<LawId, FrictionKind>> TagKinds(const Scene& scene, const Overrides& o) {
-  const mjModel* m = scene.model();
-  std::vector<std::pair<LawId, FrictionKind>> tags;
-  for (int i = 0; i < m->ntext; ++i) {
-    const std::string_view name = m->names + m->name_textadr[i];
-    if (name.rfind(kPairTagPrefix, 0) != 0) continue;
-    const internal::PairTagSpec spec = internal::ParsePairTag(scene.path(), name, m->text_data + m->text_adr[i]);
-    tags.emplace_back(o.law.value_or(*spec.law),
-                      o.friction.value_or(spec.friction.kind.value_or(FrictionKind::kCoulomb)));
+// Each tag's law and friction model as written (the scene's tags, read
+// once), with the overrides: without the fit's parameters, whose keys
+// another law may refuse.
+std::vector<Combination> TagKinds(const Scene& scene, const Overrides& o) {
+  std::vector<Combination> tags;
+  for (const auto& tag : internal::TagsOf(scene).pairs()) {
+    if (!tag.error.empty()) throw Error(tag.error);
+    internal::CheckPairTag(scene.path(), tag.name, tag.spec);
+    const internal::PairTagSpec& spec = tag.spec;
+    tags.push_back({o.law.value_or(*spec.law),
+                    o.friction.value_or(spec.friction.kind.value_or(FrictionKind::kCoulomb))});
   }
   return tags;
 }
 
 }  // namespace
 
+std::optional<Combination> FirstCombination(const Scene& scene, const Overrides& overrides) {
+  const std::vector<Combination> tags = TagKinds(scene, overrides);
+  if (tags.empty()) return std::nullopt;
+  return tags.front();
+}
+
 std::string CombinationName(const Scene& scene, const Overrides& overrides) {
-  const auto tags = TagKinds(scene, overrides);
-  if (tags.empty()) return "mujoco";
-  return fmt::format("{}/{}", LawName(tags[0].first), FrictionName(tags[0].second));
+  const std::optional<Combination> first = FirstCombination(scene, overrides);
+  if (!first) return "mujoco";
+  return fmt::format("{}/{}", LawName(first->law), FrictionName(first->friction));
 }
 
 std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& options,
@@ -47,7 +53,7 @@ std::vector<bool> ParametersRead(const Scene& scene, const ReplayOptions& option
   for (const FitParameter& p : parameters) {
     bool any = !p.tag_key;
     const TagKey* key = p.tag_key ? FindTagKey(p.key) : nullptr;
-    for (const auto& [law, friction] : tags) any = any || Reads(*key, law, friction);
+    for (const Combination& tag : tags) any = any || Reads(*key, tag.law, tag.friction);
     read.push_back(any);
   }
   return read;
@@ -57,21 +63,24 @@ void CheckFit(const Scene& scene, const ReplayOptions& options,
               const std::vector<FitParameter>& parameters) {
   std::vector<double> mid;
   for (const FitParameter& p : parameters) mid.push_back(p.At(0.5));
+  // the scene's tags with the parameters at values, on the edited model
   auto make = [&](const std::vector<double>& values) {
     const ReplayOptions o = WithParameters(options, parameters, values);
     UniqueModel model(mj_copyModel(nullptr, scene.model()));
     ApplyEdits(model.get(), o.edits);
-    return std::make_unique<ContactModel>(model.get(), scene.path(), o.simulation.overrides);
+    SimulationOptions tags;
+    tags.overrides = o.simulation.overrides;
+    return scene.Make(tags, std::move(model));
   };
   const std::vector<bool> read = ParametersRead(scene, options, parameters);
   for (size_t i = 0; i < parameters.size(); ++i) {
     if (read[i]) continue;
     std::string laws;
-    for (const auto& [law, friction] : TagKinds(scene, options.simulation.overrides)) {
-      laws += fmt::format("{}law={}, friction={}", laws.empty() ? "" : "; ", LawName(law),
-                          FrictionName(friction));
+    for (const Combination& tag : TagKinds(scene, options.simulation.overrides)) {
+      laws += fmt::format("{}law={}, friction={}", laws.empty() ? "" : "; ", LawName(tag.law),
+                          FrictionName(tag.friction));
     }
-    throw Error(fmt::format("--params: {}: no tag of {} reads it ({})", parameters[i].key,
+    throw Error(fmt::format("{}: no tag of {} reads it ({})", parameters[i].key,
                             scene.path(), laws));
   }
   for (size_t i = 0; i < parameters.size(); ++i) {
@@ -82,7 +91,7 @@ void CheckFit(const Scene& scene, const ReplayOptions& options,
       try {
         make(values);
       } catch (const Error& e) {
-        throw Error(fmt::format("--params: {}={}:{}: the bound {} is refused: {}", parameters[i].key,
+        throw Error(fmt::format("{}={}:{}: the bound {} is refused: {}", parameters[i].key,
                                 parameters[i].lo, parameters[i].hi, bound, e.what()));
       }
     }

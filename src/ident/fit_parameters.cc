@@ -1,7 +1,8 @@
 // Copyright contactlaws authors.
 //
-// A fit's parameters: parsed from --params, mapped to [0, 1] and back, its
-// start parsed from --initial, and set on replay options (contactlaws/fit.h).
+// A fit's parameters: parsed from their text (the command line's --params),
+// mapped to [0, 1] and back, their start parsed (--initial), and set on
+// replay options as values (contactlaws/fit.h).
 
 #include "contactlaws/fit.h"
 
@@ -75,8 +76,8 @@ std::string ResolveKey(const mjModel* m, FitParameter* p, const ModelKey** model
                          p->key, hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint));
     }
     if (key->value != TagValue::kNumber) {
-      return fmt::format("'{}' is not a numeric key (--laws and --frictions choose laws and "
-                         "friction models)",
+      return fmt::format("'{}' is not a numeric key (laws and friction models are compared, not "
+                         "fitted)",
                          p->key);
     }
     return "";
@@ -126,7 +127,7 @@ double FitParameter::Unit(double value) const {
 std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjModel* m) {
   std::vector<FitParameter> parameters;
   auto fail = [](std::string_view item, std::string_view what) -> void {
-    throw Error(fmt::format("--params: {}: {}", item, what));
+    throw Error(fmt::format("{}: {}", item, what));
   };
   for (const std::string_view item : Split(text, ',')) {
     const size_t eq = item.find('=');
@@ -159,7 +160,7 @@ std::vector<FitParameter> ParseFitParameters(std::string_view text, const mjMode
     }
     parameters.push_back(std::move(p));
   }
-  if (parameters.empty()) throw Error("--params: no parameter given");
+  if (parameters.empty()) throw Error("no parameter given");
   return parameters;
 }
 
@@ -168,7 +169,7 @@ std::vector<std::optional<double>> ParseFitInitial(std::string_view text,
                                                    const mjModel* m) {
   std::vector<std::optional<double>> initial(parameters.size());
   auto fail = [](std::string_view item, std::string_view what) -> void {
-    throw Error(fmt::format("--initial: {}: {}", item, what));
+    throw Error(fmt::format("{}: {}", item, what));
   };
   for (const std::string_view item : Split(text, ',')) {
     const size_t eq = item.find('=');
@@ -181,7 +182,7 @@ std::vector<std::optional<double>> ParseFitInitial(std::string_view text,
       const ModelKey* model = nullptr;
       const std::string why = ResolveKey(m, &p, &model);
       if (!why.empty()) fail(item, why);
-      fail(item, fmt::format("'{}' is not one of --params ({})", p.key, KeyList(parameters)));
+      fail(item, fmt::format("'{}' is not one of the parameters ({})", p.key, KeyList(parameters)));
     }
     const std::optional<double> value = ParseNumber(item.substr(eq + 1));
     if (!value) fail(item, fmt::format("'{}' is not a finite number", item.substr(eq + 1)));
@@ -197,13 +198,13 @@ void CheckInitial(const std::vector<FitParameter>& parameters,
                   const std::vector<std::optional<double>>& initial) {
   if (initial.empty()) return;
   if (initial.size() != parameters.size()) {
-    throw Error(fmt::format("--initial: {} values given for {} parameters ({})", initial.size(),
+    throw Error(fmt::format("{} values given for {} parameters ({})", initial.size(),
                             parameters.size(), KeyList(parameters)));
   }
   for (size_t i = 0; i < parameters.size(); ++i) {
     const FitParameter& p = parameters[i];
     if (initial[i] && !(p.lo <= *initial[i] && *initial[i] <= p.hi)) {
-      throw Error(fmt::format("--initial: {}={}: outside its bounds [{}, {}]", p.key, *initial[i],
+      throw Error(fmt::format("{}={}: outside its bounds [{}, {}]", p.key, *initial[i],
                               p.lo, p.hi));
     }
   }
@@ -216,8 +217,7 @@ ReplayOptions WithParameters(const ReplayOptions& options,
   for (size_t i = 0; i < parameters.size(); ++i) {
     const FitParameter& p = parameters[i];
     if (p.tag_key) {
-      // 17 significant digits: the tag parser reads back the same double
-      out.simulation.overrides.keys.emplace_back(p.key, fmt::format("{:.17g}", values[i]));
+      out.simulation.overrides.values.push_back({p.key, values[i]});
     } else {
       ModelEdit edit = p.edit;
       edit.value = values[i];

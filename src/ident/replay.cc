@@ -139,7 +139,7 @@ class Replay::Rollout {
     } else {
       UniqueModel model(mj_copyModel(nullptr, replay.scene_.model()));
       ApplyEdits(model.get(), options.edits);
-      sim_ = std::make_unique<Simulation>(std::move(model), replay.scene_.path(), simulation);
+      sim_ = replay.scene_.Make(simulation, std::move(model));
     }
     // each measured column's place in the run's rows (Simulation::Columns)
     const std::vector<std::string> columns = sim_->Columns();

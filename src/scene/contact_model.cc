@@ -16,6 +16,7 @@
 #include "scene/number.h"
 #include "scene/pair_friction.h"
 #include "scene/pair_trust.h"
+#include "scene/parsed_tags.h"
 #include "scene/tags.h"
 
 namespace contactlaws {
@@ -80,19 +81,25 @@ class TagResolver {
 
 }  // namespace internal
 
+using internal::CheckPairTag;
 using internal::PairTagSpec;
-using internal::ParsePairTag;
+using internal::SetPairNumber;
+using internal::SetPairWord;
 using internal::TagResolver;
 
 ContactModel::ContactModel(const mjModel* m, std::string source,
                            const Overrides& overrides)
+    : ContactModel(m, source, overrides, internal::ParsedTags(m, source)) {}
+
+ContactModel::ContactModel(const mjModel* m, std::string source, const Overrides& overrides,
+                           const internal::ParsedTags& tags)
     : model_(m), source_(std::move(source)) {
   body_drive_.assign(m->nbody, -1);
   geom_tagged_.assign(m->ngeom, 0);
   overrides_ = overrides;
-  for (int i = 0; i < m->ntext; ++i) CheckTagPrefix(source_, TextName(m, i));
-  ReadDrives();
-  ReadTags(overrides);
+  if (!tags.prefix_error().empty()) throw Error(tags.prefix_error());
+  ReadDrives(tags);
+  ReadTags(tags, overrides);
 }
 
 namespace {
@@ -219,19 +226,23 @@ void CheckFlags(const mjModel* m, const std::string& source, size_t tags) {
 
 }  // namespace
 
-void ContactModel::ReadTags(const Overrides& overrides) {
+void ContactModel::ReadTags(const internal::ParsedTags& tags, const Overrides& overrides) {
   const mjModel* m = model_;
-  for (int i = 0; i < m->ntext; ++i) {
-    const std::string_view name = TextName(m, i);
-    if (!StartsWith(name, kPairTagPrefix)) continue;
-    // the keys set, read under the law that overrides the tag's, if any: a
-    // key that law reads (dissipation) is then not refused as the tag's
-    // law's
-    std::vector<std::pair<std::string, std::string>> keys = overrides.keys;
-    if (!keys.empty() && overrides.law) keys.emplace_back("law", LawName(*overrides.law));
-    const PairTagSpec spec = keys.empty()
-                                 ? ParsePairTag(source_, name, TextData(m, i))
-                                 : ParsePairTag(source_, name, WithKeys(TextData(m, i), keys));
+  const bool set = !overrides.keys.empty() || !overrides.values.empty();
+  for (const auto& written : tags.pairs()) {
+    if (!written.error.empty()) throw Error(written.error);
+    // the tag's words, then the keys and values set, read under the law
+    // that overrides the tag's, if any: a key that law reads (dissipation)
+    // is then not refused as the tag's law's
+    PairTagSpec spec = written.spec;
+    for (const auto& [key, value] : overrides.keys) {
+      SetPairWord(source_, written.name, key, value, &spec);
+    }
+    for (const KeyValue& v : overrides.values) {
+      SetPairNumber(source_, written.name, v.key, v.value, &spec);
+    }
+    if (set && overrides.law) spec.law = overrides.law;
+    CheckPairTag(source_, written.name, spec);
     const TagResolver resolve(m, source_, spec.label);
     const LawParams base = ResolveLaw(spec, overrides, resolve);
 

@@ -11,8 +11,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
-#include "scene/model_queries.h"
-#include "scene/tags.h"
+#include "scene/parsed_tags.h"
 
 namespace contactlaws {
 
@@ -28,12 +27,12 @@ void Drive::Velocity(double t, double vel[3]) const {
   for (int i = 0; i < 3; ++i) vel[i] = axis[i] * c;
 }
 
-void ContactModel::ReadDrives() {
+void ContactModel::ReadDrives(const internal::ParsedTags& tags) {
   const mjModel* m = model_;
-  for (int i = 0; i < m->ntext; ++i) {
-    std::string_view name = TextName(m, i);
-    if (name.substr(0, kDriveTagPrefix.size()) != kDriveTagPrefix) continue;
-    DriveTagSpec spec = ParseDriveTag(source_, name, TextData(m, i));
+  for (const auto& tag : tags.drives()) {
+    if (!tag.error.empty()) throw Error(tag.error);
+    const std::string_view name = tag.name;
+    const DriveTagSpec& spec = tag.spec;
     auto fail = [&](std::string_view what) {
       throw Error(fmt::format("{}: {}: {}", source_, name, what));
     };

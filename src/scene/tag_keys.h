@@ -3,8 +3,10 @@
 // The keys of a contactlaw tag: one row per key, read by the tag parser
 // (its values, ranges and messages), by the fit (which keys are numbers,
 // which laws and friction models read each: `fit --params`) and by the
-// overrides (Overrides::keys, parsed as the tag's own words). Adding a key is
-// one row here, its field in PairTagSpec (tags.h) and a test.
+// overrides (Overrides::keys, parsed as the tag's own words; Overrides::values,
+// a fit's numbers, set on the tag by the same per-key rule: range, field,
+// message, tags.h's SetPairNumber). Adding a key is one row here, its field
+// in PairTagSpec (tags.h) and a test.
 
 #ifndef CONTACTLAWS_SCENE_TAG_KEYS_H_
 #define CONTACTLAWS_SCENE_TAG_KEYS_H_

@@ -3,7 +3,6 @@
 #include "scene/tags.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -47,6 +46,14 @@ class TagContext {
     Fail(fmt::format("{}={} {}", key, value, requirement));
   }
 
+  // A key not in allowed, with the nearest as a hint.
+  [[noreturn]] void FailUnknown(std::string_view key, const std::string_view* allowed,
+                                size_t count) const {
+    const std::string_view hint = NearestWord(key, allowed, count);
+    Fail(hint.empty() ? fmt::format("unknown key '{}'", key)
+                      : fmt::format("unknown key '{}' (did you mean '{}'?)", key, hint));
+  }
+
   // Splits data into key=value words, refusing malformed and repeated keys
   // and keys not in allowed.
   std::vector<KeyValue> Split(std::string_view data, const std::string_view* allowed,
@@ -65,9 +72,7 @@ class TagContext {
       }
       KeyValue kv{word.substr(0, eq), word.substr(eq + 1)};
       if (std::find(allowed, allowed + count, kv.key) == allowed + count) {
-        std::string_view hint = NearestWord(kv.key, allowed, count);
-        Fail(hint.empty() ? fmt::format("unknown key '{}'", kv.key)
-                          : fmt::format("unknown key '{}' (did you mean '{}'?)", kv.key, hint));
+        FailUnknown(kv.key, allowed, count);
       }
       for (const KeyValue& seen : words) {
         if (seen.key == kv.key) Fail(fmt::format("key '{}' is given twice", kv.key));
@@ -97,6 +102,22 @@ std::string_view Label(const TagContext& ctx, std::string_view name,
   std::string_view label = name.substr(prefix.size());
   if (label.empty()) ctx.Fail("the tag has an empty label");
   return label;
+}
+
+// The first friction key given, for the warning on a frictionless pair.
+void NoteFrictionKey(const TagKey& key, PairTagSpec* spec) {
+  if (key.friction_side() && spec->friction.first_key.empty()) {
+    spec->friction.first_key = std::string(key.name);
+  }
+}
+
+// A numeric key's value v into spec, refused outside the key's range; text
+// is the value as the message shows it.
+void SetNumber(const TagContext& ctx, const TagKey& key, double v, std::string_view text,
+               PairTagSpec* spec) {
+  if (!key.range->Contains(v)) ctx.FailValue(key.name, text, key.range->Requirement(key.unit));
+  (key.number ? spec->*key.number : spec->friction.*key.friction_number) = v;
+  NoteFrictionKey(key, spec);
 }
 
 // The value of one key of a contactlaw tag into spec, as its row says.
@@ -129,18 +150,11 @@ void ParseKey(const TagContext& ctx, const TagKey& key, const KeyValue& kv, Pair
         ctx.FailValue(kv.key, kv.value, "must be true or false");
       }
       break;
-    case TagValue::kNumber: {
-      const double v = ctx.Number(kv);
-      if (!key.range->Contains(v)) {
-        ctx.FailValue(kv.key, kv.value, key.range->Requirement(key.unit));
-      }
-      (key.number ? spec->*key.number : spec->friction.*key.friction_number) = v;
-      break;
-    }
+    case TagValue::kNumber:
+      SetNumber(ctx, key, ctx.Number(kv), kv.value, spec);
+      return;
   }
-  if (key.friction_side() && spec->friction.first_key.empty()) {
-    spec->friction.first_key = std::string(kv.key);
-  }
+  NoteFrictionKey(key, spec);
 }
 
 // Friction keys that exclude each other or disagree.
@@ -158,50 +172,6 @@ void CheckFrictionKeys(const TagContext& ctx, const FrictionTagSpec& f) {
     ctx.FailValue("mu_kinetic", fmt::format("{}", *f.mu_kinetic),
                   fmt::format("must be in [0, mu_static={}]", *f.mu_static));
   }
-}
-
-}  // namespace
-
-std::string_view NearestWord(std::string_view word,
-                             const std::string_view* candidates, size_t count) {
-  // Levenshtein distance, accepting at most a third of the word's length
-  std::string_view best;
-  size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
-  std::vector<size_t> row;
-  for (size_t c = 0; c < count; ++c) {
-    std::string_view cand = candidates[c];
-    row.resize(cand.size() + 1);
-    for (size_t j = 0; j <= cand.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= word.size(); ++i) {
-      size_t diagonal = row[0];
-      row[0] = i;
-      for (size_t j = 1; j <= cand.size(); ++j) {
-        size_t up = row[j];
-        size_t cost = word[i - 1] == cand[j - 1] ? 0 : 1;
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
-        diagonal = up;
-      }
-    }
-    if (row[cand.size()] < best_distance) {
-      best_distance = row[cand.size()];
-      best = cand;
-    }
-  }
-  return best;
-}
-
-namespace {
-
-std::string Lower(std::string_view text) {
-  std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lower;
-}
-
-// ": did you mean 'NAME'?" for the name of names nearest to name, any case.
-std::string Suggestion(std::string_view name, const std::vector<std::string_view>& names) {
-  const std::string_view nearest = NearestWord(Lower(name), names.data(), names.size());
-  return nearest.empty() ? std::string() : fmt::format(": did you mean '{}'?", nearest);
 }
 
 }  // namespace
@@ -246,36 +216,15 @@ std::string WithKeys(std::string_view data,
   return out;
 }
 
-std::string LawSuggestion(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const LawInfo& law : Laws()) names.push_back(law.name);
-  return Suggestion(name, names);
-}
-
-std::string FrictionSuggestion(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const FrictionInfo& model : FrictionModels()) names.push_back(model.name);
-  return Suggestion(name, names);
-}
-
-void CheckTagPrefix(std::string_view source, std::string_view name) {
-  const size_t colon = name.find(':');
-  if (colon == std::string_view::npos) return;
-  const std::string_view prefix = name.substr(0, colon + 1);
-  if (prefix == kPairTagPrefix || prefix == kDriveTagPrefix) return;
-  const std::string_view kinds[] = {kPairTagPrefix.substr(0, kPairTagPrefix.size() - 1),
-                                    kDriveTagPrefix.substr(0, kDriveTagPrefix.size() - 1)};
-  const std::string lower = Lower(name.substr(0, colon));
-  // a typo: the letter case, or an edit or two (NearestWord's own measure)
-  std::string_view meant = lower == kinds[0] ? kinds[0] : lower == kinds[1] ? kinds[1] : "";
-  if (meant.empty()) meant = NearestWord(lower, kinds, 2);
-  if (meant.empty()) return;
-  throw Error(fmt::format("{}: {}: the tag prefix must be '{}:' (not '{}'), or the tag is not read",
-                          source, name, meant, prefix));
-}
-
 PairTagSpec internal::ParsePairTag(std::string_view source, std::string_view name,
-                         std::string_view data) {
+                                   std::string_view data) {
+  PairTagSpec spec = ParsePairWords(source, name, data);
+  CheckPairTag(source, name, spec);
+  return spec;
+}
+
+PairTagSpec internal::ParsePairWords(std::string_view source, std::string_view name,
+                                     std::string_view data) {
   TagContext ctx(source, name);
   PairTagSpec spec;
   spec.label = std::string(Label(ctx, name, kPairTagPrefix));
@@ -283,7 +232,32 @@ PairTagSpec internal::ParsePairTag(std::string_view source, std::string_view nam
   for (const KeyValue& kv : ctx.Split(data, names.data(), names.size())) {
     ParseKey(ctx, *FindTagKey(kv.key), kv, &spec);
   }
+  return spec;
+}
 
+void internal::SetPairWord(std::string_view source, std::string_view name, std::string_view key,
+                           std::string_view value, PairTagSpec* spec) {
+  TagContext ctx(source, name);
+  const std::vector<std::string_view>& names = TagKeyNames();
+  const TagKey* row = FindTagKey(key);
+  if (!row) ctx.FailUnknown(key, names.data(), names.size());
+  if (value.empty()) ctx.FailValue(key, "", "has no value");
+  ParseKey(ctx, *row, KeyValue{key, value}, spec);
+}
+
+void internal::SetPairNumber(std::string_view source, std::string_view name, std::string_view key,
+                             double value, PairTagSpec* spec) {
+  TagContext ctx(source, name);
+  const TagKey* row = FindTagKey(key);
+  if (!row || row->value != TagValue::kNumber) {
+    ctx.Fail(fmt::format("'{}' is not a numeric contactlaw tag key", key));
+  }
+  SetNumber(ctx, *row, value, fmt::format("{}", value), spec);
+}
+
+void internal::CheckPairTag(std::string_view source, std::string_view name,
+                            const PairTagSpec& spec) {
+  TagContext ctx(source, name);
   // keys every tag needs, and keys that go together
   if (spec.geom1.empty()) ctx.Fail("missing key geom1");
   if (spec.geom2.empty()) ctx.Fail("missing key geom2");
@@ -311,7 +285,6 @@ PairTagSpec internal::ParsePairTag(std::string_view source, std::string_view nam
   if (materials == 4 && spec.stiffness) {
     ctx.Fail("stiffness and materials (youngs1 ...) exclude each other");
   }
-  return spec;
 }
 
 DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,

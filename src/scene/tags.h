@@ -91,9 +91,32 @@ struct DriveTagSpec {
 
 // Parse one tag. name is the full <text> name, data its data; source names the
 // file in messages. Throws Error naming source, tag, key and value.
+// ParsePairTag is ParsePairWords then CheckPairTag: between the two, a
+// ContactModel sets its overrides' keys and values on the tag as written.
 namespace internal {
 PairTagSpec ParsePairTag(std::string_view source, std::string_view name,
                          std::string_view data);
+
+// The tag's words, each key's value read and checked on its own (its range,
+// a law's or friction model's name): no check of the keys together.
+PairTagSpec ParsePairWords(std::string_view source, std::string_view name,
+                           std::string_view data);
+
+// The word key=value set on spec as a word of the tag's data (it replaces
+// the tag's own value of the key): Error "SOURCE: NAME: ..." as for the tag's.
+void SetPairWord(std::string_view source, std::string_view name, std::string_view key,
+                 std::string_view value, PairTagSpec* spec);
+
+// A numeric key's value set on spec, refused as the tag's own value would be:
+// Error "SOURCE: NAME: KEY=VALUE must be ..." (the key's range), or naming a
+// key that is not a numeric contactlaw key.
+void SetPairNumber(std::string_view source, std::string_view name, std::string_view key,
+                   double value, PairTagSpec* spec);
+
+// The checks of the tag's keys together: geom1, geom2 and law given, the
+// friction keys that exclude each other, a key the tag's law refuses, the
+// materials all four or none and not with stiffness. Throws Error.
+void CheckPairTag(std::string_view source, std::string_view name, const PairTagSpec& spec);
 }  // namespace internal
 DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
                            std::string_view data);

@@ -3,12 +3,14 @@
 #include "contactlaws/simulation.h"
 
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "contactlaws/error.h"
 #include "mujoco/kinematics.h"
+#include "scene/parsed_tags.h"
 #include "sim/settle.h"
 
 namespace contactlaws {
@@ -36,8 +38,15 @@ bool WithoutConstraints(const mjModel* m) {
 
 Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
                        const SimulationOptions& options)
+    : Simulation(std::move(model), std::move(source), options, nullptr) {}
+
+Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
+                       const SimulationOptions& options, const internal::ParsedTags* tags)
     : model_(std::move(model)), source_(std::move(source)) {
-  contact_model_ = std::make_unique<ContactModel>(model_.get(), source_, options.overrides);
+  contact_model_ =
+      tags ? std::unique_ptr<ContactModel>(
+                 new ContactModel(model_.get(), source_, options.overrides, *tags))
+           : std::make_unique<ContactModel>(model_.get(), source_, options.overrides);
   data_.reset(mj_makeData(model_.get()));
   if (!data_) throw Error(fmt::format("{}: MuJoCo could not allocate mjData", source_));
   contacts_ = std::make_unique<ContactData>(*contact_model_, data_.get());
@@ -237,13 +246,38 @@ std::vector<MujocoWarning> Simulation::Warnings() const {
   return warnings;
 }
 
-Scene::Scene(std::string path) : path_(std::move(path)), model_(LoadModelFile(path_)) {}
+Scene::Scene(std::string path)
+    : path_(std::move(path)),
+      model_(LoadModelFile(path_)),
+      tags_(std::make_shared<const internal::ParsedTags>(model_.get(), path_)) {}
 
 Scene::Scene(std::string name, UniqueModel model)
-    : path_(std::move(name)), model_(std::move(model)) {}
+    : path_(std::move(name)),
+      model_(std::move(model)),
+      tags_(std::make_shared<const internal::ParsedTags>(model_.get(), path_)) {}
 
 std::unique_ptr<Simulation> Scene::Make(const SimulationOptions& options) const {
-  return std::make_unique<Simulation>(model_, path_, options);
+  return std::unique_ptr<Simulation>(new Simulation(model_, path_, options, tags_.get()));
 }
+
+std::unique_ptr<Simulation> Scene::Make(const SimulationOptions& options,
+                                        UniqueModel edited) const {
+  // the tags read once are the copy's when its <text> entries are the scene's
+  const mjModel* m = model_.get();
+  const mjModel* e = edited.get();
+  const bool same_text = e->ntext == m->ntext && e->ntextdata == m->ntextdata &&
+                         std::memcmp(e->text_data, m->text_data, m->ntextdata) == 0 &&
+                         std::memcmp(e->text_adr, m->text_adr, m->ntext * sizeof(int)) == 0;
+  if (!same_text) {
+    throw Error(fmt::format("{}: the model to simulate is not a copy of the scene's: its "
+                            "<text> entries differ",
+                            path_));
+  }
+  return std::unique_ptr<Simulation>(
+      new Simulation(std::shared_ptr<const mjModel>(std::move(edited)), path_, options,
+                     tags_.get()));
+}
+
+const internal::ParsedTags& internal::TagsOf(const Scene& scene) { return *scene.tags_; }
 
 }  // namespace contactlaws

@@ -120,7 +120,7 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
        "you mean 'restitution'?)"},
       {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial restitution=0.5 --output {}",
                    scene, data, dir),
-       "contactlaws: --initial: restitution=0.5: 'restitution' is not one of --params (mu)"},
+       "contactlaws: --initial: restitution=0.5: 'restitution' is not one of the parameters (mu)"},
       {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=0.6 --output {}", scene,
                    data, dir),
        "contactlaws: --initial: mu=0.6: outside its bounds [0.1, 0.5]"},

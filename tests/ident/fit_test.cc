@@ -40,37 +40,37 @@ TEST(FitTest, RefusesParametersNamingTheKey) {
                     "board.offset=-0.004:0.001"),
             "accepted");
   EXPECT_EQ(Refusal("restitutoin=0.1:0.9"),
-            "--params: restitutoin=0.1:0.9: 'restitutoin' is not a contactlaw tag key (did you "
+            "restitutoin=0.1:0.9: 'restitutoin' is not a contactlaw tag key (did you "
             "mean 'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
   EXPECT_EQ(Refusal("law=0:1"),
-            "--params: law=0:1: 'law' is not a numeric key (--laws and --frictions choose laws "
-            "and friction models)");
+            "law=0:1: 'law' is not a numeric key (laws and friction models are "
+            "compared, not fitted)");
   EXPECT_EQ(Refusal("restitution=0.9:0.1"),
-            "--params: restitution=0.9:0.1: the bounds are empty (0.9 >= 0.1)");
+            "restitution=0.9:0.1: the bounds are empty (0.9 >= 0.1)");
   EXPECT_EQ(Refusal("restitution=0.1"),
-            "--params: restitution=0.1: bounds must be LO:HI or LO:HI:log");
+            "restitution=0.1: bounds must be LO:HI or LO:HI:log");
   EXPECT_EQ(Refusal("stiffness=0:1e6:log"),
-            "--params: stiffness=0:1e6:log: a log scale needs LO > 0, not 0");
-  EXPECT_EQ(Refusal("mu=0.1:x"), "--params: mu=0.1:x: 'x' is not a finite number");
-  EXPECT_EQ(Refusal("mu=0.1:0.2,mu=0.2:0.3"), "--params: mu=0.2:0.3: key 'mu' is given twice");
+            "stiffness=0:1e6:log: a log scale needs LO > 0, not 0");
+  EXPECT_EQ(Refusal("mu=0.1:x"), "mu=0.1:x: 'x' is not a finite number");
+  EXPECT_EQ(Refusal("mu=0.1:0.2,mu=0.2:0.3"), "mu=0.2:0.3: key 'mu' is given twice");
   EXPECT_EQ(Refusal("ball.mass_scale=0.5:2"),
-            "--params: ball.mass_scale=0.5:2: the scene has no moving body 'ball'");
+            "ball.mass_scale=0.5:2: the scene has no moving body 'ball'");
   EXPECT_EQ(Refusal("cube.mass_scale=0:2"),
-            "--params: cube.mass_scale=0:2: mass_scale must be > 0");
-  EXPECT_EQ(Refusal("mujoco.dmin=0.5:1.5"), "--params: mujoco.dmin=0.5:1.5: dmin must be in (0, 1)");
+            "cube.mass_scale=0:2: mass_scale must be > 0");
+  EXPECT_EQ(Refusal("mujoco.dmin=0.5:1.5"), "mujoco.dmin=0.5:1.5: dmin must be in (0, 1)");
   EXPECT_EQ(Refusal("cube.speed=0:1"),
-            "--params: cube.speed=0:1: 'cube.speed' is not a model parameter: BODY.mass_scale, "
+            "cube.speed=0:1: 'cube.speed' is not a model parameter: BODY.mass_scale, "
             "BODY.inertia_scale, GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction");
   // the tag's own checks, at the bounds
   EXPECT_EQ(Refusal("restitution=0.5:1.5"),
-            "--params: restitution=0.5:1.5: the bound 1.5 is refused: cube.xml: "
+            "restitution=0.5:1.5: the bound 1.5 is refused: cube.xml: "
             "contactlaw:cube-board: restitution=1.5 must be in [0, 1]");
   // a key the law or friction model does not read
   EXPECT_EQ(Refusal("transition_velocity=1e-4:1e-2:log"),
-            "--params: transition_velocity: no tag of cube.xml reads it (law=flores, "
+            "transition_velocity: no tag of cube.xml reads it (law=flores, "
             "friction=coulomb)");
   EXPECT_EQ(Refusal("linear_stiffness=1e4:1e6"),
-            "--params: linear_stiffness: no tag of cube.xml reads it (law=flores, "
+            "linear_stiffness: no tag of cube.xml reads it (law=flores, "
             "friction=coulomb)");
 }
 
@@ -81,9 +81,11 @@ TEST(FitTest, ParametersMapToTagKeysAndModelEdits) {
   EXPECT_NEAR(p[0].At(0.5), 1e6, 1e6 * 1e-14);  // exp(log) rounds
   EXPECT_DOUBLE_EQ(p[1].At(0.25), -0.005);
   const ReplayOptions o = WithParameters(ReplayOptions(), p, {2.5e5, -0.002});
-  ASSERT_EQ(o.simulation.overrides.keys.size(), 1u);
-  EXPECT_EQ(o.simulation.overrides.keys[0].first, "stiffness");
-  EXPECT_EQ(std::stod(o.simulation.overrides.keys[0].second), 2.5e5);
+  // the tag key as a number, no word
+  EXPECT_TRUE(o.simulation.overrides.keys.empty());
+  ASSERT_EQ(o.simulation.overrides.values.size(), 1u);
+  EXPECT_EQ(o.simulation.overrides.values[0].key, "stiffness");
+  EXPECT_EQ(o.simulation.overrides.values[0].value, 2.5e5);
   ASSERT_EQ(o.edits.size(), 1u);
   UniqueModel m(mj_copyModel(nullptr, scene.model()));
   ApplyEdits(m.get(), o.edits);
@@ -191,6 +193,34 @@ TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
   EXPECT_EQ(a.score, b.score);
 }
 
+// A fit's evaluation sets its values on the tags as numbers and its edits on
+// a copy of the model: the tags' text is read once, when the scene is made.
+// Overwritten after that with words the parser refuses, it changes no
+// evaluation (tag keys and a model edit); read again, it would be refused.
+TEST(FitTest, AnEvaluationReadsNoText) {
+  const Scene scene = CubeScene(kTruth);
+  const MeasuredData tosses = Simulated(scene, TossStarts(4, 5), TossOptions());
+  const Replay replay(scene, tosses);
+  FitOptions fit;
+  fit.replay = TossOptions();
+  fit.replay.jobs = 2;
+  fit.parameters =
+      ParseFitParameters("restitution=0.1:0.9,mu=0.1:1,cube.mass_scale=0.5:2", scene.model());
+  fit.budget = 5;
+  fit.seed = 5;
+  const FitResult intact = Fit(replay, fit);
+  // the test's own model: nothing else reads it
+  mjModel* m = const_cast<mjModel*>(scene.model());
+  for (int i = 0; i < m->ntextdata; ++i) {
+    if (m->text_data[i] != '\0') m->text_data[i] = '!';
+  }
+  EXPECT_THROW(ContactModel(scene.model(), "cube.xml"), Error);
+  const FitResult unread = Fit(replay, fit);
+  EXPECT_EQ(unread.evaluations, 5);
+  EXPECT_EQ(unread.values, intact.values);
+  EXPECT_EQ(unread.score, intact.score);
+}
+
 // The start of a fit refused in one line naming the key, value and bounds.
 TEST(FitTest, RefusesAStartNamingTheKey) {
   const Scene scene = CubeScene("law=flores restitution=0.3 stiffness=3e5 friction=coulomb mu=0.3");
@@ -203,27 +233,27 @@ TEST(FitTest, RefusesAStartNamingTheKey) {
     return Refused([&] { ParseFitInitial(text, p, scene.model()); });
   };
   EXPECT_EQ(refusal("restitutoin=0.5"),
-            "--initial: restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did you mean "
+            "restitutoin=0.5: 'restitutoin' is not a contactlaw tag key (did you mean "
             "'restitution'?), nor OBJECT.KEY (mass_scale, inertia_scale, offset, mujoco.*)");
   EXPECT_EQ(refusal("ball.mass_scale=1"),
-            "--initial: ball.mass_scale=1: the scene has no moving body 'ball'");
+            "ball.mass_scale=1: the scene has no moving body 'ball'");
   EXPECT_EQ(refusal("mu=0.3"),
-            "--initial: mu=0.3: 'mu' is not one of --params (restitution, stiffness, "
+            "mu=0.3: 'mu' is not one of the parameters (restitution, stiffness, "
             "board.offset)");
   EXPECT_EQ(refusal("restitution=0.95"),
-            "--initial: restitution=0.95: outside its bounds [0.1, 0.9]");
+            "restitution=0.95: outside its bounds [0.1, 0.9]");
   EXPECT_EQ(refusal("stiffness=1e3"),
-            "--initial: stiffness=1000: outside its bounds [10000, 10000000]");
-  EXPECT_EQ(refusal("restitution=x"), "--initial: restitution=x: 'x' is not a finite number");
-  EXPECT_EQ(refusal("restitution=nan"), "--initial: restitution=nan: 'nan' is not a finite number");
+            "stiffness=1000: outside its bounds [10000, 10000000]");
+  EXPECT_EQ(refusal("restitution=x"), "restitution=x: 'x' is not a finite number");
+  EXPECT_EQ(refusal("restitution=nan"), "restitution=nan: 'nan' is not a finite number");
   EXPECT_EQ(refusal("restitution=0.5,restitution=0.6"),
-            "--initial: restitution=0.6: key 'restitution' is given twice");
-  EXPECT_EQ(refusal("restitution"), "--initial: restitution: is not of the form KEY=VALUE");
+            "restitution=0.6: key 'restitution' is given twice");
+  EXPECT_EQ(refusal("restitution"), "restitution: is not of the form KEY=VALUE");
   // the library's own check, for a start not parsed from text
   EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5}); }),
-            "--initial: 1 values given for 3 parameters (restitution, stiffness, board.offset)");
+            "1 values given for 3 parameters (restitution, stiffness, board.offset)");
   EXPECT_EQ(Refused([&] { CheckInitial(p, {0.5, std::nullopt, 0.002}); }),
-            "--initial: board.offset=0.002: outside its bounds [-0.004, 0.001]");
+            "board.offset=0.002: outside its bounds [-0.004, 0.001]");
   EXPECT_EQ(Refused([&] { CheckInitial(p, {}); }), "accepted");  // no start: the middle
 }
 
