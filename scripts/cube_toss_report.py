@@ -63,6 +63,13 @@ def fmt(x, digits=4):
     return "-" if x is None else f"{x:.{digits}g}"
 
 
+def interval(row, name):
+    """"0.255 [0.2, 0.31]": a mean or median of ranking.csv with its 95% interval (NAME_lo,
+    NAME_hi), the value alone where the fit wrote none."""
+    v, lo, hi = value(row, name), value(row, name + "_lo"), value(row, name + "_hi")
+    return fmt(v) if lo is None or hi is None else f"{fmt(v)} [{fmt(lo, 3)}, {fmt(hi, 3)}]"
+
+
 def meaning(row):
     """What the fitted values say physically, in sentences."""
     lines = []
@@ -85,8 +92,9 @@ def meaning(row):
         lines.append(f"mu = {mu:.3g}: the cube slides {1.1 ** 2 / (2 * mu * GRAVITY):.2f} m from "
                      f"1.1 m/s on a face (v^2 / (2 mu g)), the tosses' sideways speed")
     if offset is not None:
-        lines.append(f"board offset {offset * 1e3:.2f} mm: the data's README puts the resting cube "
-                     f"~1.9 mm below the board's nominal plane")
+        lines.append(f"board offset {offset * 1e3:.2f} mm: fitted within the interval of where the "
+                     f"training tosses rest (board.offset=rest: their median resting height less "
+                     f"the half side, about 1.2 mm below the nominal plane)")
     return lines
 
 
@@ -133,6 +141,8 @@ def parse_bounds(text):
     for item in text.split(","):
         key, spec = item.split("=")
         parts = spec.split(":")
+        if len(parts) < 2:  # board.offset=rest: bounds from the data, not the command line
+            continue
         bounds[key] = (float(parts[0]), float(parts[1]), len(parts) == 3)
     return bounds
 
@@ -142,11 +152,13 @@ def main():
     rows = fits(out)
     ours = [r for r in rows if r[1]["law"] != "mujoco"]
     peer = [r for r in rows if r[1]["law"] == "mujoco"]
-    # the winner: the best training mean (the held-out set chooses nothing)
-    winner = min(ours, key=lambda r: float(r[1]["train_mean"]))
+    # the winner: the best cross-validated mean over the training tosses where the fits have
+    # folds (stage B), else the best training mean (the held-out set chooses nothing)
+    folded = [r for r in ours if r[1].get("cv_mean")]
+    winner = min(folded or ours, key=lambda r: float(r[1]["cv_mean" if folded else "train_mean"]))
     w = winner[1]
     keys = [k for k in w.keys() if k not in ("law", "friction") and not k.startswith(("train_",
-            "validate_")) and k not in ("evaluations", "wall_seconds", "status")]
+            "validate_", "cv_", "versus_winner")) and k != "distinguishable" and k not in ("evaluations", "wall_seconds", "status")]
 
     # figure 1: the held-out error distribution per combination
     table = sorted(rows, key=lambda r: float(r[1]["train_mean"]))
@@ -207,6 +219,17 @@ def main():
         f"(p90 {float(w['validate_p90']):.3g}); trained on tosses 0-199 to a mean of "
         f"{float(w['train_mean']):.4g}.",
         "",
+    ]
+    if folded:
+        same = [label(r[1]) for r in folded if r[1].get("distinguishable") == "no"]
+        lines += [
+            f"Chosen by its cross-validated mean e_q over the training tosses (stage B's folds, "
+            f"95% bootstrap interval): {interval(w, 'cv_mean')}; combinations whose paired "
+            f"interval against it contains 0 (not told apart by the data): "
+            f"{', '.join(same) if same else 'none'}.",
+            "",
+        ]
+    lines += [
         "| | mean e_q | median e_q | tosses | how |",
         "|---|---|---|---|---|",
         f"| contactlaws, {label(w)} | {vmean:.4g} | {vmed:.4g} | 100 held out | fitted on 200 others |",
@@ -236,13 +259,13 @@ def main():
         "`contactlaws fit` with that larger budget. Rows are sorted by training mean. A '-' is "
         "a key the law or model does not read.",
         "",
-        "| stage | law/friction | " + " | ".join(keys) + " | train mean | train median | "
+        "| stage | law/friction | " + " | ".join(keys) + " | train mean [95%] | train median | "
         "held-out mean | held-out median | held-out p90 | evaluations |",
         "|---" * (len(keys) + 8) + "|",
     ]
     for stage, row, _ in table:
         lines.append(f"| {stage} | {label(row)} | " + " | ".join(fmt(value(row, k)) for k in keys) +
-                     f" | {fmt(value(row, 'train_mean'))} | {fmt(value(row, 'train_median'))}"
+                     f" | {interval(row, 'train_mean')} | {fmt(value(row, 'train_median'))}"
                      f" | {fmt(value(row, 'validate_mean'))} | {fmt(value(row, 'validate_median'))}"
                      f" | {fmt(value(row, 'validate_p90'))} | {row['evaluations']} |")
     params = os.environ.get("CUBE_TOSS_PARAMS")

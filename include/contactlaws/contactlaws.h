@@ -28,7 +28,10 @@
 // identification
 #include "contactlaws/fit.h"
 #include "contactlaws/measured.h"
+#include "contactlaws/readable.h"
 #include "contactlaws/replay.h"
+#include "contactlaws/rest.h"
 #include "contactlaws/score.h"
+#include "contactlaws/statistics.h"
 
 #endif  // CONTACTLAWS_CONTACTLAWS_H_

@@ -26,6 +26,7 @@
 #include "contactlaws/measured.h"
 #include "contactlaws/score.h"
 #include "contactlaws/simulation.h"
+#include "contactlaws/statistics.h"
 
 namespace contactlaws {
 
@@ -113,6 +114,9 @@ struct ReplayedTrajectory {
   // that Settle moved into their static equilibrium, and the farthest move, m.
   int settled_bodies = 0;
   double settled_distance = 0;
+  // The simulated state at the last sample compared, the data's columns
+  // (rest.h's resting and final-pose gaps).
+  std::vector<double> last;
   // With keep_trajectories: samples start .. last, the data's columns.
   std::vector<double> simulated;
 };
@@ -145,13 +149,6 @@ class Replay {
   const MeasuredData& data_;
   std::unique_ptr<const internal::Binding> binding_;
 };
-
-// Mean, median and 90th percentile (linear interpolation between order
-// statistics) of values; zeros when empty.
-struct Distribution {
-  double mean = 0, median = 0, p90 = 0;
-};
-Distribution Distribute(std::vector<double> values);
 
 }  // namespace contactlaws
 

@@ -9,26 +9,15 @@
 #include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
+#include "cli/fit_ranking.h"
 #include "cli/impact_csv.h"
+#include "cli/summary_text.h"
 #include "cli/sweep.h"
 #include "scene/number.h"
 #include "scene/tags.h"
 
 namespace contactlaws::cli {
 namespace {
-
-// One law x friction model fitted, and its scores.
-struct Fitted {
-  std::optional<LawId> law;
-  std::optional<FrictionKind> friction;
-  // the parameters its tags read, and each one's place in --params
-  std::vector<FitParameter> parameters;
-  std::vector<size_t> place;
-  FitResult fit;
-  std::vector<ReplayedTrajectory> train, validate;
-  std::string label;  // "flores/coulomb"
-  std::optional<Combination> combination;  // the label's law and friction; none: "mujoco"
-};
 
 // The first contactlaw tag of the scene with the fitted values, as a line
 // to paste into the scene; model parameters as comments beside it.
@@ -68,37 +57,6 @@ std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& op
   return lines;
 }
 
-// f's value of --params' parameter i, nullopt when its tags do not read it.
-std::optional<double> ValueOf(const Fitted& f, size_t i) {
-  for (size_t k = 0; k < f.place.size(); ++k) {
-    if (f.place[k] == i) return f.fit.values[k];
-  }
-  return std::nullopt;
-}
-
-void PrintRanking(const std::vector<Fitted>& fitted, const std::vector<FitParameter>& parameters,
-                  Metric metric, bool validated, std::FILE* out) {
-  fmt::print(out, "{:<32}", "law/friction");
-  for (const FitParameter& p : parameters) fmt::print(out, " {:>13}", p.key.substr(0, 13));
-  fmt::print(out, " {:>11} {:>11}", "train mean", "median");
-  if (validated) fmt::print(out, " {:>11} {:>11} {:>11}", "valid. mean", "median", "p90");
-  fmt::print(out, " {:>6} {:>8}\n", "evals", "wall s");
-  for (const Fitted& f : fitted) {
-    fmt::print(out, "{:<32}", f.label + (f.fit.interrupted ? " (interrupted)" : ""));
-    for (size_t i = 0; i < parameters.size(); ++i) {
-      const std::optional<double> v = ValueOf(f, i);
-      fmt::print(out, " {:>13}", v ? fmt::format("{:.6g}", *v) : "-");
-    }
-    std::vector<double> train, validate;
-    for (const ReplayedTrajectory& r : f.train) train.push_back(r.score.Of(metric));
-    for (const ReplayedTrajectory& r : f.validate) validate.push_back(r.score.Of(metric));
-    const Distribution t = Distribute(train), v = Distribute(validate);
-    fmt::print(out, " {:>11.4g} {:>11.4g}", t.mean, t.median);
-    if (validated) fmt::print(out, " {:>11.4g} {:>11.4g} {:>11.4g}", v.mean, v.median, v.p90);
-    fmt::print(out, " {:>6} {:>8.1f}\n", f.fit.evaluations, f.fit.wall_seconds);
-  }
-}
-
 }  // namespace
 
 int FitCommand(const FitArgs& args) {
@@ -112,8 +70,12 @@ int FitCommand(const FitArgs& args) {
   if (validate_data) validate.emplace(scene, *validate_data);
   Metric metric = Metric::kEq;
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
-  const std::vector<FitParameter> parameters =
-      UnderOption("--params", [&] { return ParseFitParameters(args.params, scene.model()); });
+  const uint64_t seed = ParseSeed(args.seed);
+  std::vector<std::string> offset_lines;  // GEOM.offset=rest: the data's estimate
+  const std::vector<FitParameter> parameters = UnderOption("--params", [&] {
+    return ParseFitParameters(
+        WithRestOffsets(args.params, scene, train_data, seed, &offset_lines), scene.model());
+  });
   const std::vector<std::optional<double>> initial =
       args.initial ? UnderOption("--initial",
                                  [&] {
@@ -122,8 +84,16 @@ int FitCommand(const FitArgs& args) {
                    : std::vector<std::optional<double>>();
   const std::optional<long> budget = ParseWholeNumber(args.budget, 1, 1000000);
   if (!budget) Refuse("--budget", args.budget, "must be a whole number in [1, 1000000]");
-  const std::optional<long> seed = ParseWholeNumber(args.seed, 0, 4294967295L);
-  if (!seed) Refuse("--seed", args.seed, "must be a whole number in [0, 4294967295]");
+  const int count = static_cast<int>(train_data.trajectories.size());
+  std::optional<long> folds;
+  if (args.folds) {
+    folds = ParseWholeNumber(*args.folds, 2, count);
+    if (!folds) {
+      Refuse("--folds", *args.folds,
+             fmt::format("must be a whole number in [2, {}] (the trajectories of {})", count,
+                         train_data.source));
+    }
+  }
 
   // every combination, checked before any is fitted
   std::vector<std::optional<LawId>> laws = {std::nullopt};
@@ -171,6 +141,33 @@ int FitCommand(const FitArgs& args) {
   const std::string dir = CreateDirectory(args.output.value_or("fit"));
   CsvFile ranking(dir + "/ranking.csv"), errors(dir + "/errors.csv");
   CsvFile best_trajectories(dir + "/best_trajectories.csv");
+  std::optional<CsvFile> fold_file;
+  // with --folds: each fold's training part and held-out part, as data
+  std::vector<int> fold_of;
+  std::vector<MeasuredData> fold_train, fold_held;
+  if (folds) {
+    fold_of = AssignFolds(count, static_cast<int>(*folds), seed);
+    fold_file.emplace(dir + "/folds.csv");
+    fold_file->Header({"trajectory", "fold"});
+    for (int i = 0; i < count; ++i) {
+      fold_file->Fields({train_data.trajectories[i].name, fmt::format("{}", fold_of[i])});
+    }
+    for (int k = 0; k < *folds; ++k) {
+      MeasuredData in = train_data, out = train_data;
+      in.trajectories.clear();
+      out.trajectories.clear();
+      for (int i = 0; i < count; ++i) {
+        (fold_of[i] == k ? out : in).trajectories.push_back(train_data.trajectories[i]);
+      }
+      in.source = fmt::format("{} (fold {} left out)", train_data.source, k);
+      out.source = fmt::format("{} (fold {})", train_data.source, k);
+      fold_train.push_back(std::move(in));
+      fold_held.push_back(std::move(out));
+    }
+  }
+  if (WritesOutputs()) {
+    for (const std::string& line : offset_lines) fmt::print(args.report, "{}\n", line);
+  }
 
   bool interrupted = false;
   for (size_t c = 0; c < combos.size() && !interrupted; ++c) {
@@ -184,7 +181,7 @@ int FitCommand(const FitArgs& args) {
       options.initial.push_back(initial[f.place[k]]);
     }
     options.budget = static_cast<int>(*budget);
-    options.seed = static_cast<uint64_t>(*seed);
+    options.seed = seed;
     if (!args.quiet && WritesOutputs()) {  // rank 0 of a job reports alone
       // the first evaluation (the start: --initial's values, or the middle of each range),
       // then every 10th, and the last
@@ -195,6 +192,21 @@ int FitCommand(const FitArgs& args) {
         }
       };
     }
+    // each fold left out in turn: fitted on the others, scored on it
+    f.cv.assign(folds ? count : 0, {});
+    for (int k = 0; folds && k < *folds && !interrupted; ++k) {
+      const Replay part(scene, fold_train[k]);
+      const FitResult fit = Fit(part, options);
+      interrupted = fit.interrupted;
+      if (interrupted) break;
+      const Replay held(scene, fold_held[k]);
+      std::vector<ReplayedTrajectory> scored =
+          held.Run(WithParameters(combos[c], f.parameters, fit.values));
+      for (int i = 0, j = 0; i < count; ++i) {
+        if (fold_of[i] == k) f.cv[i] = std::move(scored[j++]);
+      }
+    }
+    if (interrupted) break;  // a combination without its folds is not ranked
     f.fit = Fit(train, options);
     interrupted = f.fit.interrupted;
     if (f.fit.values.empty()) break;  // stopped before its first evaluation
@@ -211,53 +223,10 @@ int FitCommand(const FitArgs& args) {
     fmt::print(stderr, "contactlaws: interrupted before a first evaluation: no file written\n");
     return kExitInterrupted;
   }
-  // ranked by the training mean: choosing by the held-out scores would fit
-  // the choice to them
-  auto key = [&](const Fitted& f) { return MeanScore(f.train, metric); };
-  std::stable_sort(fitted.begin(), fitted.end(),
-                   [&](const Fitted& a, const Fitted& b) { return key(a) < key(b); });
-
-  std::vector<std::string> header = {"law", "friction"};
-  for (const FitParameter& p : parameters) header.push_back(p.key);
-  for (const char* set : {"train", "validate"}) {
-    for (const char* stat : {"mean", "median", "p90"}) header.push_back(fmt::format("{}_{}", set, stat));
-  }
-  for (const char* column : {"evaluations", "wall_seconds", "status"}) header.emplace_back(column);
-  ranking.Header(header);
-  std::vector<std::string> error_header = {"law", "friction", "set"};
-  for (const std::string& column : ReplayColumns()) error_header.push_back(column);
-  errors.Header(error_header);
-  for (const Fitted& f : fitted) {
-    const std::string law(f.combination ? LawName(f.combination->law) : "mujoco");
-    const std::string friction(f.combination ? FrictionName(f.combination->friction) : "");
-    std::vector<std::string> row = {law, friction};
-    for (size_t i = 0; i < parameters.size(); ++i) {
-      const std::optional<double> v = ValueOf(f, i);
-      row.push_back(v ? Field(*v) : "");
-    }
-    for (const auto* set : {&f.train, &f.validate}) {
-      std::vector<double> values;
-      for (const ReplayedTrajectory& r : *set) values.push_back(r.score.Of(metric));
-      const Distribution d = Distribute(values);
-      for (double v : {d.mean, d.median, d.p90}) row.push_back(set->empty() ? "" : Field(v));
-    }
-    row.push_back(fmt::format("{}", f.fit.evaluations));
-    row.push_back(fmt::format("{:.3f}", f.fit.wall_seconds));
-    row.push_back(f.fit.interrupted ? "interrupted" : "complete");
-    ranking.Fields(row);
-    auto write_errors = [&](const std::vector<ReplayedTrajectory>& set, const char* name,
-                            const MeasuredData& data) {
-      for (size_t i = 0; i < set.size(); ++i) {
-        std::vector<std::string> fields = {law, friction, name};
-        for (std::string& field : ReplayFields(data.trajectories[i], set[i])) {
-          fields.push_back(std::move(field));
-        }
-        errors.Fields(fields);
-      }
-    };
-    write_errors(f.train, "train", train_data);
-    if (validate_data) write_errors(f.validate, "validate", *validate_data);
-  }
+  Rank(&fitted, metric, folds.has_value(), seed);
+  const ScoredData scored{&train_data, validate_data ? &*validate_data : nullptr,
+                          folds.has_value()};
+  WriteRanking(fitted, parameters, metric, scored, seed, &ranking, &errors);
   // the best combination's simulated trajectories, beside the data they score
   const Fitted& winner = fitted.front();
   const std::string tag = TagLine(scene, winner, base, winner.parameters);
@@ -278,11 +247,20 @@ int FitCommand(const FitArgs& args) {
   ranking.Commit();
   errors.Commit();
   best_trajectories.Commit();
-  PrintRanking(fitted, parameters, metric, validate.has_value(), args.report);
+  if (fold_file) fold_file->Commit();
+  PrintRanking(fitted, parameters, metric, scored, seed, args.report);
   fmt::print(args.report, "best ({}):\n{}", winner.label, tag);
-  fmt::print(args.report,
-             "wrote {0}/ranking.csv, {0}/errors.csv, {0}/best_trajectories.csv, {0}/best_tag.txt\n",
-             dir);
+  // the winner read in units, and where its bodies rest against the data
+  fmt::print(args.report, "{} on {} (95% bootstrap intervals):\n", winner.label, train_data.source);
+  PrintReadable(args.report, "  ", train_data, winner.train, metric, seed);
+  PrintRestingGaps(args.report, "  ", train_data, winner.train, seed);
+  if (validate_data) {
+    fmt::print(args.report, "{} on {}:\n", winner.label, validate_data->source);
+    PrintReadable(args.report, "  ", *validate_data, winner.validate, metric, seed);
+    PrintRestingGaps(args.report, "  ", *validate_data, winner.validate, seed);
+  }
+  fmt::print(args.report, "wrote {0}/ranking.csv, {0}/errors.csv, {0}/best_trajectories.csv, "
+             "{0}/best_tag.txt{1}\n", dir, fold_file ? fmt::format(", {}/folds.csv", dir) : "");
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the best result so far is written\n");
     return kExitInterrupted;

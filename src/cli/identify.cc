@@ -82,6 +82,12 @@ ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Met
   return options;
 }
 
+uint64_t ParseSeed(const std::string& text) {
+  const std::optional<long> seed = ParseWholeNumber(text, 0, 4294967295L);
+  if (!seed) Refuse("--seed", text, "must be a whole number in [0, 4294967295]");
+  return static_cast<uint64_t>(*seed);
+}
+
 MeasuredData ReadData(const std::string& option, const std::string& path) {
   if (path.empty()) Refuse(option, path, "must name a trajectory file");
   return ReadMeasuredData(path);
@@ -125,14 +131,6 @@ void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajecto
       file->Row({t.name}, row);
     }
   }
-}
-
-std::string DistributionText(const std::vector<ReplayedTrajectory>& replayed, Metric metric) {
-  std::vector<double> values;
-  for (const ReplayedTrajectory& r : replayed) values.push_back(r.score.Of(metric));
-  const Distribution d = Distribute(values);
-  return fmt::format("{} mean {:.4g} median {:.4g} p90 {:.4g}", MetricName(metric), d.mean,
-                     d.median, d.p90);
 }
 
 std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed) {

@@ -31,6 +31,8 @@ struct ReplayArgs : CommonArgs {
   std::optional<std::string> law;
   std::optional<std::string> restitution;
   std::vector<std::string> set;        // KEY=VALUE on every tag
+  std::string seed = "1";              // the bootstrap's (and fit's search and folds)
+  std::optional<std::string> rest_plane;  // GEOM: its offset estimated from the data
   bool quiet = false;
   std::FILE* report = stdout;  // where the scores are printed
 };
@@ -42,8 +44,11 @@ struct FitArgs : ReplayArgs {
   std::optional<std::string> frictions;  // M1,M2,... or all
   std::optional<std::string> validate;   // trajectories not fitted on
   std::string budget = "200";
-  std::string seed = "1";
+  std::optional<std::string> folds;      // K: K-fold cross-validation over the trajectories
 };
+
+// --seed, or Refuse.
+uint64_t ParseSeed(const std::string& text);
 
 // The replay options of args (the scene's tags read later, by Replay::Run):
 // the law and friction overrides, --set, the timestep (auto unless
@@ -61,9 +66,6 @@ std::vector<std::string> ReplayFields(const MeasuredTrajectory& t, const Replaye
 // The simulated samples of every trajectory in the data's own columns.
 void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed,
                     CsvFile* file);
-
-// "mean 0.255 median 0.043 p90 0.52" of metric over replayed.
-std::string DistributionText(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
 
 // "3 of 300 diverged" or "".
 std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed);

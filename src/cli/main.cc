@@ -240,6 +240,10 @@ void AddReplayOptions(CLI::App* cmd, ReplayArgs* args) {
   cmd->add_option("--set", args->set, "KEY=VALUE: set a contactlaw tag key on every tag "
                   "(repeatable)");
   AddSettle(cmd, &args->settle);
+  cmd->add_option("--seed", args->seed,
+                  "the seed of the bootstrap intervals (and of fit's search and folds): the same "
+                  "seed, the same result")
+      ->capture_default_str();
   cmd->add_option("--jobs", args->jobs,
                   "threads, >= 1 (default: the number of cores); the results do not depend on it")
       ->type_name("INT");
@@ -252,6 +256,8 @@ void AddReplay(CLI::App* app, Commands* c) {
   AddReplayOptions(c->replay_cmd, &c->replay);
   c->replay_cmd->add_option("--output", c->replay.output,
                             "DIR: writes replay.csv (scores) and trajectories.csv (simulated)");
+  c->replay_cmd->add_option("--rest-plane", c->replay.rest_plane,
+                            "GEOM: the plane's offset that puts it where the data rest");
 }
 
 void AddFit(CLI::App* app, Commands* c) {
@@ -261,7 +267,8 @@ void AddFit(CLI::App* app, Commands* c) {
   AddReplayOptions(c->fit_cmd, &f);
   c->fit_cmd->add_option("--params", f.params,
                          "KEY=LO:HI[:log],...: tag keys, BODY.mass_scale, BODY.inertia_scale, "
-                         "GEOM.offset, mujoco.timeconst|dampratio|dmin|dmax|width|friction")
+                         "GEOM.offset (or GEOM.offset=rest: within the interval of where the data rest), "
+                         "mujoco.timeconst|dampratio|dmin|dmax|width|friction")
       ->required();
   c->fit_cmd->add_option("--initial", f.initial,
                          "KEY=VALUE,...: where the search starts, keys of --params (the others at "
@@ -274,8 +281,9 @@ void AddFit(CLI::App* app, Commands* c) {
                          "measured trajectories the fit does not see, scored at the fitted values");
   c->fit_cmd->add_option("--budget", f.budget, "evaluations per combination")
       ->capture_default_str();
-  c->fit_cmd->add_option("--seed", f.seed, "the search's seed: the same seed, the same result")
-      ->capture_default_str();
+  c->fit_cmd->add_option("--folds", f.folds,
+                         "K: K-fold cross-validation over the trajectories (seeded), ranked by "
+                         "the held-out score");
   c->fit_cmd->add_option("--output", f.output,
                          "DIR (default fit): ranking.csv, errors.csv, best_trajectories.csv, "
                          "best_tag.txt");

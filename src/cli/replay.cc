@@ -5,6 +5,7 @@
 #include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
+#include "cli/summary_text.h"
 #include "cli/sweep.h"
 
 namespace contactlaws::cli {
@@ -37,6 +38,9 @@ int ReplayCommand(const ReplayArgs& args) {
   ReplayOptions options = ParseReplayOptions(args, scene, &metric);
   options.keep_trajectories = args.output.has_value();
   options.should_stop = [] { return stop_signal.load(); };
+  const uint64_t seed = ParseSeed(args.seed);
+  std::optional<OffsetEstimate> offset;  // refused before the runs
+  if (args.rest_plane) offset = EstimateOffset(scene, *args.rest_plane, data, seed);
 
   // the outputs opened before the runs: an unwritable folder fails now
   std::optional<CsvFile> scores, simulated;
@@ -61,12 +65,12 @@ int ReplayCommand(const ReplayArgs& args) {
     scores->Commit();
     simulated->Commit();
   }
-  fmt::print(args.report, "{}: {} trajectories of {} (start {}): {}\n", scene.path(),
-             replayed.size(), data.source, args.start, DistributionText(replayed, metric));
-  if (metric != Metric::kEq)
-    fmt::print(args.report, "  {}\n", DistributionText(replayed, Metric::kEq));
-  fmt::print(args.report, "  {}\n  {}\n", DistributionText(replayed, Metric::kPositionRms),
-             DistributionText(replayed, Metric::kAngleRms));
+  fmt::print(args.report, "{}: {} trajectories of {} (start {}; means and medians with their "
+             "95% bootstrap interval over the trajectories):\n", scene.path(), replayed.size(),
+             data.source, args.start);
+  PrintReadable(args.report, "  ", data, replayed, metric, seed);
+  PrintRestingGaps(args.report, "  ", data, replayed, seed);
+  if (offset) fmt::print(args.report, "  {}\n", OffsetText(*args.rest_plane, *offset));
   if (const std::string diverged = DivergedText(replayed); !diverged.empty()) {
     fmt::print(stderr, "contactlaws: {}: warning: {}\n", scene.path(), diverged);
   }

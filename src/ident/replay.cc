@@ -43,6 +43,7 @@ void Share(WorkSpread& spread, const std::vector<double>& seconds,
     double diverged_at;
     int settled_bodies;
     double settled_distance;
+    size_t last;  // doubles of ReplayedTrajectory::last, before the simulated samples
   };
   std::vector<std::string> items(results->size());
   const int count = static_cast<int>(results->size());
@@ -50,8 +51,9 @@ void Share(WorkSpread& spread, const std::vector<double>& seconds,
     if (!spread.Mine(i, count)) continue;
     const ReplayedTrajectory& r = (*results)[i];
     const Fixed fixed{r.status, r.start, r.score, r.diverged_at, r.settled_bodies,
-                      r.settled_distance};
+                      r.settled_distance, r.last.size()};
     items[i].assign(reinterpret_cast<const char*>(&fixed), sizeof fixed);
+    items[i].append(reinterpret_cast<const char*>(r.last.data()), r.last.size() * sizeof(double));
     items[i].append(reinterpret_cast<const char*>(r.simulated.data()),
                     r.simulated.size() * sizeof(double));
   }
@@ -66,8 +68,11 @@ void Share(WorkSpread& spread, const std::vector<double>& seconds,
     r.diverged_at = fixed.diverged_at;
     r.settled_bodies = fixed.settled_bodies;
     r.settled_distance = fixed.settled_distance;
-    r.simulated.resize((items[i].size() - sizeof fixed) / sizeof(double));
-    std::memcpy(r.simulated.data(), items[i].data() + sizeof fixed,
+    r.last.resize(fixed.last);
+    std::memcpy(r.last.data(), items[i].data() + sizeof fixed, r.last.size() * sizeof(double));
+    const size_t simulated = sizeof fixed + r.last.size() * sizeof(double);
+    r.simulated.resize((items[i].size() - simulated) / sizeof(double));
+    std::memcpy(r.simulated.data(), items[i].data() + simulated,
                 r.simulated.size() * sizeof(double));
   }
 }
@@ -205,6 +210,7 @@ class Replay::Rollout {
       }
     }
     result.score = score.Finish();
+    result.last = row_;
     return result;
   }
 
@@ -319,24 +325,6 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   }
   if (options.spread) Share(*options.spread, seconds, &results);
   return results;
-}
-
-Distribution Distribute(std::vector<double> values) {
-  Distribution d;
-  if (values.empty()) return d;
-  double sum = 0;
-  for (double v : values) sum += v;  // in order: the same bits whatever the threads
-  d.mean = sum / values.size();
-  std::sort(values.begin(), values.end());
-  auto quantile = [&](double p) {
-    const double at = p * (values.size() - 1);
-    const size_t lo = static_cast<size_t>(std::floor(at));
-    const size_t hi = std::min(lo + 1, values.size() - 1);
-    return values[lo] + (at - lo) * (values[hi] - values[lo]);
-  };
-  d.median = quantile(0.5);
-  d.p90 = quantile(0.9);
-  return d;
 }
 
 }  // namespace contactlaws

@@ -38,11 +38,12 @@ constexpr char kTag[] = "law=flores restitution=0.3 stiffness=3e5 friction=coulo
 
 // `run`'s trajectory of scene as measured data: a trajectory column added,
 // twice (two trajectories of the same run).
-std::string MeasuredFromRun(const std::string& scene, const std::string& name) {
+std::string MeasuredFromRun(const std::string& scene, const std::string& name,
+                            double duration = 0.5) {
   const std::string run = ::testing::TempDir() + "/" + name + "_run.csv";
-  const Result r = RunCli(fmt::format("run {} --duration 0.5 --sample-rate 148 --columns bodies "
+  const Result r = RunCli(fmt::format("run {} --duration {} --sample-rate 148 --columns bodies "
                                       "--output {}",
-                                      scene, run));
+                                      scene, duration, run));
   EXPECT_EQ(r.status, 0) << r.output;
   const std::vector<std::string> lines = Lines(ReadFile(run));
   const std::string path = ::testing::TempDir() + "/" + name + ".csv";
@@ -91,6 +92,12 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
   const std::string dir = ::testing::TempDir() + "/replay_bad_out";
   std::filesystem::remove_all(dir);
   const std::string other = WriteScene("replay_bad_ball", TagScene(Tag("geom1=ball geom2=floor law=hertz stiffness=1e6")));
+  // 0.1 s from 0.2 m: the cube is still falling at the end
+  const std::string falling = MeasuredFromRun(scene, "replay_bad_falling", 0.1);
+  const std::string never_rest =
+      fmt::format("{}: 0 of 2 trajectories come to rest (slower than 0.02 m/s over their last 5 "
+                  "samples): an offset from their resting height needs at least 5",
+                  falling);
   const std::pair<std::string, std::string> cases[] = {
       {fmt::format("replay {} --data /nonexistent.csv --output {}", scene, dir),
        "contactlaws: /nonexistent.csv: cannot open the file"},
@@ -130,6 +137,19 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
       {fmt::format("fit {} --data {} --params mu=0.1:0.5 --initial mu=0.2,mu=0.3 --output {}",
                    scene, data, dir),
        "contactlaws: --initial: mu=0.3: key 'mu' is given twice"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --folds 1 --output {}", scene, data, dir),
+       fmt::format("contactlaws: --folds=1 must be a whole number in [2, 2] (the trajectories of "
+                   "{})", data)},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --folds 3 --output {}", scene, data, dir),
+       fmt::format("contactlaws: --folds=3 must be a whole number in [2, 2] (the trajectories of "
+                   "{})", data)},
+      {fmt::format("replay {} --data {} --rest-plane board --output {}", scene, falling, dir),
+       "contactlaws: " + never_rest},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5,board.offset=rest --output {}", scene,
+                   falling, dir),
+       "contactlaws: --params: board.offset=rest: " + never_rest},
+      {fmt::format("replay {} --data {} --rest-plane cube --output {}", scene, data, dir),
+       fmt::format("contactlaws: {}: geom 'cube' is not a plane of the world facing up", scene)},
   };
   for (const auto& [arguments, message] : cases) {
     const Result r = RunCli(arguments);
@@ -153,8 +173,20 @@ TEST(IdentifyCliTest, AFitWritesItsRankingAndTheTagToPaste) {
   ASSERT_EQ(r.status, 0) << r.output;
   const std::vector<std::string> ranking = Lines(ReadFile(dir + "/ranking.csv"));
   ASSERT_EQ(ranking.size(), 3u);
-  EXPECT_EQ(ranking[0], "law,friction,restitution,mu,train_mean,train_median,train_p90,"
-                        "validate_mean,validate_median,validate_p90,evaluations,wall_seconds,status");
+  // each mean and median with its interval, beside the scores in mm and degrees
+  const std::string head = "law,friction,restitution,mu,train_mean,train_mean_lo,train_mean_hi,"
+                           "train_median,train_median_lo,train_median_hi,train_p90,"
+                           "train_position_mm_mean,train_position_mm_mean_lo,";
+  EXPECT_EQ(ranking[0].substr(0, head.size()), head);
+  const std::string tail = ",validate_another_face,validate_another_face_lo,"
+                           "validate_another_face_hi,versus_winner,versus_winner_lo,"
+                           "versus_winner_hi,distinguishable,evaluations,wall_seconds,status";
+  EXPECT_EQ(ranking[0].substr(ranking[0].size() - tail.size()), tail);
+  for (const char* column : {",train_angle_deg_median_hi,", ",train_final_angle_deg_p90,",
+                             ",validate_mean,validate_mean_lo,validate_mean_hi,"}) {
+    EXPECT_NE(ranking[0].find(column), std::string::npos) << column;
+  }
+  EXPECT_NE(r.output.find("another face: "), std::string::npos) << r.output;
   // flores fits its own data best; hertz reads no restitution
   EXPECT_EQ(ranking[1].substr(0, 15), "flores,coulomb,");
   EXPECT_EQ(ranking[2].substr(0, 15), "hertz,coulomb,,");
@@ -171,6 +203,43 @@ TEST(IdentifyCliTest, AFitWritesItsRankingAndTheTagToPaste) {
             0u)
       << tag;
   EXPECT_EQ(Lines(ReadFile(dir + "/errors.csv")).size(), 1u + 2 * 2 * 2);
+}
+
+// --folds: every combination fitted on each fold's complement and scored on
+// it, ranked by that score; the same files whatever the threads.
+TEST(IdentifyCliTest, FoldsCrossValidateTheSameWhateverTheJobs) {
+  const std::string truth = CubeScene("fit_folds_truth", kTag);
+  const std::string data = MeasuredFromRun(truth, "fit_folds_data");
+  std::string files[2][3];
+  for (int jobs : {1, 2}) {
+    const std::string dir = fmt::format("{}/fit_folds_out{}", ::testing::TempDir(), jobs);
+    const Result r = RunCli(fmt::format("fit {} --data {} --timestep 5e-4 --params mu=0.1:0.9 "
+                                        "--budget 6 --laws flores,hertz --folds 2 --seed 4 "
+                                        "--jobs {} --quiet --output {}",
+                                        truth, data, jobs, dir));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("the data (cv e_q, paired 95% bootstrap over 2 trajectories) tell "),
+              std::string::npos)
+        << r.output;
+    std::string ranking;
+    for (const std::string& line : Lines(ReadFile(dir + "/ranking.csv"))) {
+      std::vector<std::string> f = Split(line, ',');
+      f[f.size() - 2].clear();  // wall_seconds
+      for (const std::string& field : f) ranking += field + ",";
+      ranking += "\n";
+    }
+    files[jobs - 1][0] = ranking;
+    files[jobs - 1][1] = ReadFile(dir + "/folds.csv");
+    files[jobs - 1][2] = ReadFile(dir + "/errors.csv");
+  }
+  EXPECT_EQ(files[0][0], files[1][0]);
+  EXPECT_EQ(files[0][1], files[1][1]);
+  EXPECT_EQ(files[0][2], files[1][2]);
+  EXPECT_EQ(Lines(files[0][1]).size(), 3u);  // header, a, b
+  EXPECT_NE(files[0][0].find(",cv_mean,cv_mean_lo,cv_mean_hi,cv_median,"), std::string::npos);
+  // the training and the held-out score of every trajectory, per combination
+  EXPECT_EQ(Lines(files[0][2]).size(), 1u + 2 * (2 + 2));
+  EXPECT_NE(files[0][2].find("flores,coulomb,cv,a,"), std::string::npos);
 }
 
 // With a budget of one, every combination's one evaluation is the start:
