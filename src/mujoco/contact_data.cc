@@ -121,6 +121,10 @@ const ContactStepsOptions& ContactData::contact_steps() const { return stepper_-
 
 int ContactData::last_substeps() const { return stepper_->substeps(); }
 
+double ContactData::contact_steps_worst_turn() const { return stepper_->worst_turn(); }
+
+double ContactData::contact_steps_worst_turn_time() const { return stepper_->worst_turn_time(); }
+
 const std::optional<Divergence>& ContactData::divergence() const {
   return committer_->divergence();
 }

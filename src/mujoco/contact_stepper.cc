@@ -183,6 +183,15 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   active_ = true;
   h_ = m->opt.timestep;
   BuildContactSpace(m, d);
+  for (const PointEvaluation& e : points_) {
+    for (const int body : model_.pairs()[e.pair].body) {
+      const double turn = mju_norm3(d->cvel + 6 * body) * h_;
+      if (turn > worst_turn_) {
+        worst_turn_ = turn;
+        worst_turn_time_ = d->time;
+      }
+    }
+  }
 
   const int n = static_cast<int>(points_.size());
   const double delta = h_ / SubSteps(h_);

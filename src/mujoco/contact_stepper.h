@@ -78,6 +78,11 @@ class ContactStepper {
   int FindPoint(int pair, const double pos[3]) const;
   // The episode of inner point id when the step started (-1: none).
   int StartEpisode(int id) const { return points_[id].episode; }
+  // The largest angle (rad) a body with points turned within one step, at
+  // its start's spin, and the time of that step's start: how far the frozen
+  // configuration was from the step's end.
+  double worst_turn() const { return worst_turn_; }
+  double worst_turn_time() const { return worst_turn_time_; }
   // The sub-steps the last Integrate took (its touches split some).
   int substeps() const { return substeps_; }
 
@@ -112,6 +117,8 @@ class ContactStepper {
   int samples_used_ = 0;
   int substeps_ = 0;
   double h_ = 0;
+  double worst_turn_ = 0;
+  double worst_turn_time_ = 0;
   bool active_ = false;  // Integrate found points this step
 };
 
