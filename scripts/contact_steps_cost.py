@@ -9,6 +9,7 @@ ratio (issue 35's goal: <= 2). Friction can be overridden (--friction none): fri
 integrated inside the step (docs/timestep.md, "Contact steps").
 
   /usr/bin/python3 scripts/contact_steps_cost.py build/contactlaws [--repeats 5] [--duration 5]
+      [--friction none] [--scenes mjcf/die_throw.xml ...]
 """
 import argparse
 import os
@@ -48,7 +49,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--duration", default="5")
     parser.add_argument("--friction", default=None, help="override every tag's friction")
-    parser.add_argument("scenes", nargs="*", default=SCENES)
+    parser.add_argument("--scenes", nargs="+", default=SCENES)
     args = parser.parse_args()
     step = ["--timestep", "2e-3", "--integrator", "euler", "--duration", args.duration]
     print(f"load average {os.getloadavg()[0]:.2f}; {args.repeats} runs each, alternated")
