@@ -151,6 +151,11 @@ double ElasticEnergy(const LawParams& params, double depth);
 // makes it chatter. Points of a pair add (their dampers act in parallel).
 double DampingCoefficient(const LawParams& params, const ContactState& state);
 
+// The elastic contact duration of a law at impact speed v (m/s, > 0) for
+// effective mass m (kg), s: HertzContactDuration, or pi sqrt(m/k) for
+// Kelvin-Voigt. Infinite for an infinite mass.
+double ElasticContactDuration(const LawParams& law, double mass, double speed);
+
 // The depth (m) at which the law's spring carries load (N) at rest: (load /
 // K)^(1/n), or load / k (Kelvin-Voigt). 0 for no load.
 double RestingDepth(const LawParams& params, double load);

@@ -84,6 +84,9 @@ struct SimulationOptions {
   // (ContactData::KeepMotionOnly): for runs whose rows are the bodies' and
   // joints' motion and read nothing else of the data (replay's rollouts).
   bool motion_only = false;
+  // Contacts integrated inside each step (ContactData::SetContactSteps); off
+  // by default. Set after settle, which relaxes without them.
+  ContactStepsOptions contact_steps;
 };
 
 // One run of a model: its data, its laws (the tags with the run's

@@ -180,6 +180,15 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
   const bool ok = steps >= kStepsPerContact;
   fmt::print(out, "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps,
              dt, ok ? "ok" : "TOO COARSE", estimate.timestep());
+  if (!ok) {
+    // the contact integrated inside the step instead (ContactStepsOptions)
+    const ContactSteps per(kDefaultAccuracy);
+    fmt::print(out,
+               "  or --contact-steps auto: {:.0f} sub-steps of its normal law inside each {} s "
+               "step near and in this contact ({:.0f} per contact; friction stays at the step)\n",
+               std::ceil(dt / per.NormalStep(law.law, estimate.contact_duration)), dt,
+               per.PerContact(law.law));
+  }
   return !ok || side_coarse;
 }
 

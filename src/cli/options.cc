@@ -152,6 +152,10 @@ CommonOptions ParseCommon(const CommonArgs& args) {
     if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy, args.timestep);
   }
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
+  if (args.contact_steps) {
+    if (auto_timestep) Refuse("--contact-steps", *args.contact_steps, "goes with a fixed timestep");
+    options.simulation.contact_steps.substeps = ParseContactSteps(*args.contact_steps);
+  }
   options.simulation.settle = args.settle;
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
   if (args.dissipation) {
@@ -159,6 +163,15 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   }
   ParseFrictionOverrides(args.friction, args.mu, &options.simulation.overrides);
   return options;
+}
+
+int ParseContactSteps(const std::string& text) {
+  if (text == "auto") return kContactStepsAuto;
+  const std::optional<double> value = ParseNumber(text);
+  if (!value || !(*value >= 1) || *value != std::floor(*value) || *value > 1e6) {
+    Refuse("--contact-steps", text, "must be auto or a whole number of sub-steps in [1, 1e6]");
+  }
+  return static_cast<int>(*value);
 }
 
 void ParseFrictionOverrides(const std::optional<std::string>& friction,
@@ -331,6 +344,10 @@ void AddCommon(CLI::App* cmd, CommonArgs* args, bool sampling) {
   AddDissipation(cmd, &args->dissipation);
   AddFriction(cmd, &args->friction, &args->mu);
   AddSettle(cmd, &args->settle);
+  cmd->add_option("--contact-steps", args->contact_steps,
+                  "auto or N: integrate the contacts inside each fixed step, in sub-steps per "
+                  "contact (auto) or N of them, and apply their mean force (docs/timestep.md, "
+                  "\"Contact steps\"); default: off");
   if (sampling) {
     AddNumber(cmd, "--sample-rate", &args->sample_rate, "trajectory rows per simulated second")
         ->capture_default_str();

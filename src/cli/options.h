@@ -36,6 +36,7 @@ struct CommonArgs {
   std::optional<std::string> friction;     // every tagged pair's friction model
   std::optional<std::string> mu;           // every tagged pair's mu (static = kinetic)
   bool settle = false;  // the bodies in contact at t = 0 into their static equilibrium
+  std::optional<std::string> contact_steps;  // "auto" or a count of sub-steps
 };
 
 // What SimulationOptions leave out of the common options: the run's length
@@ -79,6 +80,10 @@ double ParseAccuracy(const std::string& text, const std::optional<std::string>& 
 // Validates the common options (overrides but --dissipation left empty; no
 // timestep for auto).
 CommonOptions ParseCommon(const CommonArgs& args);
+
+// --contact-steps: "auto" (kContactStepsAuto) or a whole number >= 1 of
+// sub-steps, or Refuse.
+int ParseContactSteps(const std::string& text);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
 int ParseIntegrator(std::string_view name);

@@ -181,6 +181,12 @@ double DampingCoefficient(const LawParams& p, const ContactState& state) {
   return std::max(0.0, (EvaluateLaw(p, faster).total - EvaluateLaw(p, state).total) / delta);
 }
 
+double ElasticContactDuration(const LawParams& law, double mass, double speed) {
+  if (std::isinf(mass)) return std::numeric_limits<double>::infinity();
+  if (Law(law.law).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
+  return HertzContactDuration(law.stiffness, law.exponent, mass, speed);
+}
+
 double RestingDepth(const LawParams& p, double load) {
   if (!(load > 0)) return 0;
   return Law(p.law).family == LawFamily::kLinear ? load / p.linear_stiffness

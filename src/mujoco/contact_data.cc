@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "mujoco/contact_stepper.h"
 #include "mujoco/kinematics.h"
 #include "mujoco/hook_session.h"
 #include "mujoco/hooks.h"
@@ -17,6 +18,7 @@
 
 namespace contactlaws {
 
+using internal::ContactStepper;
 using internal::PointEvaluator;
 using internal::ProposedPairs;
 using internal::StepCapture;
@@ -32,7 +34,8 @@ ContactData::ContactData(const ContactModel& model, mjData* d)
           std::min<size_t>(model.slot_count(), 4 * model.pairs().size()))),
       step_start_(std::make_unique<StepStartVelocities>(model.model()->nv)),
       evaluator_(std::make_unique<PointEvaluator>(model)),
-      committer_(std::make_unique<StepCommitter>(model)) {
+      committer_(std::make_unique<StepCommitter>(model)),
+      stepper_(std::make_unique<ContactStepper>(model)) {
   // MuJoCo's collision pass has nothing to do here: every pair is ours
   if (proposals_->own_broadphase()) view_.opt.disableflags |= mjDSBL_CONTACT;
   RegisterContactData(d, this);
@@ -88,15 +91,43 @@ bool ContactData::ClaimPair(int g1, int g2) {
 void ContactData::ApplyForces() {
   capture_->NoticeEvaluation(d_->time, evaluator_->latest_time());
   ApplyDrives(model_, d_);
-  evaluator_->Evaluate(d_, proposals_->Use(), committer_->episodes(), *step_start_);
+  // contacts integrated inside the step: at its start, and its later
+  // evaluations (RK4's stages) take the same mean force; any other
+  // evaluation (mj_forward) is the laws at its state
+  const bool start = capture_->armed();
+  ContactStepper* inner = stepper_->enabled() && (start || capture_->held()) ? stepper_.get()
+                                                                            : nullptr;
+  evaluator_->Evaluate(d_, proposals_->Use(), committer_->episodes(), *step_start_, inner,
+                       view_.opt.timestep);
+  if (inner && start) {
+    inner->Integrate(&view_, d_, evaluator_->latest());
+  } else if (inner) {
+    inner->ApplyForce(&view_, d_);
+  }
   capture_->Offer(evaluator_->latest(), evaluator_->latest_time());
 }
 
 void ContactData::AfterStep() {
   capture_->Disarm();
-  committer_->AfterStep(d_, evaluator_->latest(), *capture_, *step_start_);
+  const bool inner = stepper_->enabled() && capture_->held() && d_->time > capture_->time();
+  if (inner) stepper_->CorrectPositions(&view_, d_);
+  committer_->AfterStep(d_, evaluator_->latest(), *capture_, *step_start_,
+                        inner ? stepper_.get() : nullptr);
+  stepper_->Spend();
   capture_->Release();
 }
+
+void ContactData::SetContactSteps(const ContactStepsOptions& options) {
+  stepper_->set_options(options);
+}
+
+const ContactStepsOptions& ContactData::contact_steps() const { return stepper_->options(); }
+
+int ContactData::last_substeps() const { return stepper_->substeps(); }
+
+double ContactData::contact_steps_worst_turn() const { return stepper_->worst_turn(); }
+
+double ContactData::contact_steps_worst_turn_time() const { return stepper_->worst_turn_time(); }
 
 const std::optional<Divergence>& ContactData::divergence() const {
   return committer_->divergence();

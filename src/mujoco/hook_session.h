@@ -104,6 +104,8 @@ class StepCapture {
 
   // The step's start state was captured this step.
   bool held() const { return phase_ == Phase::kHeld; }
+  // The next evaluation is the step's start state.
+  bool armed() const { return phase_ == Phase::kArmed; }
   // The latest captured points and their time (kept after Release, until
   // the next capture or Reset).
   const std::vector<PointEvaluation>& points() const { return points_; }

@@ -20,31 +20,43 @@ PointEvaluator::PointEvaluator(const ContactModel& model)
 }
 
 void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
-                              const EpisodeLog& episodes, const StepStartVelocities& start) {
+                              const EpisodeLog& episodes, const StepStartVelocities& start,
+                              ContactStepper* inner, double h) {
   const mjModel* m = model_.model();
   latest_.clear();
   latest_time_ = d->time;
+  if (inner) inner->Clear();
   for (const int p : pairs) {
     const GeomPair& pair = model_.pairs()[p];
     const int g0 = pair.geom[0];
     const int g1 = pair.geom[1];
-    if (FarApart(m, d, g0, g1)) continue;
+    const double margin = inner ? inner->Reach(d, pair, h) : 0.0;
+    if (margin > 0) {
+      double gap;
+      mjtNum normal[3];
+      if (BoundingGap(m, d, g0, g1, &gap, normal) && gap > margin) continue;
+    } else if (FarApart(m, d, g0, g1)) {
+      continue;
+    }
 
     // the narrowphase (MuJoCo's, or ours for box-box: narrowphase.h): dist < 0
     // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
     // midway between the surfaces
-    const int count = std::min(Collide(m, d, g0, g1, 0, contacts_.get()), pair.slots);
+    const int count = std::min(Collide(m, d, g0, g1, margin, contacts_.get()), pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
-      if (!(-con.dist > 0)) continue;
+      if (!(-con.dist > 0)) {
+        if (inner) inner->AddNear(d, p, con);
+        continue;
+      }
       // the point is made where it is kept (it is large: no copy)
       PointEvaluation& e = latest_.emplace_back();
       EvaluatePoint(d, p, con, episodes, start, &taken, &e);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
-      for (int b = 0; b < 2; ++b) {
+      for (int b = 0; inner == nullptr && b < 2; ++b) {
         vec3::Scale(push, con.frame, b == 1 ? e.force : -e.force);
         AddPointForce(m, d, pair.body[b], con.pos, push, d->qfrc_passive);
       }

@@ -19,6 +19,7 @@
 
 #include "memory/contact_memory.h"
 #include "contactlaws/contact_model.h"
+#include "mujoco/contact_stepper.h"
 #include "mujoco/narrowphase.h"
 #include "mujoco/step_start.h"
 
@@ -30,9 +31,13 @@ class PointEvaluator {
   explicit PointEvaluator(const ContactModel& model);
 
   // Evaluates pairs (ContactModel::pairs() indices) at d's state into
-  // latest() (time d->time) and adds their forces to d->qfrc_passive.
+  // latest() (time d->time) and adds their forces to d->qfrc_passive. With
+  // inner (contacts integrated inside the step of h s, contact_stepper.h):
+  // the points within its reach but not in contact go to inner, and the
+  // normal forces are left to it (friction is added).
   void Evaluate(mjData* d, const std::vector<int>& pairs, const EpisodeLog& episodes,
-                const StepStartVelocities& start);
+                const StepStartVelocities& start, ContactStepper* inner = nullptr,
+                double h = 0);
 
   // Forgets the latest evaluation.
   void Reset() { latest_.clear(); }

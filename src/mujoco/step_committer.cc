@@ -118,11 +118,47 @@ void StepCommitter::CheckDivergence(const mjData* d, const StepCapture& capture,
   }
 }
 
+double StepCommitter::SeparationSpeed(mjData* d, int pair, const double pos[3],
+                                     const double normal[3], double last_rate,
+                                     const StepStartVelocities& start) const {
+  return start.has_current() ? -ApproachRate(model_, d, model_.pairs()[pair], pos, normal,
+                                             start.current(), start.current_time())
+                             : -last_rate;
+}
+
+void StepCommitter::CommitInner(mjData* d, ContactStepper* inner,
+                                const StepStartVelocities& start) {
+  inner_episode_.assign(inner->point_count(), -1);
+  for (int k = 0; k < inner->sample_count(); ++k) {
+    InnerSample& sample = inner->samples()[k];
+    for (size_t j = 0; j < sample.points.size(); ++j) {
+      PointEvaluation& e = sample.points[j];
+      if (k > 0 && !e.touch) e.episode = inner_episode_[sample.ids[j]];
+    }
+    const int before = static_cast<int>(episodes_.episodes().size());
+    ledger_.Commit(sample.time, sample.points);
+    episodes_.Commit(sample.time, sample.points);
+    int opened = 0;
+    for (size_t j = 0; j < sample.points.size(); ++j) {
+      const PointEvaluation& e = sample.points[j];
+      inner_episode_[sample.ids[j]] = e.episode < 0 ? before + opened++ : e.episode;
+    }
+    episodes_.CloseVanished([&](int pair, const double pos[3], const double normal[3],
+                                double last_rate) {
+      const int id = k == 0 ? -1 : inner->FindPoint(pair, pos);
+      return id >= 0 ? -inner->Rate(k, id) : SeparationSpeed(d, pair, pos, normal, last_rate, start);
+    });
+    impacts_.Commit(sample.time, sample.points, episodes_);
+  }
+}
+
 void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
-                              const StepCapture& capture, const StepStartVelocities& start) {
+                              const StepCapture& capture, const StepStartVelocities& start,
+                              ContactStepper* inner) {
   if (list_visible_points_) AppendVisiblePoints(model_, latest, d, &visible_overflow_);
   CheckDivergence(d, capture, start);
   if (!capture.held() || divergence_) return;
+  if (inner && inner->sample_count() > 0) return CommitInner(d, inner, start);
 
   // the energy of the step, the episodes of its start state
   const std::vector<PointEvaluation>& points = capture.points();
@@ -134,9 +170,7 @@ void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& lat
   // normal last in contact
   episodes_.CloseVanished([&](int pair, const double pos[3], const double normal[3],
                               double last_rate) {
-    return start.has_current() ? -ApproachRate(model_, d, model_.pairs()[pair], pos, normal,
-                                               start.current(), start.current_time())
-                               : -last_rate;
+    return SeparationSpeed(d, pair, pos, normal, last_rate, start);
   });
   impacts_.Commit(capture.time(), points, episodes_);
 }

@@ -19,6 +19,7 @@
 #include "contactlaws/contact_data.h"
 #include "memory/contact_memory.h"
 #include "contactlaws/contact_model.h"
+#include "mujoco/contact_stepper.h"
 #include "mujoco/hook_session.h"
 #include "mujoco/step_start.h"
 
@@ -37,8 +38,11 @@ class StepCommitter {
   // sets divergence() when the step diverged, and else commits capture (the
   // step's start, when held) into the memory. start: the velocities recorded
   // at this step's start and the one before.
+  // inner: the step's contacts integrated inside it, whose sub-samples are
+  // committed in its start's stead (contact_stepper.h); or none.
   void AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
-                 const StepCapture& capture, const StepStartVelocities& start);
+                 const StepCapture& capture, const StepStartVelocities& start,
+                 ContactStepper* inner = nullptr);
 
   // Forgets every episode, impact, the energy and any divergence.
   void Reset();
@@ -56,6 +60,15 @@ class StepCommitter {
   const std::optional<Divergence>& divergence() const { return divergence_; }
 
  private:
+  // Commits inner's sub-samples, each as a step's start: the first is the
+  // step's start (its separations read from start), the others close their
+  // episodes at the inner rates.
+  void CommitInner(mjData* d, ContactStepper* inner, const StepStartVelocities& start);
+  // -d' of the first state out of contact at pos, normal of pair: at the
+  // step's start velocities (start), or last_rate's opposite without them.
+  double SeparationSpeed(mjData* d, int pair, const double pos[3], const double normal[3],
+                         double last_rate, const StepStartVelocities& start) const;
+
   // Sets divergence_ when the step diverged.
   void CheckDivergence(const mjData* d, const StepCapture& capture,
                        const StepStartVelocities& start);
@@ -68,6 +81,7 @@ class StepCommitter {
   EpisodeLog episodes_;
   ImpactLog impacts_;
   DissipationLedger ledger_;
+  std::vector<int> inner_episode_;  // CommitInner: per inner point, its episode
 };
 
 // Appends each of points (evaluated on model's pairs) to d->contact, as

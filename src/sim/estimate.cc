@@ -174,12 +174,6 @@ double PairEffectiveMass(const ContactModel& cm, int pair_index) {
   return inverse_mass > 0 ? 1.0 / inverse_mass : kInfinity;
 }
 
-double ElasticContactDuration(const LawParams& law, double mass, double speed) {
-  if (std::isinf(mass)) return kInfinity;
-  if (Law(law.law).family == LawFamily::kLinear) return M_PI * std::sqrt(mass / law.linear_stiffness);
-  return HertzContactDuration(law.stiffness, law.exponent, mass, speed);
-}
-
 TagEstimate EstimateTag(const ContactData& contacts, int tag,
                         std::optional<double> impact_velocity) {
   TagEstimate shortest;

@@ -84,11 +84,6 @@ double SpeedAtTouch(double closing, double accel, double gap);
 // ContactEstimate::effective_mass.
 double PairEffectiveMass(const ContactModel& model, int pair);
 
-// The elastic contact duration of pair's law at impact speed v (m/s, > 0)
-// for effective mass m (kg), s: HertzContactDuration, or pi sqrt(m/k) for
-// Kelvin-Voigt. Infinite for an infinite mass.
-double ElasticContactDuration(const LawParams& law, double mass, double speed);
-
 // Estimates pair (ContactModel::pairs() index) at the data's current state
 // (call mj_forward first). impact_velocity, when given (m/s, > 0), replaces
 // the estimated closing speed.

@@ -65,6 +65,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
     settled_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
     Reset();
   }
+  contacts_->SetContactSteps(options.contact_steps);
 }
 
 Simulation::Simulation(UniqueModel model, std::string source, const SimulationOptions& options)

@@ -1,0 +1,362 @@
+// Copyright contactlaws authors.
+
+#include "mujoco/contact_stepper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mujoco/kinematics.h"
+#include "mujoco/vec3.h"
+
+namespace contactlaws::internal {
+namespace {
+
+// The narrowphase margin is this many times how far a pair can close within
+// the step at its start's speeds and gravity: what pushes it from elsewhere
+// during the step (another contact, an actuator) is not in them.
+constexpr double kReachFactor = 2.0;
+
+// A point's sub-step is at most this many lags of the dampers acting on it
+// (its own and its coupled neighbours', Gershgorin's bound on the largest
+// rate of A diag(c)): the auto timestep's rule 5 (docs/timestep.md).
+constexpr double kSubStepLags = 1.0;
+
+// A sub-step that meets a touch ends this fraction of it past the surface
+// (inside the contact: d = 0+); none is shorter than kShortestSubStep of the
+// sub-step (a touch that close is taken at the sub-step's end).
+constexpr double kPastTouch = 1e-6;
+constexpr double kShortestSubStep = 1e-3;
+// The inner integration ends within this fraction of the step.
+constexpr double kEndTolerance = 1e-9;
+
+// The time (s, in (0, limit]) at which a depth d <= 0 at rate r and
+// acceleration b reaches 0: the first root of d + r t + b t^2 / 2.
+double TimeToSurface(double d, double r, double b, double limit) {
+  const double discriminant = r * r - 2 * b * d;
+  if (b != 0 && discriminant >= 0) {
+    const double root = (-r + std::sqrt(discriminant)) / b;
+    const double other = (-r - std::sqrt(discriminant)) / b;
+    double first = limit;
+    for (const double x : {root, other}) {
+      if (x > 0) first = std::min(first, x);
+    }
+    return first;
+  }
+  return r > 0 ? std::min(limit, -d / r) : limit;
+}
+
+}  // namespace
+
+ContactStepper::ContactStepper(const ContactModel& model) : model_(model) {}
+
+double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) const {
+  const mjModel* m = model_.model();
+  mjtNum v[2][3];
+  double spin = 0;
+  for (int b = 0; b < 2; ++b) {
+    PointVelocity(model_, d, pair.body[b], d->geom_xpos + 3 * pair.geom[b], v[b]);
+    spin += mju_norm3(d->cvel + 6 * pair.body[b]) * m->geom_rbound[pair.geom[b]];
+  }
+  mjtNum relative[3];
+  vec3::Sub(relative, v[1], v[0]);
+  const double speed = mju_norm3(relative) + spin;
+  return kReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
+}
+
+void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {
+  const GeomPair& pair = model_.pairs()[p];
+  PointEvaluation& e = near_.emplace_back();
+  e.pair = p;
+  e.tag = pair.tag;
+  e.depth = -con.dist;
+  for (int b = 0; b < 2; ++b) {
+    mjtNum offset[3];
+    vec3::Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
+    vec3::RotateTransposed(e.local[b], offset, d->xmat + 9 * pair.body[b]);
+  }
+  mjtNum v0[3], v1[3], relative[3];
+  PointVelocity(model_, d, pair.body[0], con.pos, v0);
+  PointVelocity(model_, d, pair.body[1], con.pos, v1);
+  vec3::Sub(relative, v0, v1);
+  e.depth_rate = vec3::Dot(relative, con.frame);
+  vec3::Copy(e.pos, con.pos);
+  vec3::Copy(e.normal, con.frame);
+}
+
+int ContactStepper::FindPoint(int pair, const double pos[3]) const {
+  for (size_t i = 0; i < points_.size(); ++i) {
+    const PointEvaluation& e = points_[i];
+    if (e.pair == pair && e.pos[0] == pos[0] && e.pos[1] == pos[1] && e.pos[2] == pos[2]) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
+  const int nv = m->nv;
+  const int n = static_cast<int>(points_.size());
+  j_.assign(static_cast<size_t>(n) * nv, 0.0);
+  minv_jt_.resize(j_.size());
+  for (int i = 0; i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    // NormalJacobian gives (J1 - J0)^T n, the separation rate: d' is its opposite
+    double* row = j_.data() + static_cast<size_t>(i) * nv;
+    NormalJacobian(m, d, model_.pairs()[e.pair], e.pos, e.normal, row);
+    for (int k = 0; k < nv; ++k) row[k] = -row[k];
+  }
+  if (n > 0) mj_solveM(m, d, minv_jt_.data(), j_.data(), n);
+
+  // the free acceleration: every force of the step's start but the laws'
+  // normal ones (friction is in qfrc_passive already); the actuators' and
+  // MuJoCo's constraints' as the previous step left them
+  std::vector<double> force(nv);
+  mj_rne(m, d, 0, force.data());
+  for (int k = 0; k < nv; ++k) {
+    force[k] = d->qfrc_passive[k] + d->qfrc_applied[k] + d->qfrc_actuator[k] +
+               d->qfrc_constraint[k] - force[k];
+  }
+  for (int b = 1; b < m->nbody; ++b) {
+    const mjtNum* f = d->xfrc_applied + 6 * b;
+    if (f[0] || f[1] || f[2] || f[3] || f[4] || f[5]) {
+      mj_applyFT(m, d, f, f + 3, d->xipos + 3 * b, b, force.data());
+    }
+  }
+  a_free_.resize(nv);
+  mj_solveM(m, d, a_free_.data(), force.data(), 1);
+
+  a_.assign(static_cast<size_t>(n) * n, 0.0);
+  b_.assign(n, 0.0);
+  mass_.assign(n, std::numeric_limits<double>::infinity());
+  for (int i = 0; i < n; ++i) {
+    const double* ji = j_.data() + static_cast<size_t>(i) * nv;
+    for (int j = 0; j < n; ++j) {
+      a_[i * n + j] = mju_dot(ji, minv_jt_.data() + static_cast<size_t>(j) * nv, nv);
+    }
+    b_[i] = mju_dot(ji, a_free_.data(), nv);
+    if (a_[i * n + i] > 0) mass_[i] = 1.0 / a_[i * n + i];
+  }
+}
+
+int ContactStepper::SubSteps(double h) const {
+  if (options_.substeps > 0) return options_.substeps;
+  const int n = static_cast<int>(points_.size());
+  double step = h;
+  for (int i = 0; i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    const LawParams& law = model_.pairs()[e.pair].params;
+    // its coupling: the row of A against its own diagonal
+    double row = 0, damped = 0;
+    for (int j = 0; j < n; ++j) {
+      row += std::abs(a_[i * n + j]);
+      const PointEvaluation& f = points_[j];
+      if (f.depth > 0) {
+        const ContactState state{f.depth, f.depth_rate, f.impact_velocity, mass_[j]};
+        damped += std::abs(a_[i * n + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
+      }
+    }
+    if (!(row > 0)) continue;
+    // an impact's speed: its v0 once in contact, its rate and what b adds
+    // within the step before
+    const double speed = std::max({std::abs(e.depth_rate) + std::abs(b_[i]) * h,
+                                   e.depth > 0 ? e.impact_velocity : 0.0,
+                                   law.min_impact_velocity});
+    const double per_contact = Law(law.law).family == LawFamily::kLinear
+                                   ? options_.per_contact_linear
+                                   : options_.per_contact_hertz;
+    step = std::min(step, ElasticContactDuration(law, 1.0 / row, speed) / per_contact);
+    if (damped > 0) step = std::min(step, kSubStepLags / damped);
+  }
+  return static_cast<int>(std::min<double>(std::ceil(h / step), options_.max_substeps));
+}
+
+void ContactStepper::Integrate(const mjModel* m, mjData* d,
+                               const std::vector<PointEvaluation>& touching) {
+  active_ = false;
+  samples_used_ = 0;
+  substeps_ = 0;
+  points_ = touching;
+  points_.insert(points_.end(), near_.begin(), near_.end());
+  force_.assign(m->nv, 0.0);
+  if (points_.empty()) return;
+  active_ = true;
+  h_ = m->opt.timestep;
+  BuildContactSpace(m, d);
+  for (const PointEvaluation& e : points_) {
+    for (const int body : model_.pairs()[e.pair].body) {
+      const double turn = mju_norm3(d->cvel + 6 * body) * h_;
+      if (turn > worst_turn_) {
+        worst_turn_ = turn;
+        worst_turn_time_ = d->time;
+      }
+    }
+  }
+
+  const int n = static_cast<int>(points_.size());
+  const double delta = h_ / SubSteps(h_);
+  // each point's state: depth, rate; in contact; its episode's v0 (touch
+  // speed or the episode's) and the largest rate committed since
+  std::vector<double> depth(n), rate(n), force(n, 0.0), v0(n), committed(n);
+  std::vector<double> contact_v0(n);  // the law's v0 of this sub-step
+  std::vector<char> open(n);
+  for (int i = 0; i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    depth[i] = e.depth;
+    rate[i] = e.depth_rate;
+    open[i] = e.depth > 0;
+    v0[i] = e.impact_velocity;
+    contact_v0[i] = e.impact_velocity;
+    committed[i] = e.max_approach;
+  }
+  impulse_.assign(n, 0.0);
+  impulse_sum_.assign(n, 0.0);
+  rates_.clear();
+
+  double t = 0;  // since the step's start, s
+  for (int k = 0; t < h_ * (1 - kEndTolerance); ++k) {
+    if (samples_.size() <= static_cast<size_t>(k)) samples_.resize(k + 1);
+    InnerSample& sample = samples_[k];
+    sample.time = d->time + t;
+    sample.points.clear();
+    sample.ids.clear();
+    rates_.insert(rates_.end(), rate.begin(), rate.end());
+    samples_used_ = k + 1;
+    for (int i = 0; i < n; ++i) {
+      force[i] = 0;
+      const bool in_contact = depth[i] > 0;
+      if (k == 0) {
+        // the step's start: the evaluator's points as they are
+        if (in_contact) {
+          force[i] = points_[i].force;
+          sample.points.push_back(points_[i]);
+          sample.ids.push_back(i);
+        }
+        continue;
+      }
+      if (!in_contact) {
+        open[i] = false;
+        continue;
+      }
+      const LawParams& law = model_.pairs()[points_[i].pair].params;
+      PointEvaluation& e = sample.points.emplace_back(points_[i]);
+      sample.ids.push_back(i);
+      e.depth = depth[i];
+      e.depth_rate = rate[i];
+      e.at_start = false;
+      e.touch = !open[i];
+      if (e.touch) {
+        // v0: the rate at the sub-sample before the touch
+        e.episode = -1;
+        e.touch_velocity = rates_[static_cast<size_t>(k - 1) * n + i];
+        v0[i] = std::max(e.touch_velocity, law.min_impact_velocity);
+        committed[i] = e.touch_velocity;
+        const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity, v0[i],
+                                 mass_[i]};
+        e.touch_power = EvaluateLaw(law, touch).dissipated_power(e.touch_velocity);
+        open[i] = true;
+      }
+      e.impact_velocity = std::max({v0[i], committed[i], law.min_impact_velocity});
+      contact_v0[i] = e.impact_velocity;
+      e.max_approach = std::max(committed[i], rate[i]);
+      committed[i] = e.max_approach;
+      const ContactForce f =
+          EvaluateLaw(law, ContactState{depth[i], rate[i], e.impact_velocity, mass_[i]});
+      e.force = force[i] = f.total;
+      e.dissipated_power = f.dissipated_power(rate[i]);
+    }
+    // the sub-step, ended just past a touch within it (as the auto timestep
+    // does), so that a force that jumps at d = 0+ acts from the touch on
+    double step = std::min(delta, h_ - t);
+    for (int i = 0; i < n; ++i) {
+      if (depth[i] > 0 || depth[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
+      const double touch = TimeToSurface(depth[i], rate[i], b_[i], step);
+      step = std::min(step, std::max(touch * (1 + kPastTouch), kShortestSubStep * delta));
+    }
+    // classical RK4 on (d, d'), the points in contact at the sub-step's
+    // start the ones with a force (a touch ends a sub-step), each at its v0
+    // of the sample; exact in the free acceleration b
+    Rk4SubStep(step, force, contact_v0, &depth, &rate);
+    t += step;
+    ++substeps_;
+  }
+  // the step's mean normal force, -J^T P / h
+  for (int i = 0; i < n; ++i) {
+    mju_addToScl(force_.data(), j_.data() + static_cast<size_t>(i) * m->nv, -impulse_[i] / h_,
+                 m->nv);
+  }
+  ApplyForce(m, d);
+}
+
+void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_force,
+                                const std::vector<double>& v0, std::vector<double>* depth,
+                                std::vector<double>* rate) {
+  const int n = static_cast<int>(depth->size());
+  // stage s: depth, rate, force, and the acceleration b - A f
+  double* d[4];
+  double* r[4];
+  double* f[4];
+  double* acc[4];
+  stage_.resize(static_cast<size_t>(16) * n);
+  for (int s = 0; s < 4; ++s) {
+    d[s] = stage_.data() + (4 * s + 0) * n;
+    r[s] = stage_.data() + (4 * s + 1) * n;
+    f[s] = stage_.data() + (4 * s + 2) * n;
+    acc[s] = stage_.data() + (4 * s + 3) * n;
+  }
+  const double offsets[4] = {0, 0.5 * step, 0.5 * step, step};
+  for (int s = 0; s < 4; ++s) {
+    for (int i = 0; i < n; ++i) {
+      if (s == 0) {
+        d[0][i] = (*depth)[i];
+        r[0][i] = (*rate)[i];
+      } else {
+        d[s][i] = (*depth)[i] + offsets[s] * r[s - 1][i];
+        r[s][i] = (*rate)[i] + offsets[s] * acc[s - 1][i];
+      }
+      const bool acting = (*depth)[i] > 0;  // in contact at the sub-step's start
+      const LawParams& law = model_.pairs()[points_[i].pair].params;
+      f[s][i] = s == 0 ? start_force[i]
+                : acting && d[s][i] > 0
+                    ? EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total
+                    : 0.0;
+    }
+    for (int i = 0; i < n; ++i) {
+      double pushed = 0;  // (A f)_i
+      for (int j = 0; j < n; ++j) pushed += a_[i * n + j] * f[s][j];
+      acc[s][i] = b_[i] - pushed;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    // x'' = b - A f: the depth moves by step r + step^2 / 6 (a1 + a2 + a3),
+    // whose contact part is the position impulse added to impulse_sum_
+    impulse_sum_[i] += step * impulse_[i] + step * step / 6 * (f[0][i] + f[1][i] + f[2][i]);
+    impulse_[i] += step / 6 * (f[0][i] + 2 * f[1][i] + 2 * f[2][i] + f[3][i]);
+    (*depth)[i] += step * (*rate)[i] + step * step / 6 * (acc[0][i] + acc[1][i] + acc[2][i]);
+    (*rate)[i] += step / 6 * (acc[0][i] + 2 * acc[1][i] + 2 * acc[2][i] + acc[3][i]);
+  }
+}
+
+void ContactStepper::ApplyForce(const mjModel* m, mjData* d) const {
+  if (active_) mju_addTo(d->qfrc_passive, force_.data(), m->nv);
+}
+
+void ContactStepper::CorrectPositions(const mjModel* m, mjData* d) const {
+  if (!active_) return;
+  // the inner trajectory's displacement over the step:
+  //   h v_n + h^2/2 a_free - M^-1 J^T (delta sum_k P_k);
+  // the integrator's under the constant force -J^T P / h:
+  //   h v_n + c h^2 a_free - c h M^-1 J^T P, c = 1 (Euler, implicit: q + h v_{n+1}),
+  //   c = 1/2 (RK4, exact for a constant acceleration)
+  const double c = m->opt.integrator == mjINT_RK4 ? 0.5 : 1.0;
+  const int nv = m->nv;
+  std::vector<double> shift(nv);
+  for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k];
+  for (size_t i = 0; i < impulse_.size(); ++i) {
+    mju_addToScl(shift.data(), minv_jt_.data() + i * nv, -(impulse_sum_[i] - c * h_ * impulse_[i]),
+                 nv);
+  }
+  mj_integratePos(m, d->qpos, shift.data(), 1.0);
+}
+
+}  // namespace contactlaws::internal

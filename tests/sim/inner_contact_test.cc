@@ -1,0 +1,164 @@
+// Copyright contactlaws authors.
+//
+// Contacts integrated inside the step (ContactStepsOptions, docs/timestep.md
+// "Contact steps"): at MuJoCo's own 2 ms step under Euler, the laws keep
+// their rebound, their energy and their resting depth.
+
+#include <algorithm>
+#include <utility>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "contactlaws/contactlaws.h"
+#include "mujoco_test_util.h"
+#include "sim/drop_reference.h"
+
+namespace contactlaws {
+namespace {
+
+using testing::Drop;
+using testing::IntegrateDrop;
+
+// MuJoCo's default step, the one a MuJoCo user already runs at.
+constexpr double kMujocoStep = 2e-3;
+// The goal of issue 35: the first rebound within 0.5% of the drop's
+// independent integration.
+constexpr double kReboundTolerance = 5e-3;
+
+// The ledger's trapezoid of the sub-samples' dissipated power against the
+// RK4 sub-steps' own energy change: O(sub-step^2) of the dissipated energy.
+constexpr double kLedgerTolerance = 1e-3;
+
+SimulationOptions InnerSteps(int substeps = kContactStepsAuto) {
+  SimulationOptions options;
+  options.timestep = kMujocoStep;
+  options.integrator = mjINT_EULER;
+  options.contact_steps.substeps = substeps;
+  return options;
+}
+
+class InnerContactTest : public testing::MujocoTest {};
+
+TEST_F(InnerContactTest, ThePapersBallReboundsAsTheLawAtTwoMilliseconds) {
+  const Scene scene(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
+  const struct {
+    const char* law;
+    double e;
+  } cases[] = {{"flores", 0.9},
+               {"hunt-crossley", 0.5},
+               {"lankarani-nikravesh", 0.8},
+               {"kelvin-voigt", 0.3},
+               {"hertz", 1.0}};
+  for (const auto& c : cases) {
+    const LawId law = *ParseLawName(c.law);
+    SimulationOptions options = InnerSteps();
+    options.overrides.law = law;
+    options.overrides.restitution = c.e;
+    const Episode impact = testing::SweepFirstImpact(scene, options);
+    const double reference = IntegrateDrop(Drop{}, law, c.e).restitution_post;
+    EXPECT_NEAR(impact.restitution_post(), reference, kReboundTolerance * reference)
+        << c.law << " e = " << c.e;
+  }
+}
+
+TEST_F(InnerContactTest, WithoutTheInnerStepsTheSameBallGainsEnergy) {
+  // what the inner steps are for: the same 2 ms Euler step, the law at the
+  // step's states, throws the ball out far faster than it came
+  const Scene scene(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
+  SimulationOptions options = InnerSteps();
+  options.contact_steps.substeps = 0;
+  options.overrides.law = *ParseLawName("flores");
+  options.overrides.restitution = 0.9;
+  EXPECT_GT(testing::SweepFirstImpact(scene, options).restitution_post(), 2.0);
+}
+
+TEST_F(InnerContactTest, TheLedgerBooksWhatTheStepsWithContactsDissipate) {
+  // over the steps whose contacts were integrated inside them, the bodies'
+  // and springs' energy goes into the ledger's dissipated energy, whatever
+  // Euler's free flight does in the other steps
+  SimulationOptions options = InnerSteps();
+  options.overrides.law = *ParseLawName("hunt-crossley");
+  options.overrides.restitution = 0.5;
+  Simulation& sim =
+      MakeSceneSimulation("bouncing_ball.xml", options);
+  auto energies = [&] {
+    mj_forward(sim.model(), sim.data());
+    const EnergyLedger e = sim.Energy();
+    return std::pair(e.kinetic + e.potential + e.elastic, e.dissipated);
+  };
+  auto [mechanical, dissipated] = energies();
+  double imbalance = 0;
+  int inner_steps = 0;
+  for (int step = 0; step < 1000; ++step) {  // 2 s: three bounces
+    sim.Step();
+    const auto [next_mechanical, next_dissipated] = energies();
+    if (sim.contacts().last_substeps() > 0) {
+      ++inner_steps;
+      imbalance += (next_mechanical - mechanical) + (next_dissipated - dissipated);
+    }
+    mechanical = next_mechanical;
+    dissipated = next_dissipated;
+  }
+  ASSERT_GE(sim.contacts().impacts().size(), 3u);
+  ASSERT_GT(inner_steps, 0);
+  EXPECT_LT(std::abs(imbalance), kLedgerTolerance * dissipated);
+}
+
+// The issue's goals for a thrown die: at rest within 0.1 mm of its height,
+// its mechanical energy (kinetic, potential, the laws' springs) never rising
+// by more than 1e-5 J from one sample (here: step) to the next.
+constexpr double kRestingHeightTolerance = 1e-4;  // m
+constexpr double kEnergyRiseTolerance = 1e-5;     // J
+
+// A frictionless cube of half size half (m) and mass (kg) dropped tilted
+// from 5 cm above a floor plane, with its tag's law keys; 2 ms, Euler.
+std::string DieXml(double half, double mass, const std::string& law_keys) {
+  return fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="die" pos="0 0 {}" euler="7 4 0"><freejoint/>
+      <geom name="die" type="box" size="{} {} {}" mass="{}"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:die" data="geom1=die geom2=floor {} friction=none"/></custom>
+</mujoco>)",
+                     kMujocoStep, half + 0.05, half, half, half, mass, law_keys);
+}
+
+TEST_F(InnerContactTest, DiceComeToRestOnTheirFourCornersWithoutGainingEnergy) {
+  const struct {
+    double half, mass;
+    const char* keys;
+  } dice[] = {
+      {0.01, 0.008, "law=lankarani-nikravesh restitution=0.6 stiffness=2e8"},
+      {0.025, 0.1, "law=kelvin-voigt restitution=0.3 linear_stiffness=1e5"},
+      {0.05, 1.0, "law=hunt-crossley restitution=0.5 stiffness=1e7 min_impact_velocity=0.01"},
+  };
+  for (const auto& die : dice) {
+    SCOPED_TRACE(die.keys);
+    Simulation& sim = MakeSimulation(DieXml(die.half, die.mass, die.keys), InnerSteps());
+    double previous = 0, worst_rise = -1;
+    for (int step = 0; step < 1500; ++step) {  // 3 s
+      sim.Step();
+      ASSERT_FALSE(sim.contacts().divergence()) << "step " << step;
+      mj_forward(sim.model(), sim.data());
+      const EnergyLedger e = sim.Energy();
+      const double mechanical = e.kinetic + e.potential + e.elastic;
+      if (step > 0) worst_rise = std::max(worst_rise, mechanical - previous);
+      previous = mechanical;
+    }
+    EXPECT_LT(worst_rise, kEnergyRiseTolerance);
+    // at rest flat: each corner carries a quarter of the weight
+    const LawParams& law = sim.contact_model().pairs()[0].params;
+    const double depth = RestingDepth(law, die.mass * 9.81 / 4);
+    const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
+    EXPECT_NEAR(sim.data()->xpos[3 * body + 2], die.half - depth, kRestingHeightTolerance);
+    EXPECT_LT(std::abs(sim.data()->qvel[2]), 1e-3);
+  }
+}
+
+}  // namespace
+}  // namespace contactlaws
