@@ -72,10 +72,9 @@ int FitCommand(const FitArgs& args) {
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
   const uint64_t seed = ParseSeed(args.seed);
   std::vector<std::string> offset_lines;  // GEOM.offset=rest: the data's estimate
-  const std::vector<FitParameter> parameters = UnderOption("--params", [&] {
-    return ParseFitParameters(
-        WithRestOffsets(args.params, scene, train_data, seed, &offset_lines), scene.model());
-  });
+  const std::string params = WithRestOffsets(args.params, scene, train_data, seed, &offset_lines);
+  const std::vector<FitParameter> parameters =
+      UnderOption("--params", [&] { return ParseFitParameters(params, scene.model()); });
   const std::vector<std::optional<double>> initial =
       args.initial ? UnderOption("--initial",
                                  [&] {
