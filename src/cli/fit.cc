@@ -72,9 +72,10 @@ int FitCommand(const FitArgs& args) {
   const ReplayOptions base = ParseReplayOptions(args, scene, &metric);
   const uint64_t seed = ParseSeed(args.seed);
   std::vector<std::string> offset_lines;  // GEOM.offset=rest: the data's estimate
-  const std::string params = WithRestOffsets(args.params, scene, train_data, seed, &offset_lines);
-  const std::vector<FitParameter> parameters =
-      UnderOption("--params", [&] { return ParseFitParameters(params, scene.model()); });
+  const RestOffsets rest = WithRestOffsets(args.params, scene, train_data, seed, &offset_lines);
+  std::vector<FitParameter> parameters =
+      UnderOption("--params", [&] { return ParseFitParameters(rest.text, scene.model()); });
+  SetRestBounds(rest, &parameters);
   const std::vector<std::optional<double>> initial =
       args.initial ? UnderOption("--initial",
                                  [&] {

@@ -102,11 +102,11 @@ std::string OffsetText(const std::string& geom, const OffsetEstimate& e) {
       e.interval.lo * kMm, e.interval.hi * kMm, e.geom_z * kMm);
 }
 
-std::string WithRestOffsets(const std::string& params, const Scene& scene,
+RestOffsets WithRestOffsets(const std::string& params, const Scene& scene,
                             const MeasuredData& data, uint64_t seed,
                             std::vector<std::string>* lines) {
   constexpr std::string_view kSuffix = ".offset=rest";
-  std::string out;
+  RestOffsets out;
   size_t start = 0;
   while (start <= params.size()) {
     const size_t comma = params.find(',', start);
@@ -116,16 +116,29 @@ std::string WithRestOffsets(const std::string& params, const Scene& scene,
       const std::string geom = item.substr(0, item.size() - kSuffix.size());
       try {
         const OffsetEstimate e = EstimateOffset(scene, geom, data, seed);
+        if (!(e.interval.lo < e.interval.hi)) {
+          throw Error(fmt::format("the interval [{}, {}] m is empty: nothing to fit within",
+                                  e.interval.lo, e.interval.hi));
+        }
         lines->push_back(OffsetText(geom, e) + ": fitted within that interval");
-        item = fmt::format("{}.offset={}:{}", geom, Field(e.interval.lo), Field(e.interval.hi));
+        out.bounds.emplace_back(geom + ".offset", e.interval);
+        item = geom + ".offset=0:1";
       } catch (const Error& error) {
         throw Error(fmt::format("--params: {}: {}", item, error.what()));
       }
     }
-    out += (out.empty() ? "" : ",") + item;
+    out.text += (out.text.empty() ? "" : ",") + item;
     start = comma == std::string::npos ? params.size() + 1 : comma + 1;
   }
   return out;
+}
+
+void SetRestBounds(const RestOffsets& offsets, std::vector<FitParameter>* parameters) {
+  for (const auto& [key, interval] : offsets.bounds) {
+    for (FitParameter& p : *parameters) {
+      if (p.key == key) p.lo = interval.lo, p.hi = interval.hi;
+    }
+  }
 }
 
 }  // namespace contactlaws::cli

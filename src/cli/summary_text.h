@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contactlaws/contactlaws.h"
@@ -45,11 +46,20 @@ OffsetEstimate EstimateOffset(const Scene& scene, const std::string& geom,
                               const MeasuredData& data, uint64_t seed);
 std::string OffsetText(const std::string& geom, const OffsetEstimate& e);
 
-// --params with each GEOM.offset=rest given the bounds of its estimate's
-// interval (GEOM.offset=LO:HI); lines: what each says, to print.
-std::string WithRestOffsets(const std::string& params, const Scene& scene,
+// --params' GEOM.offset=rest items, bounded by their estimates: text is
+// --params with each of them as GEOM.offset=0:1, a placeholder range that
+// ParseFitParameters checks like any other (the key, the geom, a model
+// edit), and bounds the estimates' intervals by key, set on the parsed
+// parameters as numbers (SetRestBounds); lines: what each says, to print.
+struct RestOffsets {
+  std::string text;
+  std::vector<std::pair<std::string, Interval>> bounds;
+};
+RestOffsets WithRestOffsets(const std::string& params, const Scene& scene,
                             const MeasuredData& data, uint64_t seed,
                             std::vector<std::string>* lines);
+// parameters' ranges set to offsets' bounds (a key's interval, exactly).
+void SetRestBounds(const RestOffsets& offsets, std::vector<FitParameter>* parameters);
 
 }  // namespace contactlaws::cli
 

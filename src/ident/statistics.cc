@@ -113,7 +113,7 @@ PairedDifference ComparePaired(const std::vector<double>& a, const std::vector<d
 
 std::vector<int> AssignFolds(int count, int folds, uint64_t seed) {
   if (folds < 2 || folds > count) {
-    throw Error(fmt::format("--folds {}: must be in [2, {}] (the number of trajectories)", folds,
+    throw Error(fmt::format("folds {}: must be in [2, {}] (the number of trajectories)", folds,
                             count));
   }
   std::vector<int> order(count);

@@ -65,21 +65,9 @@ double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) co
 }
 
 void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {
-  const GeomPair& pair = model_.pairs()[p];
   PointEvaluation& e = near_.emplace_back();
-  e.pair = p;
-  e.tag = pair.tag;
-  e.depth = -con.dist;
-  for (int b = 0; b < 2; ++b) {
-    mjtNum offset[3];
-    vec3::Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
-    vec3::RotateTransposed(e.local[b], offset, d->xmat + 9 * pair.body[b]);
-  }
-  mjtNum v0[3], v1[3], relative[3];
-  PointVelocity(model_, d, pair.body[0], con.pos, v0);
-  PointVelocity(model_, d, pair.body[1], con.pos, v1);
-  vec3::Sub(relative, v0, v1);
-  e.depth_rate = vec3::Dot(relative, con.frame);
+  mjtNum v0[3], v1[3];
+  ReadContactPoint(model_, d, p, con, &e, v0, v1);
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, con.frame);
 }

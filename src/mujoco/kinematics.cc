@@ -59,6 +59,26 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
   for (int i = 0; i < 3; ++i) vel[i] = cvel[3 + i] + turn[i];
 }
 
+void ReadContactPoint(const ContactModel& model, const mjData* d, int p, const mjContact& con,
+                      PointEvaluation* e, mjtNum v0[3], mjtNum v1[3]) {
+  const GeomPair& pair = model.pairs()[p];
+  e->pair = p;
+  e->tag = pair.tag;
+  e->depth = -con.dist;
+  // which physical point: where it sits on the two bodies
+  for (int b = 0; b < 2; ++b) {
+    mjtNum offset[3];
+    Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
+    vec3::RotateTransposed(e->local[b], offset, d->xmat + 9 * pair.body[b]);
+  }
+  // depth rate: approach speed of geom[0] towards geom[1] along the normal
+  PointVelocity(model, d, pair.body[0], con.pos, v0);
+  PointVelocity(model, d, pair.body[1], con.pos, v1);
+  mjtNum relative[3];
+  Sub(relative, v0, v1);
+  e->depth_rate = Dot(relative, con.frame);
+}
+
 void NormalJacobian(const mjModel* m, const mjData* d, const GeomPair& pair, const mjtNum point[3],
                     const mjtNum normal[3], mjtNum* jn) {
   // (J1 - J0)^T n is the generalized force of a unit force n at point on

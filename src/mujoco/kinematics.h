@@ -11,6 +11,7 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contact_model.h"
+#include "contactlaws/point_evaluation.h"
 
 namespace contactlaws {
 
@@ -29,6 +30,13 @@ void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[
 // prescribed motion at d->time). Needs cvel.
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
                    mjtNum vel[3]);
+
+// A narrowphase contact of ContactModel pair p read into e: its pair, tag,
+// depth (-con.dist), place on each body (local) and depth rate along
+// con.frame; v0 and v1 get the two bodies' velocities at con.pos, for a
+// caller that also wants the slip. Needs cvel.
+void ReadContactPoint(const ContactModel& model, const mjData* d, int p, const mjContact& con,
+                      PointEvaluation* e, mjtNum v0[3], mjtNum v1[3]);
 
 // jn = (J1 - J0)^T n at point (nv entries): the normal relative velocity of
 // pair's bodies per dof (AddPointForce's map of a unit force).

@@ -71,24 +71,10 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
   PointEvaluation& e = *out;
-  e.pair = p;
-  e.tag = pair.tag;
-  e.depth = -con.dist;
-
-  // which physical point: where it sits on the two bodies
-  for (int b = 0; b < 2; ++b) {
-    mjtNum offset[3];
-    vec3::Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
-    vec3::RotateTransposed(e.local[b], offset, d->xmat + 9 * pair.body[b]);
-  }
+  mjtNum v0[3], v1[3];
+  ReadContactPoint(model_, d, p, con, &e, v0, v1);
   e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
 
-  // depth rate: approach speed of geom[0] towards geom[1] along the normal
-  mjtNum v0[3], v1[3], relative[3];
-  PointVelocity(model_, d, pair.body[0], con.pos, v0);
-  PointVelocity(model_, d, pair.body[1], con.pos, v1);
-  vec3::Sub(relative, v0, v1);
-  e.depth_rate = vec3::Dot(relative, normal);
   // the slip before its projection into the tangent plane (SlipAndSpin):
   // the same two velocities, computed once
   vec3::Sub(e.slip, v1, v0);
