@@ -188,6 +188,8 @@ py::tuple Fit(const std::string& scene, const py::dict& kwargs, const std::strin
   Take(kwargs, "frictions", &args.frictions);
   Take(kwargs, "validate", &args.validate);
   Take(kwargs, "budget", &args.budget);
+  Take(kwargs, "folds", &args.folds);
+  Take(kwargs, "trim", &args.trim);
   Take(kwargs, "seed", &args.seed);
   args.output = dir;
   return Call(&cli::FitCommand, std::move(args));

@@ -110,6 +110,10 @@ struct FitOptions {
   ReplayOptions replay;  // the law, friction, start rule, metric's weights, threads
   Metric metric = Metric::kEq;
   std::vector<FitParameter> parameters;
+  // The share of the trajectories, worst first, each evaluation's score
+  // leaves out: 0 minimises the mean, 0.2 the mean of the best 80%
+  // (TrimmedMean, statistics.h). In [0, 0.5).
+  double trim = 0;
   int budget = 200;    // evaluations, each a replay of every trajectory
   uint64_t seed = 1;
   // Where the search starts: empty, every parameter at its range's middle;
@@ -122,18 +126,23 @@ struct FitOptions {
 
 struct FitResult {
   std::vector<double> values;  // the best point, per parameter
-  double score = 0;            // its mean score over the trajectories
+  double score = 0;            // its (trimmed) mean score over the trajectories
   int evaluations = 0;
   bool interrupted = false;    // ReplayOptions::should_stop ended it
   double wall_seconds = 0;
 };
 
-// Minimises the mean score of replay's trajectories over the parameters,
-// from options.initial (refused as CheckInitial does).
+// Minimises the (trimmed) mean score of replay's trajectories over the
+// parameters, from options.initial (refused as CheckInitial does; a trim
+// outside [0, 0.5) too).
 FitResult Fit(const Replay& replay, const FitOptions& options);
 
 // The mean of metric over replayed trajectories (0 when empty), summed in order.
 double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
+
+// MeanScore at trim 0, else TrimmedMean (statistics.h) of metric.
+double TrimmedMeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric,
+                        double trim);
 
 }  // namespace contactlaws
 

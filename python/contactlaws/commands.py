@@ -177,7 +177,7 @@ class FitResult:
 
 
 def fit(scene, data, params, *, initial=None, laws=None, frictions=None, validate=None,
-        budget=200, seed=1, start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
+        budget=200, folds=None, trim=None, seed=1, start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
         weights=None, length=None, timestep=None, max_timestep=None, accuracy=None,
         integrator=None, law=None, restitution=None, dissipation=None, friction=None, mu=None,
         set=None, jobs=None):
@@ -188,6 +188,9 @@ def fit(scene, data, params, *, initial=None, laws=None, frictions=None, validat
     BODY.mass_scale, GEOM.offset m, mujoco.*). laws, frictions: the
     combinations to fit ("all", names, or lists). validate: trajectories not
     fitted on. budget: evaluations per combination; seed: the search's seed.
+    folds: K-fold cross-validation over the trajectories, the ranking by the
+    held-out score (ranking's cv_* columns). trim: in [0, 0.5), the share of
+    the worst trajectories each score leaves out (a trimmed mean).
     initial: where the search starts, {KEY: VALUE} (or "KEY=VALUE,...") of
     params' keys in their units, the others at their range's middle; every
     combination starts there, and its first evaluation is that point.
@@ -201,7 +204,7 @@ def fit(scene, data, params, *, initial=None, laws=None, frictions=None, validat
                    laws=_text_list(laws),
                    frictions=_text_list(frictions),
                    validate=None if validate is None else str(validate), budget=budget,
-                   seed=seed)
+                   folds=folds, trim=trim, seed=seed)
     with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
         _, report = _contactlaws._fit(str(scene), options, folder)
         with open(_os.path.join(folder, "best_tag.txt")) as tag:

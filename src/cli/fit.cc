@@ -95,6 +95,13 @@ int FitCommand(const FitArgs& args) {
     }
   }
 
+  double trim = 0;
+  if (args.trim) {
+    const std::optional<double> t = ParseNumber(*args.trim);
+    if (!t || !(*t >= 0 && *t < 0.5)) Refuse("--trim", *args.trim, "must be a number in [0, 0.5)");
+    trim = *t;
+  }
+
   // every combination, checked before any is fitted
   std::vector<std::optional<LawId>> laws = {std::nullopt};
   std::vector<std::optional<FrictionKind>> frictions = {std::nullopt};
@@ -175,6 +182,7 @@ int FitCommand(const FitArgs& args) {
     FitOptions options;
     options.replay = combos[c];
     options.metric = metric;
+    options.trim = trim;
     options.parameters = f.parameters;
     // the start of the parameters this combination fits
     for (size_t k = 0; k < f.place.size() && !initial.empty(); ++k) {
@@ -223,9 +231,9 @@ int FitCommand(const FitArgs& args) {
     fmt::print(stderr, "contactlaws: interrupted before a first evaluation: no file written\n");
     return kExitInterrupted;
   }
-  Rank(&fitted, metric, folds.has_value(), seed);
   const ScoredData scored{&train_data, validate_data ? &*validate_data : nullptr,
-                          folds.has_value()};
+                          folds.has_value(), trim};
+  Rank(&fitted, metric, scored, seed);
   WriteRanking(fitted, parameters, metric, scored, seed, &ranking, &errors);
   // the best combination's simulated trajectories, beside the data they score
   const Fitted& winner = fitted.front();

@@ -68,15 +68,17 @@ const std::vector<ReplayedTrajectory>& Ranked(const Fitted& f, bool folds) {
   return folds ? f.cv : f.train;
 }
 
-void Rank(std::vector<Fitted>* fitted, Metric metric, bool folds, uint64_t seed) {
+void Rank(std::vector<Fitted>* fitted, Metric metric, const ScoredData& data, uint64_t seed) {
   // ranked by the training (or cross-validated) mean: choosing by the
   // held-out --validate scores would fit the choice to them
-  auto key = [&](const Fitted& f) { return MeanScore(Ranked(f, folds), metric); };
+  const bool folds = data.folds;
+  auto key = [&](const Fitted& f) { return TrimmedMeanScore(Ranked(f, folds), metric, data.trim); };
   std::stable_sort(fitted->begin(), fitted->end(),
                    [&](const Fitted& a, const Fitted& b) { return key(a) < key(b); });
   const std::vector<double> winner = Values(Ranked(fitted->front(), folds), metric);
   for (Fitted& f : *fitted) {
-    f.versus_winner = ComparePaired(Values(Ranked(f, folds), metric), winner, seed);
+    f.versus_winner =
+        ComparePairedTrimmed(Values(Ranked(f, folds), metric), winner, data.trim, seed);
   }
 }
 
@@ -88,6 +90,11 @@ void WriteRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
   for (const Set& set : Sets(fitted.front(), data)) {
     for (const ScoreArray& a : ReadableScores(*data.train, {}, metric)) {
       for (std::string& c : Columns(set.name, a)) header.push_back(std::move(c));
+    }
+    if (data.trim > 0) {
+      for (const char* c : {"_trimmed_mean", "_trimmed_mean_lo", "_trimmed_mean_hi"}) {
+        header.push_back(set.name + std::string(c));
+      }
     }
   }
   for (const char* column : {"versus_winner", "versus_winner_lo", "versus_winner_hi",
@@ -110,6 +117,14 @@ void WriteRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
                    : ReadableScores(*data.train, {}, metric);
       for (const ScoreArray& a : arrays) {
         for (std::string& field : Fields(a, seed, set.scored->empty())) row.push_back(std::move(field));
+      }
+      if (data.trim > 0) {
+        if (set.scored->empty()) {
+          row.insert(row.end(), 3, "");
+        } else {
+          const Estimate e = SummarizeTrimmed(Values(*set.scored, metric), data.trim, seed);
+          for (double v : {e.value, e.interval.lo, e.interval.hi}) row.push_back(Field(v));
+        }
       }
     }
     const PairedDifference& d = f.versus_winner;
@@ -139,6 +154,7 @@ void PrintRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
   fmt::print(out, " {:>26} {:>10}", "train mean [95%]", "median");
   if (data.folds) fmt::print(out, " {:>26} {:>10}", "cv mean [95%]", "median");
   if (data.validate) fmt::print(out, " {:>10} {:>10} {:>10}", "valid. mean", "median", "p90");
+  if (data.trim > 0) fmt::print(out, " {:>26}", fmt::format("{} trimmed [95%]", ranked));
   fmt::print(out, " {:>28} {:>6} {:>8}\n", fmt::format("- winner's {} [95%]", ranked), "evals",
              "wall s");
   auto cell = [](const Summary& s) {
@@ -161,6 +177,11 @@ void PrintRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
       const Distribution v = Distribute(Values(f.validate, metric));
       fmt::print(out, " {:>10.4g} {:>10.4g} {:>10.4g}", v.mean, v.median, v.p90);
     }
+    if (data.trim > 0) {
+      const Estimate e = SummarizeTrimmed(Values(Ranked(f, data.folds), metric), data.trim, seed);
+      fmt::print(out, " {:>26}",
+                 fmt::format("{:.4g} [{:.4g}, {:.4g}]", e.value, e.interval.lo, e.interval.hi));
+    }
     const PairedDifference& d = f.versus_winner;
     const bool winner = &f == &fitted.front();
     if (!winner) (d.Distinguishable() ? apart : together).push_back(f.label);
@@ -175,11 +196,14 @@ void PrintRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
     for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
     return v.empty() ? std::string("none") : s;
   };
+  const std::string score =
+      data.trim > 0 ? fmt::format("{} mean of the best {:g}%", MetricName(metric), 100 * (1 - data.trim))
+                    : std::string(MetricName(metric));
   fmt::print(out,
              "the data ({} {}, paired 95% bootstrap over {} trajectories) tell {} apart from: "
              "{}; not from (=): {}\n",
-             ranked, MetricName(metric), Ranked(fitted.front(), data.folds).size(),
-             fitted.front().label, list(apart), list(together));
+             ranked, score, Ranked(fitted.front(), data.folds).size(), fitted.front().label,
+             list(apart), list(together));
 }
 
 }  // namespace contactlaws::cli

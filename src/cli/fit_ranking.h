@@ -43,16 +43,17 @@ std::optional<double> ValueOf(const Fitted& f, size_t i);
 // The trajectories the ranking reads: cv with folds, else train.
 const std::vector<ReplayedTrajectory>& Ranked(const Fitted& f, bool folds);
 
-// Sorts fitted by the mean of metric over Ranked (stable: ties keep the
-// command line's order) and compares each with the first.
-void Rank(std::vector<Fitted>* fitted, Metric metric, bool folds, uint64_t seed);
-
 // The data the scores of each set are of.
 struct ScoredData {
   const MeasuredData* train = nullptr;
   const MeasuredData* validate = nullptr;  // null without --validate
   bool folds = false;
+  double trim = 0;  // --trim: the ranking's and the comparison's trimmed mean
 };
+
+// Sorts fitted by the (trimmed) mean of metric over Ranked (stable: ties
+// keep the command line's order) and compares each with the first.
+void Rank(std::vector<Fitted>* fitted, Metric metric, const ScoredData& data, uint64_t seed);
 
 // ranking.csv and errors.csv of the ranked combinations.
 void WriteRanking(const std::vector<Fitted>& fitted, const std::vector<FitParameter>& parameters,

@@ -45,6 +45,7 @@ struct FitArgs : ReplayArgs {
   std::optional<std::string> validate;   // trajectories not fitted on
   std::string budget = "200";
   std::optional<std::string> folds;      // K: K-fold cross-validation over the trajectories
+  std::optional<std::string> trim;       // F: the share of worst trajectories a score leaves out
 };
 
 // --seed, or Refuse.

@@ -284,6 +284,9 @@ void AddFit(CLI::App* app, Commands* c) {
   c->fit_cmd->add_option("--folds", f.folds,
                          "K: K-fold cross-validation over the trajectories (seeded), ranked by "
                          "the held-out score");
+  c->fit_cmd->add_option("--trim", f.trim,
+                         "F in [0, 0.5): minimise and rank by the mean of the best (1 - F) share "
+                         "of the trajectories (a trimmed mean; default 0: the mean)");
   c->fit_cmd->add_option("--output", f.output,
                          "DIR (default fit): ranking.csv, errors.csv, best_trajectories.csv, "
                          "best_tag.txt");

@@ -10,6 +10,7 @@
 #include <nlopt.h>
 
 #include "contactlaws/error.h"
+#include "contactlaws/statistics.h"
 #include "scene/parsed_tags.h"
 #include "scene/tag_keys.h"
 
@@ -105,6 +106,15 @@ double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric)
   return sum / replayed.size();
 }
 
+double TrimmedMeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric,
+                        double trim) {
+  if (trim == 0) return MeanScore(replayed, metric);
+  std::vector<double> values;
+  values.reserve(replayed.size());
+  for (const ReplayedTrajectory& r : replayed) values.push_back(r.score.Of(metric));
+  return TrimmedMean(std::move(values), trim);
+}
+
 namespace {
 
 // What the NLopt objective sees.
@@ -143,7 +153,7 @@ double Evaluate(unsigned n, const double* u, double* /*gradient*/, void* data) {
       return std::numeric_limits<double>::infinity();
     }
   }
-  const double score = MeanScore(replayed, options.metric);
+  const double score = TrimmedMeanScore(replayed, options.metric, options.trim);
   FitResult& result = *o->result;
   ++result.evaluations;
   if (result.values.empty() || score < result.score) {
@@ -186,6 +196,9 @@ void Minimize(nlopt_algorithm algorithm, int budget, std::vector<double>* u, Obj
 FitResult Fit(const Replay& replay, const FitOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   CheckInitial(options.parameters, options.initial);
+  if (!(options.trim >= 0 && options.trim < 0.5)) {
+    throw Error(fmt::format("trim {}: must be in [0, 0.5)", options.trim));
+  }
   FitResult result;
   Objective objective{&replay, &options, nullptr, &result, {}, {}, {}};
   const size_t n = options.parameters.size();

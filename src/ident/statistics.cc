@@ -111,6 +111,60 @@ PairedDifference ComparePaired(const std::vector<double>& a, const std::vector<d
   return d;
 }
 
+double TrimmedMean(std::vector<double> values, double trim) {
+  if (!(trim >= 0 && trim < 0.5)) {
+    throw Error(fmt::format("trimmed mean: trim {}: must be in [0, 0.5)", trim));
+  }
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const size_t kept = values.size() - static_cast<size_t>(std::floor(trim * values.size()));
+  double sum = 0;
+  for (size_t i = 0; i < kept; ++i) sum += values[i];
+  return sum / kept;
+}
+
+Estimate SummarizeTrimmed(const std::vector<double>& values, double trim, uint64_t seed,
+                          int resamples) {
+  CheckResamples(resamples);
+  Estimate e;
+  e.value = TrimmedMean(values, trim);
+  if (values.empty()) return e;
+  Random random(seed);
+  std::vector<double> statistics(resamples), resample(values.size());
+  for (int r = 0; r < resamples; ++r) {
+    for (double& v : resample) v = values[random.Below(values.size())];
+    statistics[r] = TrimmedMean(resample, trim);
+  }
+  e.interval = Percentiles(std::move(statistics));
+  return e;
+}
+
+PairedDifference ComparePairedTrimmed(const std::vector<double>& a, const std::vector<double>& b,
+                                      double trim, uint64_t seed, int resamples) {
+  if (trim == 0) return ComparePaired(a, b, seed, resamples);
+  CheckResamples(resamples);
+  if (a.size() != b.size()) {
+    throw Error(fmt::format("paired comparison: {} values against {}: the pairs must be the "
+                            "same trajectories",
+                            a.size(), b.size()));
+  }
+  PairedDifference d;
+  d.mean = TrimmedMean(a, trim) - TrimmedMean(b, trim);
+  if (a.empty()) return d;
+  Random random(seed);
+  std::vector<double> differences(resamples), ra(a.size()), rb(b.size());
+  for (int r = 0; r < resamples; ++r) {
+    for (size_t i = 0; i < a.size(); ++i) {
+      const size_t k = random.Below(a.size());
+      ra[i] = a[k];
+      rb[i] = b[k];
+    }
+    differences[r] = TrimmedMean(ra, trim) - TrimmedMean(rb, trim);
+  }
+  d.interval = Percentiles(std::move(differences));
+  return d;
+}
+
 std::vector<int> AssignFolds(int count, int folds, uint64_t seed) {
   if (folds < 2 || folds > count) {
     throw Error(fmt::format("folds {}: must be in [2, {}] (the number of trajectories)", folds,

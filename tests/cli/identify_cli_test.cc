@@ -143,6 +143,10 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
       {fmt::format("fit {} --data {} --params mu=0.1:0.5 --folds 3 --output {}", scene, data, dir),
        fmt::format("contactlaws: --folds=3 must be a whole number in [2, 2] (the trajectories of "
                    "{})", data)},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --trim 0.5 --output {}", scene, data, dir),
+       "contactlaws: --trim=0.5 must be a number in [0, 0.5)"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --trim some --output {}", scene, data, dir),
+       "contactlaws: --trim=some must be a number in [0, 0.5)"},
       {fmt::format("replay {} --data {} --rest-plane board --output {}", scene, falling, dir),
        "contactlaws: " + never_rest},
       {fmt::format("fit {} --data {} --params mu=0.1:0.5,board.offset=rest --output {}", scene,

@@ -193,6 +193,41 @@ TEST(FitTest, RecoversKnownParametersFromNoisyTosses) {
   EXPECT_EQ(a.score, b.score);
 }
 
+// Ten tosses simulated with kTruth and two with a far bouncier tag (a
+// disturbed or mislabelled measurement): the mean's fit of restitution is
+// pulled towards the two; a fit that leaves the worst 20% out (2 of 12) is
+// not, and reports the trimmed mean as its score.
+TEST(FitTest, ATrimmedScoreIsNotPulledByOutliers) {
+  const MeasuredData starts = TossStarts(12, 7);
+  MeasuredData data = Simulated(CubeScene(kTruth), starts, TossOptions());
+  const MeasuredData bouncy = Simulated(
+      CubeScene("law=flores restitution=0.9 stiffness=3e5 friction=coulomb mu=0.35"), starts,
+      TossOptions());
+  data.trajectories[3] = bouncy.trajectories[3];
+  data.trajectories[8] = bouncy.trajectories[8];
+  const Scene scene = CubeScene(kTruth);
+  const Replay replay(scene, data);
+  FitOptions fit;
+  fit.replay = TossOptions();
+  fit.replay.jobs = 2;
+  fit.parameters = ParseFitParameters("restitution=0.05:0.95", scene.model());
+  fit.budget = 30;
+  fit.seed = 5;
+  const FitResult mean = Fit(replay, fit);
+  fit.trim = 0.2;
+  const FitResult trimmed = Fit(replay, fit);
+  // noise-free tosses: the ten determine e to well within 0.02 (a bounce's
+  // height goes with e^2); 30 evaluations of one parameter resolve 1e-3
+  EXPECT_NEAR(trimmed.values[0], 0.3, 0.02);
+  EXPECT_GT(std::abs(mean.values[0] - 0.3), 0.02) << "the two tosses did not pull the mean";
+  const std::vector<ReplayedTrajectory> at =
+      replay.Run(WithParameters(fit.replay, fit.parameters, trimmed.values));
+  EXPECT_EQ(trimmed.score, TrimmedMeanScore(at, Metric::kEq, 0.2));
+  EXPECT_LT(trimmed.score, MeanScore(at, Metric::kEq));
+  fit.trim = 0.5;
+  EXPECT_EQ(Refused([&] { Fit(replay, fit); }), "trim 0.5: must be in [0, 0.5)");
+}
+
 // A fit's evaluation sets its values on the tags as numbers and its edits on
 // a copy of the model: the tags' text is read once, when the scene is made.
 // Overwritten after that with words the parser refuses, it changes no

@@ -91,6 +91,31 @@ TEST(StatisticsTest, PairedDifferencesTellAShiftFromNoise) {
   EXPECT_THROW(ComparePaired(b, {1.0}, 1), Error);
 }
 
+TEST(StatisticsTest, ATrimmedMeanLeavesTheLargestOut) {
+  // floor(0.25 * 4) = 1 value left out: the largest, wherever it stands
+  EXPECT_EQ(TrimmedMean({100, 1, 3, 2}, 0.25), 2.0);
+  EXPECT_EQ(TrimmedMean({100, 1, 3, 2}, 0.2), 26.5);  // floor(0.8) = 0: the mean
+  EXPECT_EQ(TrimmedMean({}, 0.25), 0.0);
+  EXPECT_THROW(TrimmedMean({1, 2}, 0.5), Error);
+  EXPECT_THROW(TrimmedMean({1, 2}, -0.1), Error);
+  // one outlier in 200 moves the mean by 0.25 and the 10% trimmed mean by
+  // less than its own interval's half-width
+  std::vector<double> values = Normal(200, 3);
+  const double clean = TrimmedMean(values, 0.1);
+  values[17] = 50;
+  const Estimate e = SummarizeTrimmed(values, 0.1, 4);
+  EXPECT_TRUE(e.interval.Contains(e.value));
+  EXPECT_LT(std::abs(e.value - clean), 0.5 * (e.interval.hi - e.interval.lo));
+  EXPECT_GT(Distribute(values).mean - Distribute(Normal(200, 3)).mean, 0.2);
+  // trim 0: ComparePaired's numbers to the bit
+  const std::vector<double> b = Normal(200, 1);
+  const PairedDifference p = ComparePairedTrimmed(values, b, 0, 2);
+  const PairedDifference q = ComparePaired(values, b, 2);
+  EXPECT_EQ(p.mean, q.mean);
+  EXPECT_EQ(p.interval.lo, q.interval.lo);
+  EXPECT_EQ(p.interval.hi, q.interval.hi);
+}
+
 TEST(StatisticsTest, FoldsAreBalancedSeededAndRefusedOutOfRange) {
   const std::vector<int> f = AssignFolds(11, 3, 7);
   std::vector<int> size(3);
