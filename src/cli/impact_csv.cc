@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "cli/csv_file.h"
+
 namespace contactlaws::cli {
 
 const std::vector<Episode>& ImpactsOf(const ContactData& contacts, ImpactRows rows) {
@@ -28,7 +30,9 @@ std::vector<std::string> ImpactColumns() {
 std::string Field(double value) {
   // no -0, inf or nan in a CSV: -0 is 0, and what is not finite is not known
   if (!std::isfinite(value)) return "";
-  return fmt::format("{}", value == 0 ? 0.0 : value);
+  std::string field;
+  AppendShortest(&field, value == 0 ? 0.0 : value);
+  return field;
 }
 
 std::string Field(const std::optional<double>& value) { return value ? Field(*value) : ""; }
