@@ -45,6 +45,9 @@ struct FitArgs : ReplayArgs {
   std::optional<std::string> validate;   // trajectories not fitted on
   std::string budget = "200";
   std::optional<std::string> folds;      // K: K-fold cross-validation over the trajectories
+  std::optional<std::string> profile;    // all or KEY,...: the winner's profile along them
+  std::optional<std::string> profile_points;  // N per parameter
+  std::optional<std::string> profile_budget;  // the others re-fitted at each point
 };
 
 // --seed, or Refuse.
