@@ -3,6 +3,7 @@
 #include "cli/fit_profile.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -172,11 +173,14 @@ void PrintProfile(const Fitted& winner, const WinnerProfile& profile,
                  "{:.3g}){}\n",
                  p.key, winner.fit.values[pr.parameter], span, best, at_bound);
     } else {
+      // how wide: decades on a log scale, the share of the range on either
+      const std::string width =
+          p.log ? fmt::format("{:.1f} decades", std::log10(pr.span_hi() / pr.span_lo()))
+                : fmt::format("{:.0f}% of the range",
+                              100 * (pr.span_hi() - pr.span_lo()) / (p.hi - p.lo));
       fmt::print(out, "  {}: not determined by the data: any value in {} scores the same as the "
-                 "best ({:.3g}; {}){}\n",
-                 p.key, span, best,
-                 p.log ? "a decade or more, or half the range" : "half the range or more",
-                 at_bound);
+                 "best ({:.3g}): {}{}\n",
+                 p.key, span, best, width, at_bound);
     }
   }
   for (size_t place : profile.unread) {
