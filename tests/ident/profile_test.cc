@@ -206,6 +206,40 @@ TEST(ProfileTest, ReportsWhatTheDataDetermineAndWhatNot) {
   EXPECT_EQ(again[0].span_last, k.span_last);
 }
 
+// With a budget, the other parameters are re-fitted at each point from
+// their fitted values: the re-fit's first evaluation is the held point, so
+// every point scores no worse than held, and the profiled value stays put.
+TEST(ProfileTest, ABudgetRefitsTheOthersFromTheFittedValues) {
+  const MeasuredData noisy = NoisyDrops(3);
+  const Scene scene = BallScene(kTruth);
+  const Replay replay(scene, noisy);
+  FitOptions fit;
+  fit.replay = DropOptions();
+  fit.replay.jobs = 2;
+  fit.parameters =
+      ParseFitParameters("restitution=0.2:0.95,stiffness=1e4:1e8:log", scene.model());
+  // off the truth: a re-fit has somewhere to go
+  const std::vector<double> through = {0.5, 1e5};
+  ProfileOptions options;
+  options.points = 3;
+  options.seed = 5;
+  const ParameterProfile held = Profile(replay, fit, through, {0}, options).at(0);
+  options.budget = 4;
+  const ParameterProfile refitted = Profile(replay, fit, through, {0}, options).at(0);
+  ASSERT_EQ(held.points.size(), refitted.points.size());
+  bool moved = false;
+  for (size_t i = 0; i < held.points.size(); ++i) {
+    const ProfilePoint& h = held.points[i];
+    const ProfilePoint& r = refitted.points[i];
+    EXPECT_EQ(r.value, h.value);
+    EXPECT_EQ(r.values[0], h.value);
+    EXPECT_EQ(h.values[1], 1e5);
+    EXPECT_LE(r.score.value.mean, h.score.value.mean);
+    moved = moved || r.values[1] != 1e5;
+  }
+  EXPECT_TRUE(moved);  // the re-fit did move stiffness somewhere
+}
+
 // Bad calls refused naming what is wrong.
 TEST(ProfileTest, RefusesBadCalls) {
   const Scene scene = BallScene(kTruth);
