@@ -136,7 +136,6 @@ FitResult Fit(const Replay& replay, const FitOptions& options);
 // The mean of metric over replayed trajectories (0 when empty), summed in order.
 double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
 
-
 // Profile: what the data determine about each parameter of a fitted point.
 // Along one parameter, points across its range (evenly in u, so log-spaced
 // on a log parameter) and the fitted value itself, the other parameters at
@@ -163,11 +162,11 @@ struct ProfileOptions {
 };
 
 struct ProfilePoint {
-  double value = 0;          // of the profiled parameter
-  std::vector<double> values;  // every parameter's, re-fitted or held
-  Summary score;             // of the per-trajectory scores: mean with its interval
+  double value = 0;              // of the profiled parameter
+  std::vector<double> values;    // every parameter's, re-fitted or held
+  Summary score;                 // of the per-trajectory scores: mean with its interval
   PairedDifference versus_best;  // per-trajectory score less the best point's
-  bool fitted = false;       // the fitted value itself
+  bool fitted = false;           // the fitted value itself
   bool Indistinguishable() const { return !versus_best.Distinguishable(); }
 };
 
@@ -182,9 +181,10 @@ struct ParameterProfile {
   bool interrupted = false;  // ReplayOptions::should_stop ended it: points are partial
 };
 
-// The points of a profile of parameter p through fitted: ProfileOptions'
-// grid with fitted inserted where it falls (points + 1 values, or points
-// when fitted is on the grid), increasing.
+// The points of a profile of parameter p through fitted, increasing:
+// ProfileOptions' grid with fitted inserted where it falls (points + 1
+// values), or in place of the grid's point it is within rounding of
+// (points values). Throws Error for points < 3.
 std::vector<double> ProfileValues(const FitParameter& p, double fitted, int points);
 
 // Whether a span [lo, hi] of p leaves it not determined (see above).
@@ -193,8 +193,8 @@ bool SpanUndetermined(const FitParameter& p, double lo, double hi);
 // The profiles of fit's parameters `which` (indices in fit.parameters)
 // through fitted (one value per parameter), in which's order, with fit's
 // replay options and metric. Throws Error for points < 3, fitted of
-// another size than the parameters or outside their bounds, an index out of
-// range. A stop (ReplayOptions::should_stop) ends it: the profile being made
+// another size than the parameters or outside their bounds (by more than a
+// rounding: a value At(1) puts above hi is hi), an index out of range. A stop (ReplayOptions::should_stop) ends it: the profile being made
 // is marked interrupted and no other is begun.
 std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fit,
                                       const std::vector<double>& fitted,

@@ -52,8 +52,12 @@ std::optional<ProfileRequest> ParseProfile(const FitArgs& args,
                                            const std::vector<FitParameter>& parameters,
                                            uint64_t seed) {
   if (!args.profile) {
-    if (args.profile_points) Refuse("--profile-points", *args.profile_points, "goes with --profile");
-    if (args.profile_budget) Refuse("--profile-budget", *args.profile_budget, "goes with --profile");
+    if (args.profile_points) {
+      Refuse("--profile-points", *args.profile_points, "goes with --profile");
+    }
+    if (args.profile_budget) {
+      Refuse("--profile-budget", *args.profile_budget, "goes with --profile");
+    }
     return std::nullopt;
   }
   ProfileRequest request;
@@ -82,7 +86,8 @@ std::optional<ProfileRequest> ParseProfile(const FitArgs& args,
     }
   }
   if (args.profile_points) {
-    const std::optional<long> points = ParseWholeNumber(*args.profile_points, kMinPoints, kMaxPoints);
+    const std::optional<long> points =
+        ParseWholeNumber(*args.profile_points, kMinPoints, kMaxPoints);
     if (!points) {
       Refuse("--profile-points", *args.profile_points,
              fmt::format("must be a whole number in [{}, {}]", kMinPoints, kMaxPoints));

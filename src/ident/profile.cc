@@ -17,7 +17,7 @@ namespace {
 
 // exp(log)'s rounding, in u or in decades: a span this close to a decade or
 // to half the range reaches it; a grid point this close to the fitted value
-// is it.
+// is it; a fitted value this far outside a bound is at it.
 constexpr double kSpanRounding = 1e-9;
 
 // The scores of one point, or false when a stop interrupted its replay.
@@ -69,7 +69,15 @@ std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fi
     throw Error(fmt::format("a profile through {} values of {} parameters", fitted.size(),
                             parameters.size()));
   }
-  CheckInitial(parameters, std::vector<std::optional<double>>(fitted.begin(), fitted.end()));
+  // a fit's value at a bound is At(0) or At(1), which exp(log) may put a
+  // rounding outside it: taken as the bound
+  std::vector<double> through = fitted;
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    const double u = parameters[i].Unit(through[i]);
+    if (u < 0 && u > -kSpanRounding) through[i] = parameters[i].lo;
+    if (u > 1 && u < 1 + kSpanRounding) through[i] = parameters[i].hi;
+  }
+  CheckInitial(parameters, std::vector<std::optional<double>>(through.begin(), through.end()));
   for (size_t i : which) {
     if (i >= parameters.size()) {
       throw Error(fmt::format("a profile of parameter {}: there are {}", i, parameters.size()));
@@ -86,11 +94,11 @@ std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fi
     ParameterProfile profile;
     profile.parameter = i;
     point_scores.clear();
-    for (double value : ProfileValues(p, fitted[i], options.points)) {
+    for (double value : ProfileValues(p, through[i], options.points)) {
       ProfilePoint point;
       point.value = value;
-      point.fitted = value == fitted[i];
-      point.values = fitted;
+      point.fitted = value == through[i];
+      point.values = through;
       point.values[i] = value;
       if (options.budget > 0 && parameters.size() > 1) {
         // the others re-fitted from their fitted values, this one held at value
@@ -101,7 +109,7 @@ std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fi
         for (size_t k = 0; k < parameters.size(); ++k) {
           if (k == i) continue;
           refit.parameters.push_back(parameters[k]);
-          refit.initial.push_back(fitted[k]);
+          refit.initial.push_back(through[k]);
         }
         refit.budget = options.budget;
         refit.seed = options.seed;

@@ -243,7 +243,8 @@ TEST(ProfileTest, ABudgetRefitsTheOthersFromTheFittedValues) {
 // Bad calls refused naming what is wrong.
 TEST(ProfileTest, RefusesBadCalls) {
   const Scene scene = BallScene(kTruth);
-  const Replay replay(scene, NoisyDrops(1));
+  const MeasuredData drop = NoisyDrops(1);  // the replay reads it
+  const Replay replay(scene, drop);
   FitOptions fit;
   fit.replay = DropOptions();
   fit.parameters = ParseFitParameters("restitution=0.2:0.95", scene.model());
@@ -259,6 +260,10 @@ TEST(ProfileTest, RefusesBadCalls) {
   EXPECT_EQ(refusal({0.6, 1}, {0}), "a profile through 2 values of 1 parameters");
   EXPECT_EQ(refusal({0.1}, {0}), "restitution=0.1: outside its bounds [0.2, 0.95]");
   EXPECT_EQ(refusal({0.6}, {1}), "a profile of parameter 1: there are 1");
+  // a rounding outside a bound is the bound (a fit's At(1) may land there)
+  EXPECT_EQ(refusal({0.95 * (1 + 1e-15)}, {0}), "accepted");
+  EXPECT_EQ(refusal({0.96}, {0}),
+            "restitution=0.96: outside its bounds [0.2, 0.95]");
   options.points = 2;
   EXPECT_EQ(refusal({0.6}, {0}), "a profile of 2 points: needs 3 at least");
 }
