@@ -37,8 +37,7 @@ def panel(ax, key, rows):
     log = rows[0]["scale"] == "log"
     span = float(rows[0]["span_lo"]), float(rows[0]["span_hi"])
     determined = rows[0]["determined"] == "yes"
-    ax.axvspan(*span, color="tab:green" if determined else "tab:orange", alpha=0.15,
-               label="scores the same as the best")
+    ax.axvspan(*span, color="tab:gray", alpha=0.2, label="span: scores the same as the best")
     ax.fill_between(value, lo, hi, color="tab:blue", alpha=0.2, label="mean, 95% interval")
     ax.plot(value, mean, color="tab:blue", lw=1)
     for kind, style in (("no", dict(marker="o", mfc="white", mec="tab:blue", label="worse")),
