@@ -260,7 +260,8 @@ TEST(IdentifyCliTest, FoldsCrossValidateTheSameWhateverTheJobs) {
 }
 
 // --profile: the winner's profile written as numbers, a line per parameter
-// said, and the same file whatever the threads.
+// said, and the same file whatever the threads (the others re-fitted at
+// each point: each re-fit a seeded search too).
 TEST(IdentifyCliTest, AProfileIsTheSameWhateverTheJobs) {
   const std::string truth = CubeScene("fit_profile_truth", kTag);
   const std::string data = MeasuredFromRun(truth, "fit_profile_data");
@@ -270,10 +271,13 @@ TEST(IdentifyCliTest, AProfileIsTheSameWhateverTheJobs) {
     const Result r = RunCli(fmt::format("fit {} --data {} --timestep 5e-4 --params "
                                         "restitution=0.1:0.9,stiffness=1e4:1e7:log --budget 6 "
                                         "--laws flores,hertz --profile all --profile-points 4 "
+                                        "--profile-budget 2 "
                                         "--seed 4 --jobs {} --quiet --output {}",
                                         truth, data, jobs, dir));
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find("profile of flores/coulomb on " + data + " (4 points per parameter"),
+    EXPECT_NE(r.output.find("profile of flores/coulomb on " + data + " (4 points per parameter "
+                            "and the fitted value, the others re-fitted over 2 evaluations at "
+                            "each;"),
               std::string::npos)
         << r.output;
     // a verdict per parameter the winner reads, in its units
