@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "contactlaws/replay.h"
+#include "contactlaws/statistics.h"
 
 namespace contactlaws {
 
@@ -143,6 +144,71 @@ double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric)
 // MeanScore at trim 0, else TrimmedMean (statistics.h) of metric.
 double TrimmedMeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric,
                         double trim);
+// Profile: what the data determine about each parameter of a fitted point.
+// Along one parameter, points across its range (evenly in u, so log-spaced
+// on a log parameter) and the fitted value itself, the other parameters at
+// their fitted values (or, with a budget, re-fitted from them at each
+// point); each point replayed over every trajectory. The best point is the
+// profile's lowest mean (trimmed as fit.trim says); every point's
+// per-trajectory scores are compared with the best's, paired
+// (ComparePairedTrimmed at fit.trim): a point whose interval contains 0
+// is indistinguishable from the best. Pairing takes out what every point
+// shares (a trajectory that every value scores badly): an unpaired test (a
+// point's mean within the best point's interval) keeps it, and on noisy data
+// calls alike points that every trajectory tells apart.
+//
+// The span: the contiguous indistinguishable points around the best, its
+// ends at points (the true ends lie between them and the next points). A
+// parameter is not determined by the data when its span covers at least a
+// decade (a log parameter) or at least half its range (either scale).
+struct ProfileOptions {
+  int points = 9;  // across the range, ends included, >= 3
+  // > 0: the other parameters re-fitted at each point (Fit, this many
+  // evaluations, from the fitted values); 0: held at the fitted values
+  int budget = 0;
+  uint64_t seed = 1;  // the bootstrap's (and a re-fit's search)
+  int resamples = kBootstrapResamples;
+};
+
+struct ProfilePoint {
+  double value = 0;              // of the profiled parameter
+  std::vector<double> values;    // every parameter's, re-fitted or held
+  Summary score;                 // of the per-trajectory scores: mean with its interval
+  PairedDifference versus_best;  // per-trajectory score less the best point's
+  bool fitted = false;           // the fitted value itself
+  bool Indistinguishable() const { return !versus_best.Distinguishable(); }
+};
+
+struct ParameterProfile {
+  size_t parameter = 0;  // its index in FitOptions::parameters
+  std::vector<ProfilePoint> points;  // in increasing value
+  size_t best = 0;                   // the lowest mean (the first of equals)
+  size_t span_first = 0, span_last = 0;  // points of the span, inclusive
+  double span_lo() const { return points[span_first].value; }
+  double span_hi() const { return points[span_last].value; }
+  bool determined = true;
+  bool interrupted = false;  // ReplayOptions::should_stop ended it: points are partial
+};
+
+// The points of a profile of parameter p through fitted, increasing:
+// ProfileOptions' grid with fitted inserted where it falls (points + 1
+// values), or in place of the grid's point it is within rounding of
+// (points values). Throws Error for points < 3.
+std::vector<double> ProfileValues(const FitParameter& p, double fitted, int points);
+
+// Whether a span [lo, hi] of p leaves it not determined (see above).
+bool SpanUndetermined(const FitParameter& p, double lo, double hi);
+
+// The profiles of fit's parameters `which` (indices in fit.parameters)
+// through fitted (one value per parameter), in which's order, with fit's
+// replay options and metric. Throws Error for points < 3, fitted of
+// another size than the parameters or outside their bounds (by more than a
+// rounding: a value At(1) puts above hi is hi), an index out of range. A stop (ReplayOptions::should_stop) ends it: the profile being made
+// is marked interrupted and no other is begun.
+std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fit,
+                                      const std::vector<double>& fitted,
+                                      const std::vector<size_t>& which,
+                                      const ProfileOptions& options);
 
 }  // namespace contactlaws
 

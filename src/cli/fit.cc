@@ -9,6 +9,7 @@
 #include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
+#include "cli/fit_profile.h"
 #include "cli/fit_ranking.h"
 #include "cli/impact_csv.h"
 #include "cli/summary_text.h"
@@ -82,6 +83,7 @@ int FitCommand(const FitArgs& args) {
                                    return ParseFitInitial(*args.initial, parameters, scene.model());
                                  })
                    : std::vector<std::optional<double>>();
+  const std::optional<ProfileRequest> profile_request = ParseProfile(args, parameters, seed);
   const std::optional<long> budget = ParseWholeNumber(args.budget, 1, 1000000);
   if (!budget) Refuse("--budget", args.budget, "must be a whole number in [1, 1000000]");
   const int count = static_cast<int>(train_data.trajectories.size());
@@ -148,6 +150,8 @@ int FitCommand(const FitArgs& args) {
   const std::string dir = CreateDirectory(args.output.value_or("fit"));
   CsvFile ranking(dir + "/ranking.csv"), errors(dir + "/errors.csv");
   CsvFile best_trajectories(dir + "/best_trajectories.csv");
+  std::optional<CsvFile> profile_file;
+  if (profile_request) profile_file.emplace(dir + "/profile.csv");
   std::optional<CsvFile> fold_file;
   // with --folds: each fold's training part and held-out part, as data
   std::vector<int> fold_of;
@@ -246,16 +250,35 @@ int FitCommand(const FitArgs& args) {
     best.keep_trajectories = true;
     const Replay& scored = validate ? *validate : train;
     WriteSimulated(scored.data(), scored.Run(best), &best_trajectories);
-    if (!WritesOutputs()) return 0;  // rank 0 of the job writes and prints
-    std::FILE* file = std::fopen((dir + "/best_tag.txt").c_str(), "w");
-    if (!file) throw Error(fmt::format("{}/best_tag.txt: cannot write", dir));
-    std::fputs(tag.c_str(), file);
-    std::fclose(file);
   }
+  // the winner's profile on the training data, on every rank of a job (its
+  // replays are spread over them); none after a fit that was stopped
+  WinnerProfile profile;
+  if (profile_request && !interrupted) {
+    FitOptions options;
+    options.replay = base;
+    if (winner.law) options.replay.simulation.overrides.law = winner.law;
+    if (winner.friction) options.replay.simulation.overrides.friction = winner.friction;
+    options.replay.should_stop = [] { return stop_signal.load(); };
+    options.metric = metric;
+    options.parameters = winner.parameters;
+    options.seed = seed;
+    profile = ProfileWinner(winner, train, options, *profile_request,
+                            args.quiet || !WritesOutputs());
+    interrupted = profile.interrupted;
+    if (!interrupted) WriteProfile(winner, profile, &*profile_file);
+  }
+  if (!WritesOutputs()) return 0;  // rank 0 of the job writes and prints
+  std::FILE* file = std::fopen((dir + "/best_tag.txt").c_str(), "w");
+  if (!file) throw Error(fmt::format("{}/best_tag.txt: cannot write", dir));
+  std::fputs(tag.c_str(), file);
+  std::fclose(file);
   ranking.Commit();
   errors.Commit();
   best_trajectories.Commit();
   if (fold_file) fold_file->Commit();
+  const bool profiled = profile_request && !interrupted;
+  if (profiled) profile_file->Commit();
   PrintRanking(fitted, parameters, metric, scored, seed, args.report);
   fmt::print(args.report, "best ({}):\n{}", winner.label, tag);
   // the winner read in units, and where its bodies rest against the data
@@ -267,8 +290,12 @@ int FitCommand(const FitArgs& args) {
     PrintReadable(args.report, "  ", *validate_data, winner.validate, metric, seed);
     PrintRestingGaps(args.report, "  ", *validate_data, winner.validate, seed);
   }
+  if (profiled) {
+    PrintProfile(winner, profile, parameters, *profile_request, train_data, args.report);
+  }
   fmt::print(args.report, "wrote {0}/ranking.csv, {0}/errors.csv, {0}/best_trajectories.csv, "
-             "{0}/best_tag.txt{1}\n", dir, fold_file ? fmt::format(", {}/folds.csv", dir) : "");
+             "{0}/best_tag.txt{1}{2}\n", dir, fold_file ? fmt::format(", {}/folds.csv", dir) : "",
+             profiled ? fmt::format(", {}/profile.csv", dir) : "");
   if (interrupted) {
     fmt::print(stderr, "contactlaws: interrupted: the best result so far is written\n");
     return kExitInterrupted;

@@ -46,6 +46,9 @@ struct FitArgs : ReplayArgs {
   std::string budget = "200";
   std::optional<std::string> folds;      // K: K-fold cross-validation over the trajectories
   std::optional<std::string> trim;       // F: the share of worst trajectories a score leaves out
+  std::optional<std::string> profile;    // all or KEY,...: the winner's profile along them
+  std::optional<std::string> profile_points;  // N per parameter
+  std::optional<std::string> profile_budget;  // the others re-fitted at each point
 };
 
 // --seed, or Refuse.

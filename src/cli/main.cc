@@ -287,6 +287,16 @@ void AddFit(CLI::App* app, Commands* c) {
   c->fit_cmd->add_option("--trim", f.trim,
                          "F in [0, 0.5): minimise and rank by the mean of the best (1 - F) share "
                          "of the trajectories (a trimmed mean; default 0: the mean)");
+  c->fit_cmd->add_option("--profile", f.profile,
+                         "all or KEY,...: the winner's score along each of these keys of --params "
+                         "across its range, the others at their fitted values: profile.csv, and "
+                         "whether the data determine each");
+  c->fit_cmd->add_option("--profile-points", f.profile_points,
+                         "N: points per parameter of --profile, 3 to 200 (default 9), and the "
+                         "fitted value");
+  c->fit_cmd->add_option("--profile-budget", f.profile_budget,
+                         "N: with --profile, the other parameters re-fitted at each point over N "
+                         "evaluations (default: held at their fitted values)");
   c->fit_cmd->add_option("--output", f.output,
                          "DIR (default fit): ranking.csv, errors.csv, best_trajectories.csv, "
                          "best_tag.txt");

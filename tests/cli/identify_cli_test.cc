@@ -147,6 +147,23 @@ TEST(IdentifyCliTest, BadInputIsRefusedInOneLineAndNothingIsWritten) {
        "contactlaws: --trim=0.5 must be a number in [0, 0.5)"},
       {fmt::format("fit {} --data {} --params mu=0.1:0.5 --trim some --output {}", scene, data, dir),
        "contactlaws: --trim=some must be a number in [0, 0.5)"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --profile mu,restitution --output {}",
+                   scene, data, dir),
+       "contactlaws: --profile=mu,restitution has 'restitution', which is not a key of --params "
+       "(mu) nor all"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --profile mu,mu --output {}", scene, data,
+                   dir),
+       "contactlaws: --profile=mu,mu names mu twice"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --profile all --profile-points 2 "
+                   "--output {}",
+                   scene, data, dir),
+       "contactlaws: --profile-points=2 must be a whole number in [3, 200]"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --profile-points 5 --output {}", scene,
+                   data, dir),
+       "contactlaws: --profile-points=5 goes with --profile"},
+      {fmt::format("fit {} --data {} --params mu=0.1:0.5 --profile-budget 5 --output {}", scene,
+                   data, dir),
+       "contactlaws: --profile-budget=5 goes with --profile"},
       {fmt::format("replay {} --data {} --rest-plane board --output {}", scene, falling, dir),
        "contactlaws: " + never_rest},
       {fmt::format("fit {} --data {} --params mu=0.1:0.5,board.offset=rest --output {}", scene,
@@ -244,6 +261,67 @@ TEST(IdentifyCliTest, FoldsCrossValidateTheSameWhateverTheJobs) {
   // the training and the held-out score of every trajectory, per combination
   EXPECT_EQ(Lines(files[0][2]).size(), 1u + 2 * (2 + 2));
   EXPECT_NE(files[0][2].find("flores,coulomb,cv,a,"), std::string::npos);
+}
+
+// --profile: the winner's profile written as numbers, a line per parameter
+// said, and the same file whatever the threads (the others re-fitted at
+// each point: each re-fit a seeded search too).
+TEST(IdentifyCliTest, AProfileIsTheSameWhateverTheJobs) {
+  const std::string truth = CubeScene("fit_profile_truth", kTag);
+  const std::string data = MeasuredFromRun(truth, "fit_profile_data");
+  std::string files[2];
+  for (int jobs : {1, 2}) {
+    const std::string dir = fmt::format("{}/fit_profile_out{}", ::testing::TempDir(), jobs);
+    const Result r = RunCli(fmt::format("fit {} --data {} --timestep 5e-4 --params "
+                                        "restitution=0.1:0.9,stiffness=1e4:1e7:log --budget 6 "
+                                        "--laws flores,hertz --profile all --profile-points 4 "
+                                        "--profile-budget 2 "
+                                        "--seed 4 --jobs {} --quiet --output {}",
+                                        truth, data, jobs, dir));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("profile of flores/coulomb on " + data + " (4 points per parameter "
+                            "and the fitted value, the others re-fitted over 2 evaluations at "
+                            "each;"),
+              std::string::npos)
+        << r.output;
+    // a verdict per parameter the winner reads, in its units
+    for (const char* key : {"\n  restitution: ", "\n  stiffness: "}) {
+      const size_t at = r.output.find(key);
+      ASSERT_NE(at, std::string::npos) << r.output;
+      const std::string line = r.output.substr(at + 1, r.output.find('\n', at + 1) - at - 1);
+      EXPECT_TRUE(line.find(": determined: ") != std::string::npos ||
+                  line.find(": not determined by the data: any value in [") != std::string::npos)
+          << line;
+      if (std::string(key).find("stiffness") != std::string::npos) {
+        EXPECT_NE(line.find("] N/m^n"), std::string::npos) << line;
+      }
+    }
+    EXPECT_NE(r.output.find(dir + "/profile.csv"), std::string::npos) << r.output;
+    files[jobs - 1] = ReadFile(dir + "/profile.csv");
+  }
+  EXPECT_EQ(files[0], files[1]);
+  const std::vector<std::string> rows = Lines(files[0]);
+  ASSERT_GE(rows.size(), 1u + 2 * 4u);
+  EXPECT_LE(rows.size(), 1u + 2 * 5u);  // 4 points and the fitted value, per parameter
+  EXPECT_EQ(rows[0], "key,scale,value,fitted,mean,mean_lo,mean_hi,versus_best,versus_best_lo,"
+                     "versus_best_hi,indistinguishable,span_lo,span_hi,determined");
+  int best = 0, fitted = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> f = Split(rows[i], ',');
+    ASSERT_EQ(f.size(), 14u) << rows[i];
+    EXPECT_TRUE(f[0] == "restitution" || f[0] == "stiffness") << rows[i];
+    EXPECT_EQ(f[1], f[0] == "stiffness" ? "log" : "linear");
+    best += f[10] == "best";
+    fitted += f[3] == "yes";
+    // the best point: its own difference 0, inside its span
+    if (f[10] == "best") {
+      EXPECT_EQ(f[7], "0") << rows[i];
+      EXPECT_LE(std::stod(f[11]), std::stod(f[2])) << rows[i];
+      EXPECT_GE(std::stod(f[12]), std::stod(f[2])) << rows[i];
+    }
+  }
+  EXPECT_EQ(best, 2);
+  EXPECT_EQ(fitted, 2);
 }
 
 // With a budget of one, every combination's one evaluation is the start:

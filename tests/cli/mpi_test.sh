@@ -77,9 +77,9 @@ grep -v "^contactlaws: timing: " "$tmp/two_np3.err" &&
 # the trajectories of the first evaluation handed out by their durations,
 # of every later one by the last one's seconds (five tosses on 3 ranks: with
 # costs as their samples, 109 108 101 104 99, longest first puts 0 | 1,4 |
-# 2,3 against k mod 3's 0,3 | 1,4 | 2)
+# 2,3 against k mod 3's 0,3 | 1,4 | 2); and the winner's profile
 fit=(fit "$scene" --data "$tmp/five.csv" --start refit --timestep 6.756756756756757e-4
-     --params restitution=0.3:0.9 --budget 4 --quiet)
+     --params restitution=0.3:0.9 --budget 4 --profile all --profile-points 3 --quiet)
 "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit1" > /dev/null
 # ranking.csv but its wall_seconds column, a time that differs run to run
 without_wall() {
@@ -89,7 +89,9 @@ without_wall() {
 without_wall "$tmp/fit1/ranking.csv" > "$tmp/ranking1.csv"
 for np in 2 3; do
   mpi "$np" "$cli" "${fit[@]}" --jobs 1 --output "$tmp/fit_np$np" > /dev/null
-  for f in errors.csv best_trajectories.csv best_tag.txt; do same "$tmp/fit1/$f" "$tmp/fit_np$np/$f"; done
+  for f in errors.csv best_trajectories.csv best_tag.txt profile.csv; do
+    same "$tmp/fit1/$f" "$tmp/fit_np$np/$f"
+  done
   without_wall "$tmp/fit_np$np/ranking.csv" > "$tmp/ranking_np$np.csv"
   same "$tmp/ranking1.csv" "$tmp/ranking_np$np.csv"
 done
