@@ -171,27 +171,24 @@ int ContactStepper::SubSteps(double h) const {
   // each friction point's tangential spring and damper (TangentialDynamics)
   // in contact at the step's start
   std::vector<TangentialSpringDamper> tangential(n);
-  std::vector<double> stick_damping(n, 0.0);  // c_t, N s/m
   for (int j = 0; j < n; ++j) {
     const PointEvaluation& f = points_[j];
     if (tangent_row_[j] < 0 || !(f.depth > 0)) continue;
     const GeomPair& pair = model_.pairs()[f.pair];
     const double k = f.friction_state.stiffness;
     const ContactState state{f.depth, f.depth_rate, f.impact_velocity, 0.0};
-    stick_damping[j] = ReadsTangentialSpring(pair.friction.kind)
-                           ? TangentialDamping(pair.friction, pair.params, state, k,
-                                               pair.friction_mass)
-                           : 0.0;
-    tangential[j] =
-        TangentialDynamics(pair.friction, k, stick_damping[j], pair.friction_mass, f.force);
+    const double c = ReadsTangentialSpring(pair.friction.kind)
+                         ? TangentialDamping(pair.friction, pair.params, state, k,
+                                             pair.friction_mass)
+                         : 0.0;
+    tangential[j] = TangentialDynamics(pair.friction, k, c, pair.friction_mass, f.force);
   }
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
     const GeomPair& pair = model_.pairs()[e.pair];
     const LawParams& law = pair.params;
-    // a tangential row: its coupling to the other tangential rows, its
-    // spring's period (twice TangentialDuration, as a contact's duration) and
-    // its dampers' lag
+    // a tangential row: its coupling to the other tangential rows (its
+    // mass: 1 / the row sum of |A|), its spring's period and its dampers' lag
     for (int r = tangent_row_[i]; r >= 0 && r < tangent_row_[i] + 2 && e.depth > 0; ++r) {
       double row = 0, damped = 0;
       for (int j = 0; j < n; ++j) {
@@ -201,9 +198,14 @@ int ContactStepper::SubSteps(double h) const {
         }
       }
       if (!(row > 0)) continue;
-      const double duration = TangentialDuration(pair.friction, e.friction_state.stiffness,
-                                                 stick_damping[i], 1.0 / row, e.force);
-      step = std::min(step, 2 * duration / options_.per_contact_hertz);
+      // the spring's undamped half period pi / omega, as TangentialDuration
+      // takes it without its damper: the damper is the lag's bound, and on
+      // the row's small Gershgorin mass an overdamped rate would only
+      // repeat it
+      const double omega2 = tangential[i].stiffness * row;
+      if (omega2 > 0) {
+        step = std::min(step, 2 * M_PI / std::sqrt(omega2) / options_.per_contact_hertz);
+      }
       if (damped > 0) step = std::min(step, kSubStepLags / damped);
     }
     // its coupling: the row of A against its own diagonal
