@@ -30,6 +30,12 @@ constexpr double kShortestSubStep = 1e-3;
 // The inner integration ends within this fraction of the step.
 constexpr double kEndTolerance = 1e-9;
 
+// Friction models whose stick spring is integrated by backward Euler inside
+// the sub-steps (ImplicitFriction): the capped springs of coulomb and
+// stribeck. LuGre's bristles and the regularized curve are taken by RK4 in
+// sub-steps that resolve them.
+bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
+
 // An orthonormal tangent pair (t1, t2) of the unit normal n.
 void TangentBasis(const double n[3], double t[6]) {
   // the world axis least along n, crossed with it
@@ -189,7 +195,9 @@ int ContactStepper::SubSteps(double h) const {
     const LawParams& law = pair.params;
     // a tangential row: its coupling to the other tangential rows (its
     // mass: 1 / the row sum of |A|), its spring's period and its dampers' lag
-    for (int r = tangent_row_[i]; r >= 0 && r < tangent_row_[i] + 2 && e.depth > 0; ++r) {
+    const bool explicit_friction = !Implicit(pair.friction.kind);
+    for (int r = tangent_row_[i];
+         explicit_friction && r >= 0 && r < tangent_row_[i] + 2 && e.depth > 0; ++r) {
       double row = 0, damped = 0;
       for (int j = 0; j < n; ++j) {
         for (int c = tangent_row_[j]; c >= 0 && c < tangent_row_[j] + 2; ++c) {
@@ -417,7 +425,10 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // classical RK4 on (x, x'), the points in contact at the sub-step's
     // start the ones with a force (a touch ends a sub-step), each at its v0
     // of the sample; exact in the free acceleration b
+    std::vector<char> acting(n);
+    for (int i = 0; i < n; ++i) acting[i] = x[i] > 0;
     Rk4SubStep(step, force, contact_v0, &x, &rate);
+    ImplicitFriction(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
   }
@@ -431,7 +442,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
 
 FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const double* x,
                                         const double* rate, double slip[3],
-                                        double* stiffness) const {
+                                        double* stiffness, double* damping) const {
   const GeomPair& pair = model_.pairs()[points_[i].pair];
   const FrictionParams& params = pair.friction;
   const int r = tangent_row_[i];
@@ -459,7 +470,90 @@ FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const doubl
     in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
   }
   *stiffness = in.stiffness;
+  if (damping) *damping = in.damping + params.viscous;
   return EvaluateFriction(params, in);
+}
+
+void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acting,
+                                      const std::vector<double>& start_force,
+                                      const std::vector<double>& v0, std::vector<double>* x,
+                                      std::vector<double>* rate) {
+  const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
+  // the tangential rows of the stick springs acting in the sub-step: the
+  // force g at RK4's end state, and its change delta over the held f0
+  std::vector<int>& held = implicit_rows_;
+  std::vector<int> stick;          // rows solved for
+  std::vector<double> gain;        // per stick row: k step^2 + c step
+  held.clear();
+  delta_.assign(rows, 0.0);
+  for (int i = 0; i < n; ++i) {
+    const int r = tangent_row_[i];
+    if (r < 0 || !acting[i]) continue;
+    const GeomPair& pair = model_.pairs()[points_[i].pair];
+    if (!Implicit(pair.friction.kind)) continue;
+    if (!((*x)[i] > 0)) {
+      // out of contact at the sub-step's end: no force there
+      for (int j = 0; j < 2; ++j) {
+        held.push_back(r + j);
+        delta_[r + j] = -start_force[r + j];
+      }
+      continue;
+    }
+    const double fn =
+        EvaluateLaw(pair.params, ContactState{(*x)[i], (*rate)[i], v0[i], mass_[i]}).total;
+    double slip[3], k = 0, c = 0;
+    const FrictionOutput out = Friction(i, fn, v0[i], x->data(), rate->data(), slip, &k, &c);
+    for (int j = 0; j < 2; ++j) {
+      const double g = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
+      held.push_back(r + j);
+      delta_[r + j] = g - start_force[r + j];
+      if (!out.sliding && k * step * step + c * step > 0) {
+        stick.push_back(r + j);
+        gain.push_back(k * step * step + c * step);
+      }
+    }
+  }
+  if (held.empty()) return;
+  // backward Euler on the stick rows: f = g - K A delta (x and x' at the
+  // sub-step's end moved by -step^2 A delta and -step A delta), solved as
+  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system;
+  // a sliding row keeps its force at the cap (delta_L from g)
+  const int m = static_cast<int>(stick.size());
+  if (m > 0) {
+    std::vector<char> solved(rows, 0);
+    for (const int r : stick) solved[r] = 1;
+    system_.assign(static_cast<size_t>(m) * m, 0.0);
+    std::vector<double> rhs(m), f(m);
+    for (int a = 0; a < m; ++a) {
+      const int r = stick[a];
+      const double* row = a_.data() + static_cast<size_t>(r) * rows;
+      for (int b = 0; b < m; ++b) system_[a * m + b] = row[stick[b]];
+      system_[a * m + a] += 1 / gain[a];
+      const double g = start_force[r] + delta_[r];
+      rhs[a] = g / gain[a];
+      for (int b = 0; b < m; ++b) rhs[a] += row[stick[b]] * start_force[stick[b]];
+      for (const int l : held) {
+        if (!solved[l]) rhs[a] -= row[l] * delta_[l];
+      }
+    }
+    if (mju_cholFactor(system_.data(), m, 0) == m) {
+      mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
+      for (int a = 0; a < m; ++a) delta_[stick[a]] = f[a] - start_force[stick[a]];
+    }
+  }
+  // the change of force over the whole sub-step, on every row
+  for (int r = 0; r < rows; ++r) {
+    const double* row = a_.data() + static_cast<size_t>(r) * rows;
+    double pushed = 0;
+    for (const int l : held) pushed += row[l] * delta_[l];
+    (*rate)[r] -= step * pushed;
+    (*x)[r] -= step * step * pushed;
+  }
+  for (const int l : held) {
+    impulse_sum_[l] += step * step * delta_[l];
+    impulse_[l] += step * delta_[l];
+  }
 }
 
 void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_force,
@@ -500,6 +594,12 @@ void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_fo
       // memory
       const int t = tangent_row_[i];
       if (t < 0) continue;
+      if (Implicit(model_.pairs()[points_[i].pair].friction.kind)) {
+        // held over the sub-step; ImplicitFriction corrects it at its end
+        f[s][t] = start_force[t];
+        f[s][t + 1] = start_force[t + 1];
+        continue;
+      }
       double slip[3], stiffness;
       const FrictionOutput out = Friction(i, f[s][i], v0[i], d[s], r[s], slip, &stiffness);
       for (int j = 0; j < 2; ++j) {
