@@ -16,6 +16,7 @@
 
 #include "contactlaws/contactlaws.h"
 #include "mujoco_test_util.h"
+#include "sim/friction_scenes.h"
 
 namespace contactlaws {
 namespace {
@@ -165,6 +166,56 @@ TEST_F(InnerFrictionTest, ADieWithFrictionComesToRestWithoutGainingEnergy) {
   const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
   EXPECT_NEAR(sim.data()->xpos[3 * body + 2], 0.01 - depth, kRestingHeightTolerance);
   EXPECT_LT(mju_norm(sim.data()->qvel, 6), 1e-3);
+}
+
+// The closed forms of friction_test.cc's soft scenes (K = 1e6), there at
+// 1e-4 s and RK4, here at 2 ms and Euler with contact steps, with their
+// tolerances (friction_scenes.h).
+TEST_F(InnerFrictionTest, TheFrictionScenesKeepTheirClosedFormsAtTwoMilliseconds) {
+  for (const char* model : {"coulomb", "lugre"}) {
+    SCOPED_TRACE(model);
+    Simulation& sim = MakeSimulation(
+        testing::FrictionScene(false, 0, kGravity, "1 0 0 0 0 0",
+                               fmt::format("friction={} mu=0.4", model)),
+        InnerSteps());
+    mj_forward(sim.model(), sim.data());
+    const double start = sim.Energy().total();
+    testing::RunUntil(sim, 0.5);
+    testing::ExpectKineticStop(sim, 0.4, 1.0, start, model);
+  }
+  // gross sliding in an oblique impact: the impulse law
+  constexpr double kObliqueMu = 0.2;
+  Simulation& sim = MakeSimulation(testing::ObliqueImpact(2, kObliqueMu), InnerSteps());
+  while (sim.contacts().impacts().empty() || sim.contacts().impacts()[0].open) sim.Step();
+  testing::ExpectImpulseLaw(sim, sim.contacts().impacts()[0], kObliqueMu, 2, "oblique");
+}
+
+TEST_F(InnerFrictionTest, ABallSlidesThenRollsAtFiveSeventhsAtTwoMilliseconds) {
+  // the tangential rows turn the ball: its slip closes at mu g (1 + m r^2 /
+  // I) and it rolls on at 5/7 v0, the lever r = R less half the depth
+  constexpr double kBallMu = 0.3;
+  constexpr double kV0 = 2.0;
+  Simulation& sim = MakeSimulation(
+      testing::FrictionScene(true, 0, kGravity, fmt::format("{} 0 0 0 0 0", kV0),
+                             fmt::format("mu={}", kBallMu)),
+      InnerSteps());
+  const double r = testing::Lever(kGravity);
+  const double inertia = 0.4 * testing::kRadius * testing::kRadius;
+  const double t_roll = kV0 / (kBallMu * kGravity * (1 + r * r / inertia));
+  testing::RunUntil(sim, 0.95 * t_roll);
+  EXPECT_GT(testing::Vx(sim) - testing::Wy(sim) * r, 0.01) << "still sliding before t_roll";
+  testing::RunUntil(sim, 1.05 * t_roll + 0.05);
+  // friction_test's tolerance (the stick spring's stretch when it
+  // catches), and the step's own error: the stick anchors are the material
+  // points of a step's start, and the ball's one rises off the floor as it
+  // rolls by theta = w h, falling behind the contact by r theta^3 / 6 a
+  // step, which the spring takes as a slip of v^3 h^2 / (6 r^2): 1.9e-4 m/s
+  // at 1.43 m/s and 2 ms (measured: v - w r = -1.89e-4 m/s, steady)
+  constexpr double kRollingTolerance = 1e-4;  // m/s
+  const double rolling = kV0 * r / (r + inertia / r);
+  const double anchor_slip = std::pow(rolling, 3) * kMujocoStep * kMujocoStep / (6 * r * r);
+  EXPECT_NEAR(testing::Vx(sim), rolling, kRollingTolerance);
+  EXPECT_NEAR(testing::Wy(sim) * r, rolling, kRollingTolerance + anchor_slip);
 }
 
 }  // namespace
