@@ -483,10 +483,12 @@ void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acti
   // the tangential rows of the stick springs acting in the sub-step: the
   // force g at RK4's end state, and its change delta over the held f0
   std::vector<int>& held = implicit_rows_;
-  std::vector<int> stick;          // rows solved for
+  std::vector<int> stick;          // rows solved for, a point's two together
   std::vector<double> gain;        // per stick row: k step^2 + c step
+  std::vector<double> cap;         // per stick row: its point's cap, N
   held.clear();
   delta_.assign(rows, 0.0);
+  g_.assign(rows, 0.0);
   for (int i = 0; i < n; ++i) {
     const int r = tangent_row_[i];
     if (r < 0 || !acting[i]) continue;
@@ -507,10 +509,13 @@ void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acti
     for (int j = 0; j < 2; ++j) {
       const double g = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       held.push_back(r + j);
-      delta_[r + j] = g - start_force[r + j];
+      delta_[r + j] = g_[r + j] = g - start_force[r + j];
       if (!out.sliding && k * step * step + c * step > 0) {
         stick.push_back(r + j);
         gain.push_back(k * step * step + c * step);
+        const FrictionParams& f = pair.friction;
+        cap.push_back(std::max(fn, 0.0) * (memory_[i].sliding ? SlidingMu(f, mju_norm3(slip))
+                                                              : f.mu_static));
       }
     }
   }
@@ -518,10 +523,13 @@ void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acti
   // backward Euler on the stick rows: f = g - K A delta (x and x' at the
   // sub-step's end moved by -step^2 A delta and -step A delta), solved as
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system;
-  // a sliding row keeps its force at the cap (delta_L from g)
-  const int m = static_cast<int>(stick.size());
-  if (m > 0) {
-    std::vector<char> solved(rows, 0);
+  // a sliding row keeps its force at the cap (delta_L from g). A point whose
+  // solved force exceeds its cap slides at the cap, and the others are
+  // solved again (once).
+  std::vector<char> solved(rows, 0);
+  for (int pass = 0; pass < 2 && !stick.empty(); ++pass) {
+    const int m = static_cast<int>(stick.size());
+    std::fill(solved.begin(), solved.end(), 0);
     for (const int r : stick) solved[r] = 1;
     system_.assign(static_cast<size_t>(m) * m, 0.0);
     std::vector<double> rhs(m), f(m);
@@ -530,17 +538,31 @@ void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acti
       const double* row = a_.data() + static_cast<size_t>(r) * rows;
       for (int b = 0; b < m; ++b) system_[a * m + b] = row[stick[b]];
       system_[a * m + a] += 1 / gain[a];
-      const double g = start_force[r] + delta_[r];
-      rhs[a] = g / gain[a];
+      rhs[a] = (start_force[r] + g_[r]) / gain[a];
       for (int b = 0; b < m; ++b) rhs[a] += row[stick[b]] * start_force[stick[b]];
       for (const int l : held) {
         if (!solved[l]) rhs[a] -= row[l] * delta_[l];
       }
     }
-    if (mju_cholFactor(system_.data(), m, 0) == m) {
-      mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
-      for (int a = 0; a < m; ++a) delta_[stick[a]] = f[a] - start_force[stick[a]];
+    if (mju_cholFactor(system_.data(), m, 0) != m) break;
+    mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
+    std::vector<int> still;
+    std::vector<double> still_gain, still_cap;
+    for (int a = 0; a < m; a += 2) {
+      const double size = std::hypot(f[a], f[a + 1]);
+      const double scale = size > cap[a] ? cap[a] / size : 1.0;
+      for (int j = 0; j < 2; ++j) delta_[stick[a + j]] = scale * f[a + j] - start_force[stick[a + j]];
+      if (scale < 1) continue;
+      for (int j = 0; j < 2; ++j) {
+        still.push_back(stick[a + j]);
+        still_gain.push_back(gain[a + j]);
+        still_cap.push_back(cap[a + j]);
+      }
     }
+    if (still.size() == stick.size()) break;
+    stick.swap(still);
+    gain.swap(still_gain);
+    cap.swap(still_cap);
   }
   // the change of force over the whole sub-step, on every row
   for (int r = 0; r < rows; ++r) {

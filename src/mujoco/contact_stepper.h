@@ -157,6 +157,7 @@ class ContactStepper {
   std::vector<double> stage_;      // Rk4SubStep's stages
   std::vector<int> implicit_rows_; // ImplicitFriction's rows
   std::vector<double> delta_;      // ImplicitFriction's change of force, per row
+  std::vector<double> g_;          // ImplicitFriction's explicit change, g - f0
   std::vector<double> system_;     // ImplicitFriction's matrix
   std::vector<InnerSample> samples_;
   int samples_used_ = 0;
