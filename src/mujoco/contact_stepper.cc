@@ -31,10 +31,19 @@ constexpr double kShortestSubStep = 1e-3;
 constexpr double kEndTolerance = 1e-9;
 
 // Friction models whose stick spring is integrated by backward Euler inside
-// the sub-steps (ImplicitFriction): the capped springs of coulomb and
+// the sub-steps (ImplicitRows): the capped springs of coulomb and
 // stribeck. LuGre's bristles and the regularized curve are taken by RK4 in
 // sub-steps that resolve them.
 bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
+
+// A point in contact at the step's start rests when the amplitude of its
+// vibration about its equilibrium, sqrt((d' / w)^2 + (d'' / w^2)^2) at its
+// own rate w = sqrt(dF/dd A_ii), is below this fraction of its depth: its
+// normal force is then taken by backward Euler with the stick springs
+// (ImplicitRows), and sets no sub-step. That vibration holds less than 1e-4
+// of the contact's elastic energy at rest; backward Euler damps it
+// (unbooked). At an impact's peak (d' = 0 too) the amplitude is the depth.
+constexpr double kRestingFraction = 1e-2;
 
 // An orthonormal tangent pair (t1, t2) of the unit normal n.
 void TangentBasis(const double n[3], double t[6]) {
@@ -216,12 +225,14 @@ int ContactStepper::SubSteps(double h) const {
       }
       if (damped > 0) step = std::min(step, kSubStepLags / damped);
     }
-    // its coupling: the row of A against its own diagonal
+    // its coupling: the row of A against its own diagonal (a resting
+    // point's force is implicit: neither its spring nor its damper bounds)
+    if (resting_[i]) continue;
     double row = 0, damped = 0;
     for (int j = 0; j < n; ++j) {
       row += std::abs(a_[i * rows + j]);
       const PointEvaluation& f = points_[j];
-      if (f.depth > 0) {
+      if (f.depth > 0 && !resting_[j]) {
         const ContactState state{f.depth, f.depth_rate, f.impact_velocity, mass_[j]};
         damped +=
             std::abs(a_[i * rows + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
@@ -279,6 +290,29 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     }
   }
   BuildContactSpace(m, d);
+  // the points at rest: vibrating about their equilibrium by less than
+  // kRestingFraction of their depth
+  resting_.assign(n, 0);
+  for (int i = 0; options_.substeps <= 0 && i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    if (!(e.depth > 0) || e.touch || e.friction_state.sliding) continue;
+    double acc = b_[i];
+    for (int j = 0; j < n; ++j) {
+      if (points_[j].depth > 0) acc -= a_[static_cast<size_t>(i) * rows_ + j] * points_[j].force;
+    }
+    for (int j = 0; j < n; ++j) {
+      const int r = tangent_row_[j];
+      for (int c = 0; r >= 0 && points_[j].depth > 0 && c < 2; ++c) {
+        acc += a_[static_cast<size_t>(i) * rows_ + r + c] *
+               vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
+      }
+    }
+    const LawParams& law = model_.pairs()[e.pair].params;
+    const double w2 = NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
+    if (!(w2 > 0)) continue;
+    const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
+    resting_[i] = amplitude < kRestingFraction * e.depth;
+  }
   for (const PointEvaluation& e : points_) {
     for (const int body : model_.pairs()[e.pair].body) {
       const double turn = mju_norm3(d->cvel + 6 * body) * h_;
@@ -427,8 +461,10 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // of the sample; exact in the free acceleration b
     std::vector<char> acting(n);
     for (int i = 0; i < n; ++i) acting[i] = x[i] > 0;
+    x_start_ = x;
+    rate_start_ = rate;
     Rk4SubStep(step, force, contact_v0, &x, &rate);
-    ImplicitFriction(step, acting, force, contact_v0, &x, &rate);
+    ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
   }
@@ -474,72 +510,104 @@ FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const doubl
   return EvaluateFriction(params, in);
 }
 
-void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acting,
-                                      const std::vector<double>& start_force,
-                                      const std::vector<double>& v0, std::vector<double>* x,
-                                      std::vector<double>* rate) {
+void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
+                                  const std::vector<double>& start_force,
+                                  const std::vector<double>& v0, std::vector<double>* x,
+                                  std::vector<double>* rate) {
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
-  // the tangential rows of the stick springs acting in the sub-step: the
-  // force g at RK4's end state, and its change delta over the held f0
+  // the rows held over the sub-step: a resting point's normal row and a
+  // stick spring's two tangential ones; the force g at RK4's end state (a
+  // resting point's: linear from the sub-step's start), and its change delta
+  // over the held f0
   std::vector<int>& held = implicit_rows_;
-  std::vector<int> stick;          // rows solved for, a point's two together
-  std::vector<double> gain;        // per stick row: k step^2 + c step
-  std::vector<double> cap;         // per stick row: its point's cap, N
+  std::vector<int> solve;          // rows solved for: a group's rows together
+  std::vector<double> gain;        // per solved row: k step^2 + c step
+  std::vector<double> cap;         // per solved row: its group's cap (N; < 0: normal)
   held.clear();
   delta_.assign(rows, 0.0);
   g_.assign(rows, 0.0);
+  auto hold = [&](int r, double g, double k, double c, double group_cap) {
+    held.push_back(r);
+    delta_[r] = g_[r] = g - start_force[r];
+    if (k * step * step + c * step > 0) {
+      solve.push_back(r);
+      gain.push_back(k * step * step + c * step);
+      cap.push_back(group_cap);
+    }
+  };
   for (int i = 0; i < n; ++i) {
-    const int r = tangent_row_[i];
-    if (r < 0 || !acting[i]) continue;
+    if (!acting[i]) continue;
     const GeomPair& pair = model_.pairs()[points_[i].pair];
-    if (!Implicit(pair.friction.kind)) continue;
-    if (!((*x)[i] > 0)) {
-      // out of contact at the sub-step's end: no force there
+    const int r = tangent_row_[i];
+    const bool stick = r >= 0 && Implicit(pair.friction.kind);
+    if (!resting_[i] && !stick) continue;
+    if (resting_[i]) {
+      // linearly implicit about the sub-step's start, where the point is in
+      // contact (the law at RK4's end state, with the forces held over a
+      // long sub-step, may be out of it): f = f0 + k dx + c dx', the law's
+      // spring and damper there, and the friction's likewise
+      const double x0 = x_start_[i];
+      const ContactState start{x0, rate_start_[i], v0[i], mass_[i]};
+      const double k = NormalStiffness(pair.params, x0);
+      const double c = DampingCoefficient(pair.params, start);
+      const double gn =
+          start_force[i] + k * ((*x)[i] - x0) + c * ((*rate)[i] - rate_start_[i]);
+      hold(i, gn, k, c, -1);
+      if (!stick) continue;
+      const FrictionParams& f = pair.friction;
+      const double kt = TangentialStiffness(f, pair.params, x0);
+      const double ct =
+          TangentialDamping(f, pair.params, start, kt, pair.friction_mass) + f.viscous;
+      const double speed = std::hypot((*rate)[r], (*rate)[r + 1]);
+      const double limit =
+          std::max(gn, 0.0) * (memory_[i].sliding ? SlidingMu(f, speed) : f.mu_static);
       for (int j = 0; j < 2; ++j) {
-        held.push_back(r + j);
-        delta_[r + j] = -start_force[r + j];
+        const int t = r + j;
+        hold(t, start_force[t] + kt * ((*x)[t] - x_start_[t]) + ct * ((*rate)[t] - rate_start_[t]),
+             kt, ct, limit);
       }
       continue;
     }
-    const double fn =
-        EvaluateLaw(pair.params, ContactState{(*x)[i], (*rate)[i], v0[i], mass_[i]}).total;
+    if (!((*x)[i] > 0)) {
+      // out of contact at the sub-step's end: no force there
+      for (int j = 0; j < 2; ++j) hold(r + j, 0.0, 0.0, 0.0, 0);
+      continue;
+    }
+    const ContactState state{(*x)[i], (*rate)[i], v0[i], mass_[i]};
+    const double fn = EvaluateLaw(pair.params, state).total;
     double slip[3], k = 0, c = 0;
     const FrictionOutput out = Friction(i, fn, v0[i], x->data(), rate->data(), slip, &k, &c);
+    const FrictionParams& f = pair.friction;
+    const double limit =
+        std::max(fn, 0.0) * (memory_[i].sliding ? SlidingMu(f, mju_norm3(slip)) : f.mu_static);
+    // a sliding point keeps its force at the cap (g)
+    const bool linear = !out.sliding;
     for (int j = 0; j < 2; ++j) {
       const double g = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
-      held.push_back(r + j);
-      delta_[r + j] = g_[r + j] = g - start_force[r + j];
-      if (!out.sliding && k * step * step + c * step > 0) {
-        stick.push_back(r + j);
-        gain.push_back(k * step * step + c * step);
-        const FrictionParams& f = pair.friction;
-        cap.push_back(std::max(fn, 0.0) * (memory_[i].sliding ? SlidingMu(f, mju_norm3(slip))
-                                                              : f.mu_static));
-      }
+      hold(r + j, g, linear ? k : 0.0, linear ? c : 0.0, limit);
     }
   }
   if (held.empty()) return;
-  // backward Euler on the stick rows: f = g - K A delta (x and x' at the
+  // backward Euler on the solved rows: f = g - K A delta (x and x' at the
   // sub-step's end moved by -step^2 A delta and -step A delta), solved as
-  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system;
-  // a sliding row keeps its force at the cap (delta_L from g). A point whose
-  // solved force exceeds its cap slides at the cap, and the others are
-  // solved again (once).
+  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
+  // A normal force below 0 is put at 0, a friction force beyond its cap at
+  // the cap, and the others are solved again (once).
   std::vector<char> solved(rows, 0);
-  for (int pass = 0; pass < 2 && !stick.empty(); ++pass) {
-    const int m = static_cast<int>(stick.size());
+  for (int pass = 0; pass < 2 && !solve.empty(); ++pass) {
+    const int m = static_cast<int>(solve.size());
     std::fill(solved.begin(), solved.end(), 0);
-    for (const int r : stick) solved[r] = 1;
+    for (const int r : solve) solved[r] = 1;
     system_.assign(static_cast<size_t>(m) * m, 0.0);
     std::vector<double> rhs(m), f(m);
     for (int a = 0; a < m; ++a) {
-      const int r = stick[a];
+      const int r = solve[a];
       const double* row = a_.data() + static_cast<size_t>(r) * rows;
-      for (int b = 0; b < m; ++b) system_[a * m + b] = row[stick[b]];
+      for (int b = 0; b < m; ++b) system_[a * m + b] = row[solve[b]];
       system_[a * m + a] += 1 / gain[a];
       rhs[a] = (start_force[r] + g_[r]) / gain[a];
-      for (int b = 0; b < m; ++b) rhs[a] += row[stick[b]] * start_force[stick[b]];
+      for (int b = 0; b < m; ++b) rhs[a] += row[solve[b]] * start_force[solve[b]];
       for (const int l : held) {
         if (!solved[l]) rhs[a] -= row[l] * delta_[l];
       }
@@ -548,19 +616,26 @@ void ContactStepper::ImplicitFriction(double step, const std::vector<char>& acti
     mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
     std::vector<int> still;
     std::vector<double> still_gain, still_cap;
-    for (int a = 0; a < m; a += 2) {
-      const double size = std::hypot(f[a], f[a + 1]);
-      const double scale = size > cap[a] ? cap[a] / size : 1.0;
-      for (int j = 0; j < 2; ++j) delta_[stick[a + j]] = scale * f[a + j] - start_force[stick[a + j]];
-      if (scale < 1) continue;
-      for (int j = 0; j < 2; ++j) {
-        still.push_back(stick[a + j]);
+    for (int a = 0; a < m;) {
+      // a group: a normal row (cap < 0), or a point's two tangential rows
+      const int size = cap[a] < 0 ? 1 : 2;
+      double scale = 1;
+      if (size == 1 && f[a] < 0) scale = 0;
+      if (size == 2) {
+        const double force = std::hypot(f[a], f[a + 1]);
+        if (force > cap[a]) scale = cap[a] / force;
+      }
+      for (int j = 0; j < size; ++j) {
+        delta_[solve[a + j]] = scale * f[a + j] - start_force[solve[a + j]];
+        if (scale < 1) continue;
+        still.push_back(solve[a + j]);
         still_gain.push_back(gain[a + j]);
         still_cap.push_back(cap[a + j]);
       }
+      a += size;
     }
-    if (still.size() == stick.size()) break;
-    stick.swap(still);
+    if (still.size() == solve.size()) break;
+    solve.swap(still);
     gain.swap(still_gain);
     cap.swap(still_cap);
   }
@@ -609,15 +684,20 @@ void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_fo
     }
     for (int i = 0; s > 0 && i < n; ++i) {
       const bool acting = (*x)[i] > 0;  // in contact at the sub-step's start
+      if (acting && resting_[i]) {
+        // held over the sub-step; ImplicitRows corrects it at its end
+        f[s][i] = start_force[i];
+      } else if (acting && d[s][i] > 0) {
+        const LawParams& law = model_.pairs()[points_[i].pair].params;
+        f[s][i] = EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
+      }
       if (!acting || !(d[s][i] > 0)) continue;
-      const LawParams& law = model_.pairs()[points_[i].pair].params;
-      f[s][i] = EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
       // the friction at the stage's normal force, against the sub-sample's
       // memory
       const int t = tangent_row_[i];
       if (t < 0) continue;
       if (Implicit(model_.pairs()[points_[i].pair].friction.kind)) {
-        // held over the sub-step; ImplicitFriction corrects it at its end
+        // held over the sub-step; ImplicitRows corrects it at its end
         f[s][t] = start_force[t];
         f[s][t + 1] = start_force[t + 1];
         continue;

@@ -11,8 +11,8 @@
 // and its tangential displacement and slip, over the step with the laws' own
 // forces and the pair's friction model at the same sub-step's normal force,
 // in sub-steps of its own (classical RK4, a touch ending a sub-step; the
-// stick springs of coulomb and stribeck by backward Euler, ImplicitFriction),
-// the configuration frozen. The friction's memory (stick spring or bristles) is
+// stick springs of coulomb and stribeck, and the normal force of a point at
+// rest, by backward Euler: ImplicitRows), the configuration frozen. The friction's memory (stick spring or bristles) is
 // committed at every sub-sample, as a step's start commits it. The step's
 // impulse P acts on the bodies as the constant generalized force -J^T P / h
 // (ApplyForce); after the step the positions are moved onto the inner
@@ -119,14 +119,15 @@ class ContactStepper {
   // state to commit; slip gets the slip (world), stiffness k_t.
   FrictionOutput Friction(int i, double fn, double v0, const double* x, const double* rate,
                           double slip[3], double* stiffness, double* damping = nullptr) const;
-  // After Rk4SubStep of step s (the stick springs' forces held at their
-  // start_force): backward Euler on the tangential rows of coulomb and
-  // stribeck points acting (in contact at the sub-step's start), the force
-  // at the end state linearised in its spring and damper; moves x, rate,
-  // impulse_ and impulse_sum_ by the change of force.
-  void ImplicitFriction(double step, const std::vector<char>& acting,
-                        const std::vector<double>& start_force, const std::vector<double>& v0,
-                        std::vector<double>* x, std::vector<double>* rate);
+  // After Rk4SubStep of step s (the held rows' forces at start_force):
+  // backward Euler on the normal rows of the resting points and the
+  // tangential rows of coulomb and stribeck points, those acting (in contact
+  // at the sub-step's start), each force linear in its spring and damper
+  // (about the end state; a resting point's about the sub-step's start);
+  // moves x, rate, impulse_ and impulse_sum_ by the change of force.
+  void ImplicitRows(double step, const std::vector<char>& acting,
+                    const std::vector<double>& start_force, const std::vector<double>& v0,
+                    std::vector<double>* x, std::vector<double>* rate);
   // J rows, M^-1 J^T, A, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
 
@@ -155,10 +156,13 @@ class ContactStepper {
   std::vector<double> force_;      // nv: the generalized force added
   std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
-  std::vector<int> implicit_rows_; // ImplicitFriction's rows
-  std::vector<double> delta_;      // ImplicitFriction's change of force, per row
-  std::vector<double> g_;          // ImplicitFriction's explicit change, g - f0
-  std::vector<double> system_;     // ImplicitFriction's matrix
+  std::vector<int> implicit_rows_; // ImplicitRows' rows
+  std::vector<double> delta_;      // ImplicitRows' change of force, per row
+  std::vector<double> g_;          // ImplicitRows' explicit change, g - f0
+  std::vector<double> system_;     // ImplicitRows' matrix
+  std::vector<char> resting_;      // per point: at rest (kRestingFraction)
+  std::vector<double> x_start_;    // per row: x at the sub-step's start
+  std::vector<double> rate_start_; // per row: x' at the sub-step's start
   std::vector<InnerSample> samples_;
   int samples_used_ = 0;
   int substeps_ = 0;
