@@ -166,6 +166,9 @@ TEST_F(InnerFrictionTest, ADieWithFrictionComesToRestWithoutGainingEnergy) {
   const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
   EXPECT_NEAR(sim.data()->xpos[3 * body + 2], 0.01 - depth, kRestingHeightTolerance);
   EXPECT_LT(mju_norm(sim.data()->qvel, 6), 1e-3);
+  // at rest its corners' forces are implicit: one sub-step a step, where
+  // its 0.2 ms contact would take 470 explicit ones
+  EXPECT_EQ(sim.contacts().last_substeps(), 1);
 }
 
 // The closed forms of friction_test.cc's soft scenes (K = 1e6), there at
@@ -210,7 +213,9 @@ TEST_F(InnerFrictionTest, ABallSlidesThenRollsAtFiveSeventhsAtTwoMilliseconds) {
   // points of a step's start, and the ball's one rises off the floor as it
   // rolls by theta = w h, falling behind the contact by r theta^3 / 6 a
   // step, which the spring takes as a slip of v^3 h^2 / (6 r^2): 1.9e-4 m/s
-  // at 1.43 m/s and 2 ms (measured: v - w r = -1.89e-4 m/s, steady)
+  // at 1.43 m/s and 2 ms (measured: v and w r 8.2e-5 below and 2.0e-4
+  // above 5/7 v0, steady; the ball rests on its contact, whose one
+  // backward-Euler sub-step a step adds to the anchors' slip)
   constexpr double kRollingTolerance = 1e-4;  // m/s
   const double rolling = kV0 * r / (r + inertia / r);
   const double anchor_slip = std::pow(rolling, 3) * kMujocoStep * kMujocoStep / (6 * r * r);
