@@ -30,6 +30,44 @@ constexpr double kShortestSubStep = 1e-3;
 // The inner integration ends within this fraction of the step.
 constexpr double kEndTolerance = 1e-9;
 
+// Friction models whose stick spring is integrated by backward Euler inside
+// the sub-steps (ImplicitRows): the capped springs of coulomb and
+// stribeck. LuGre's bristles and the regularized curve are taken by RK4 in
+// sub-steps that resolve them.
+bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
+
+// A point in contact at the step's start rests when the amplitude of its
+// vibration about its equilibrium, sqrt((d' / w)^2 + (d'' / w^2)^2) at its
+// own rate w = sqrt(dF/dd A_ii), is below this fraction of its depth: its
+// normal force is then taken by backward Euler with the stick springs
+// (ImplicitRows), and sets no sub-step. That vibration holds less than 1e-4
+// of the contact's elastic energy at rest; backward Euler damps it
+// (unbooked). At an impact's peak (d' = 0 too) the amplitude is the depth.
+constexpr double kRestingFraction = 1e-2;
+
+// An orthonormal tangent pair (t1, t2) of the unit normal n.
+void TangentBasis(const double n[3], double t[6]) {
+  // the world axis least along n, crossed with it
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(n[k]) < std::abs(n[axis])) axis = k;
+  }
+  double e[3] = {0, 0, 0};
+  e[axis] = 1;
+  mju_cross(t, n, e);
+  mju_normalize3(t);
+  mju_cross(t + 3, n, t);
+}
+
+// The energy the tangential spring (or LuGre's bristles) of state holds at
+// stiffness k and normal force fn: FrictionOutput::stored_energy.
+double TangentialEnergy(const FrictionParams& params, const FrictionState& state, double fn) {
+  const double s2 = vec3::Dot(state.spring, state.spring);
+  if (params.kind == FrictionKind::kLuGre) return 0.5 * fn * params.bristle_stiffness * s2;
+  if (ReadsTangentialSpring(params.kind) && state.stiffness > 0) return s2 / (2 * state.stiffness);
+  return 0;
+}
+
 // The time (s, in (0, limit]) at which a depth d <= 0 at rate r and
 // acceleration b reaches 0: the first root of d + r t + b t^2 / 2.
 double TimeToSurface(double d, double r, double b, double limit) {
@@ -70,6 +108,10 @@ void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, con.frame);
+  // the slip, in the tangent plane
+  vec3::Sub(e.slip, v1, v0);
+  const double along = vec3::Dot(e.slip, con.frame);
+  for (int k = 0; k < 3; ++k) e.slip[k] -= along * con.frame[k];
 }
 
 int ContactStepper::FindPoint(int pair, const double pos[3]) const {
@@ -85,20 +127,29 @@ int ContactStepper::FindPoint(int pair, const double pos[3]) const {
 void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
-  j_.assign(static_cast<size_t>(n) * nv, 0.0);
+  const int rows = rows_;
+  j_.assign(static_cast<size_t>(rows) * nv, 0.0);
   minv_jt_.resize(j_.size());
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
+    const GeomPair& pair = model_.pairs()[e.pair];
     // NormalJacobian gives (J1 - J0)^T n, the separation rate: d' is its opposite
     double* row = j_.data() + static_cast<size_t>(i) * nv;
-    NormalJacobian(m, d, model_.pairs()[e.pair], e.pos, e.normal, row);
+    NormalJacobian(m, d, pair, e.pos, e.normal, row);
     for (int k = 0; k < nv; ++k) row[k] = -row[k];
+    // the tangential rows: body[1]'s velocity relative to body[0] along t1, t2
+    const int r = tangent_row_[i];
+    for (int j = 0; r >= 0 && j < 2; ++j) {
+      NormalJacobian(m, d, pair, e.pos, tangents_.data() + 6 * i + 3 * j,
+                     j_.data() + static_cast<size_t>(r + j) * nv);
+    }
   }
-  if (n > 0) mj_solveM(m, d, minv_jt_.data(), j_.data(), n);
+  if (rows > 0) mj_solveM(m, d, minv_jt_.data(), j_.data(), rows);
 
   // the free acceleration: every force of the step's start but the laws'
-  // normal ones (friction is in qfrc_passive already); the actuators' and
-  // MuJoCo's constraints' as the previous step left them
+  // normal ones and the tangential friction (the rolling and torsional
+  // torques are in qfrc_passive); the actuators' and MuJoCo's constraints'
+  // as the previous step left them
   std::vector<double> force(nv);
   mj_rne(m, d, 0, force.data());
   for (int k = 0; k < nv; ++k) {
@@ -114,34 +165,77 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   a_free_.resize(nv);
   mj_solveM(m, d, a_free_.data(), force.data(), 1);
 
-  a_.assign(static_cast<size_t>(n) * n, 0.0);
-  b_.assign(n, 0.0);
+  a_.assign(static_cast<size_t>(rows) * rows, 0.0);
+  b_.assign(rows, 0.0);
   mass_.assign(n, std::numeric_limits<double>::infinity());
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < rows; ++i) {
     const double* ji = j_.data() + static_cast<size_t>(i) * nv;
-    for (int j = 0; j < n; ++j) {
-      a_[i * n + j] = mju_dot(ji, minv_jt_.data() + static_cast<size_t>(j) * nv, nv);
+    for (int j = 0; j < rows; ++j) {
+      a_[i * rows + j] = mju_dot(ji, minv_jt_.data() + static_cast<size_t>(j) * nv, nv);
     }
     b_[i] = mju_dot(ji, a_free_.data(), nv);
-    if (a_[i * n + i] > 0) mass_[i] = 1.0 / a_[i * n + i];
+    if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
   }
 }
 
 int ContactStepper::SubSteps(double h) const {
   if (options_.substeps > 0) return options_.substeps;
   const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
   double step = h;
+  // each friction point's tangential spring and damper (TangentialDynamics)
+  // in contact at the step's start
+  std::vector<TangentialSpringDamper> tangential(n);
+  for (int j = 0; j < n; ++j) {
+    const PointEvaluation& f = points_[j];
+    if (tangent_row_[j] < 0 || !(f.depth > 0)) continue;
+    const GeomPair& pair = model_.pairs()[f.pair];
+    const double k = f.friction_state.stiffness;
+    const ContactState state{f.depth, f.depth_rate, f.impact_velocity, 0.0};
+    const double c = ReadsTangentialSpring(pair.friction.kind)
+                         ? TangentialDamping(pair.friction, pair.params, state, k,
+                                             pair.friction_mass)
+                         : 0.0;
+    tangential[j] = TangentialDynamics(pair.friction, k, c, pair.friction_mass, f.force);
+  }
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
-    const LawParams& law = model_.pairs()[e.pair].params;
-    // its coupling: the row of A against its own diagonal
+    const GeomPair& pair = model_.pairs()[e.pair];
+    const LawParams& law = pair.params;
+    // a tangential row: its coupling to the other tangential rows (its
+    // mass: 1 / the row sum of |A|), its spring's period and its dampers' lag
+    const bool explicit_friction = !Implicit(pair.friction.kind);
+    for (int r = tangent_row_[i];
+         explicit_friction && r >= 0 && r < tangent_row_[i] + 2 && e.depth > 0; ++r) {
+      double row = 0, damped = 0;
+      for (int j = 0; j < n; ++j) {
+        for (int c = tangent_row_[j]; c >= 0 && c < tangent_row_[j] + 2; ++c) {
+          row += std::abs(a_[r * rows + c]);
+          damped += std::abs(a_[r * rows + c]) * tangential[j].damping;
+        }
+      }
+      if (!(row > 0)) continue;
+      // the spring's undamped half period pi / omega, as TangentialDuration
+      // takes it without its damper: the damper is the lag's bound, and on
+      // the row's small Gershgorin mass an overdamped rate would only
+      // repeat it
+      const double omega2 = tangential[i].stiffness * row;
+      if (omega2 > 0) {
+        step = std::min(step, 2 * M_PI / std::sqrt(omega2) / options_.per_contact_hertz);
+      }
+      if (damped > 0) step = std::min(step, kSubStepLags / damped);
+    }
+    // its coupling: the row of A against its own diagonal (a resting
+    // point's force is implicit: neither its spring nor its damper bounds)
+    if (resting_[i]) continue;
     double row = 0, damped = 0;
     for (int j = 0; j < n; ++j) {
-      row += std::abs(a_[i * n + j]);
+      row += std::abs(a_[i * rows + j]);
       const PointEvaluation& f = points_[j];
-      if (f.depth > 0) {
+      if (f.depth > 0 && !resting_[j]) {
         const ContactState state{f.depth, f.depth_rate, f.impact_velocity, mass_[j]};
-        damped += std::abs(a_[i * n + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
+        damped +=
+            std::abs(a_[i * rows + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
       }
     }
     if (!(row > 0)) continue;
@@ -170,7 +264,55 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   if (points_.empty()) return;
   active_ = true;
   h_ = m->opt.timestep;
+
+  // the rows: a normal one per point, then two tangential ones per point
+  // whose pair has friction, in the plane of its normal
+  const int n = static_cast<int>(points_.size());
+  rows_ = n;
+  tangent_row_.assign(n, -1);
+  tangents_.resize(static_cast<size_t>(6) * n);
+  anchor_turn_.resize(static_cast<size_t>(9) * n);
+  memory_.assign(n, FrictionMemory());
+  for (int i = 0; i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    const GeomPair& pair = model_.pairs()[e.pair];
+    if (pair.friction.kind == FrictionKind::kNone) continue;
+    tangent_row_[i] = rows_;
+    rows_ += 2;
+    TangentBasis(e.normal, tangents_.data() + 6 * i);
+    mju_copy(anchor_turn_.data() + 9 * i, d->xmat + 9 * pair.body[0], 9);
+    if (e.depth > 0) {
+      // the evaluator's friction at the step's start is the first commit
+      FrictionMemory& memory = memory_[i];
+      vec3::Copy(memory.spring, e.friction_state.spring);
+      memory.stiffness = e.friction_state.stiffness;
+      memory.sliding = e.friction_state.sliding;
+    }
+  }
   BuildContactSpace(m, d);
+  // the points at rest: vibrating about their equilibrium by less than
+  // kRestingFraction of their depth
+  resting_.assign(n, 0);
+  for (int i = 0; options_.substeps <= 0 && i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    if (!(e.depth > 0) || e.touch || e.friction_state.sliding) continue;
+    double acc = b_[i];
+    for (int j = 0; j < n; ++j) {
+      if (points_[j].depth > 0) acc -= a_[static_cast<size_t>(i) * rows_ + j] * points_[j].force;
+    }
+    for (int j = 0; j < n; ++j) {
+      const int r = tangent_row_[j];
+      for (int c = 0; r >= 0 && points_[j].depth > 0 && c < 2; ++c) {
+        acc += a_[static_cast<size_t>(i) * rows_ + r + c] *
+               vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
+      }
+    }
+    const LawParams& law = model_.pairs()[e.pair].params;
+    const double w2 = NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
+    if (!(w2 > 0)) continue;
+    const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
+    resting_[i] = amplitude < kRestingFraction * e.depth;
+  }
   for (const PointEvaluation& e : points_) {
     for (const int body : model_.pairs()[e.pair].body) {
       const double turn = mju_norm3(d->cvel + 6 * body) * h_;
@@ -181,24 +323,38 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     }
   }
 
-  const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
   const double delta = h_ / SubSteps(h_);
-  // each point's state: depth, rate; in contact; its episode's v0 (touch
-  // speed or the episode's) and the largest rate committed since
-  std::vector<double> depth(n), rate(n), force(n, 0.0), v0(n), committed(n);
+  // each row's state: depth and rate (normal), displacement since the
+  // step's start and slip (tangential); each point's: in contact; its
+  // episode's v0 (touch speed or the episode's) and the largest rate
+  // committed since
+  std::vector<double> x(rows, 0.0), rate(rows, 0.0), force(rows, 0.0);
+  std::vector<double> v0(n), committed(n);
   std::vector<double> contact_v0(n);  // the law's v0 of this sub-step
   std::vector<char> open(n);
+  // per point: the rolling and torsional part of its friction's stored
+  // energy and power at the step's start, which stay through the step
+  std::vector<double> rolling_energy(n, 0.0), rolling_power(n, 0.0);
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
-    depth[i] = e.depth;
+    x[i] = e.depth;
     rate[i] = e.depth_rate;
     open[i] = e.depth > 0;
     v0[i] = e.impact_velocity;
     contact_v0[i] = e.impact_velocity;
     committed[i] = e.max_approach;
+    const int r = tangent_row_[i];
+    if (r < 0) continue;
+    for (int j = 0; j < 2; ++j) rate[r + j] = vec3::Dot(e.slip, tangents_.data() + 6 * i + 3 * j);
+    if (e.depth > 0) {
+      const FrictionParams& params = model_.pairs()[e.pair].friction;
+      rolling_energy[i] = e.friction_energy - TangentialEnergy(params, e.friction_state, e.force);
+      rolling_power[i] = e.friction_power + vec3::Dot(e.friction, e.slip);
+    }
   }
-  impulse_.assign(n, 0.0);
-  impulse_sum_.assign(n, 0.0);
+  impulse_.assign(rows, 0.0);
+  impulse_sum_.assign(rows, 0.0);
   rates_.clear();
 
   double t = 0;  // since the step's start, s
@@ -210,13 +366,18 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     sample.ids.clear();
     rates_.insert(rates_.end(), rate.begin(), rate.end());
     samples_used_ = k + 1;
+    std::fill(force.begin(), force.end(), 0.0);
     for (int i = 0; i < n; ++i) {
-      force[i] = 0;
-      const bool in_contact = depth[i] > 0;
+      const bool in_contact = x[i] > 0;
+      const int r = tangent_row_[i];
+      const double* tangent = tangents_.data() + 6 * i;
       if (k == 0) {
         // the step's start: the evaluator's points as they are
         if (in_contact) {
           force[i] = points_[i].force;
+          for (int j = 0; r >= 0 && j < 2; ++j) {
+            force[r + j] = -vec3::Dot(points_[i].friction, tangent + 3 * j);
+          }
           sample.points.push_back(points_[i]);
           sample.ids.push_back(i);
         }
@@ -224,19 +385,21 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       }
       if (!in_contact) {
         open[i] = false;
+        if (r >= 0) memory_[i] = FrictionMemory();
         continue;
       }
-      const LawParams& law = model_.pairs()[points_[i].pair].params;
+      const GeomPair& pair = model_.pairs()[points_[i].pair];
+      const LawParams& law = pair.params;
       PointEvaluation& e = sample.points.emplace_back(points_[i]);
       sample.ids.push_back(i);
-      e.depth = depth[i];
+      e.depth = x[i];
       e.depth_rate = rate[i];
       e.at_start = false;
       e.touch = !open[i];
       if (e.touch) {
         // v0: the rate at the sub-sample before the touch
         e.episode = -1;
-        e.touch_velocity = rates_[static_cast<size_t>(k - 1) * n + i];
+        e.touch_velocity = rates_[static_cast<size_t>(k - 1) * rows + i];
         v0[i] = std::max(e.touch_velocity, law.min_impact_velocity);
         committed[i] = e.touch_velocity;
         const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity, v0[i],
@@ -249,78 +412,315 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       e.max_approach = std::max(committed[i], rate[i]);
       committed[i] = e.max_approach;
       const ContactForce f =
-          EvaluateLaw(law, ContactState{depth[i], rate[i], e.impact_velocity, mass_[i]});
+          EvaluateLaw(law, ContactState{x[i], rate[i], e.impact_velocity, mass_[i]});
       e.force = force[i] = f.total;
       e.dissipated_power = f.dissipated_power(rate[i]);
+      if (r < 0) continue;
+
+      // the friction at this sub-sample, against the memory of the one
+      // before (none at a touch), committed as a step's start commits it
+      FrictionMemory& memory = memory_[i];
+      if (e.touch) {
+        memory = FrictionMemory();
+        memory.at[0] = x[r];
+        memory.at[1] = x[r + 1];
+      }
+      double stiffness = 0;
+      const FrictionOutput out = Friction(i, e.force, e.impact_velocity, x.data(), rate.data(),
+                                          e.slip, &stiffness);
+      for (int j = 0; j < 2; ++j) force[r + j] = -vec3::Dot(out.force, tangent + 3 * j);
+      vec3::Copy(e.friction, out.force);
+      e.friction_energy = rolling_energy[i] + out.stored_energy;
+      e.friction_power = rolling_power[i] - vec3::Dot(out.force, e.slip);
+      vec3::Copy(e.friction_state.spring, out.state);
+      e.friction_state.stiffness = stiffness;
+      e.friction_state.sliding = out.sliding;
+      vec3::Copy(memory.spring, out.state);
+      memory.stiffness = stiffness;
+      memory.sliding = out.sliding;
+      memory.at[0] = x[r];
+      memory.at[1] = x[r + 1];
+      // the stick anchors: body[1]'s material point of the step's start,
+      // and body[0]'s that lies under it now (it moved by x along the
+      // tangents relative to body[0]), in body[0]'s frame
+      double moved[3], local[3];
+      for (int c = 0; c < 3; ++c) moved[c] = x[r] * tangent[c] + x[r + 1] * tangent[3 + c];
+      mju_mulMatTVec(local, anchor_turn_.data() + 9 * i, moved, 3, 3);
+      for (int c = 0; c < 3; ++c) e.local[0][c] = points_[i].local[0][c] + local[c];
     }
     // the sub-step, ended just past a touch within it (as the auto timestep
     // does), so that a force that jumps at d = 0+ acts from the touch on
     double step = std::min(delta, h_ - t);
     for (int i = 0; i < n; ++i) {
-      if (depth[i] > 0 || depth[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
-      const double touch = TimeToSurface(depth[i], rate[i], b_[i], step);
+      if (x[i] > 0 || x[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
+      const double touch = TimeToSurface(x[i], rate[i], b_[i], step);
       step = std::min(step, std::max(touch * (1 + kPastTouch), kShortestSubStep * delta));
     }
-    // classical RK4 on (d, d'), the points in contact at the sub-step's
+    // classical RK4 on (x, x'), the points in contact at the sub-step's
     // start the ones with a force (a touch ends a sub-step), each at its v0
     // of the sample; exact in the free acceleration b
-    Rk4SubStep(step, force, contact_v0, &depth, &rate);
+    std::vector<char> acting(n);
+    for (int i = 0; i < n; ++i) acting[i] = x[i] > 0;
+    x_start_ = x;
+    rate_start_ = rate;
+    Rk4SubStep(step, force, contact_v0, &x, &rate);
+    ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
   }
-  // the step's mean normal force, -J^T P / h
-  for (int i = 0; i < n; ++i) {
-    mju_addToScl(force_.data(), j_.data() + static_cast<size_t>(i) * m->nv, -impulse_[i] / h_,
+  // the step's mean contact force, -J^T P / h
+  for (int r = 0; r < rows; ++r) {
+    mju_addToScl(force_.data(), j_.data() + static_cast<size_t>(r) * m->nv, -impulse_[r] / h_,
                  m->nv);
   }
   ApplyForce(m, d);
 }
 
+FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const double* x,
+                                        const double* rate, double slip[3],
+                                        double* stiffness, double* damping) const {
+  const GeomPair& pair = model_.pairs()[points_[i].pair];
+  const FrictionParams& params = pair.friction;
+  const int r = tangent_row_[i];
+  const double* t = tangents_.data() + 6 * i;
+  const FrictionMemory& memory = memory_[i];
+  // the slip, and the stretch since the last sub-sample, in the world frame
+  FrictionInput in;
+  for (int c = 0; c < 3; ++c) {
+    slip[c] = rate[r] * t[c] + rate[r + 1] * t[3 + c];
+    in.slip[c] = slip[c];
+    in.stretch[c] = (x[r] - memory.at[0]) * t[c] + (x[r + 1] - memory.at[1]) * t[3 + c];
+    in.committed[c] = memory.spring[c];
+  }
+  in.was_sliding = memory.sliding;
+  in.normal_force = std::max(fn, 0.0);
+  in.mass = pair.friction_mass;
+  in.committed_stiffness = memory.stiffness;
+  // k_t and c_t at this depth, as the evaluator takes them
+  const bool rolling = params.torsional > 0 || params.rolling > 0;
+  if (ReadsTangentialSpring(params.kind) || rolling) {
+    in.stiffness = TangentialStiffness(params, pair.params, x[i]);
+  }
+  if (ReadsTangentialSpring(params.kind)) {
+    const ContactState state{x[i], rate[i], v0, 0.0};
+    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+  }
+  *stiffness = in.stiffness;
+  if (damping) *damping = in.damping + params.viscous;
+  return EvaluateFriction(params, in);
+}
+
+void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
+                                  const std::vector<double>& start_force,
+                                  const std::vector<double>& v0, std::vector<double>* x,
+                                  std::vector<double>* rate) {
+  const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
+  // the rows held over the sub-step: a resting point's normal row and a
+  // stick spring's two tangential ones; the force g at RK4's end state (a
+  // resting point's: linear from the sub-step's start), and its change delta
+  // over the held f0
+  std::vector<int>& held = implicit_rows_;
+  std::vector<int> solve;          // rows solved for: a group's rows together
+  std::vector<double> gain;        // per solved row: k step^2 + c step
+  std::vector<double> cap;         // per solved row: its group's cap (N; < 0: normal)
+  held.clear();
+  delta_.assign(rows, 0.0);
+  g_.assign(rows, 0.0);
+  auto hold = [&](int r, double g, double k, double c, double group_cap) {
+    held.push_back(r);
+    delta_[r] = g_[r] = g - start_force[r];
+    if (k * step * step + c * step > 0) {
+      solve.push_back(r);
+      gain.push_back(k * step * step + c * step);
+      cap.push_back(group_cap);
+    }
+  };
+  for (int i = 0; i < n; ++i) {
+    if (!acting[i]) continue;
+    const GeomPair& pair = model_.pairs()[points_[i].pair];
+    const int r = tangent_row_[i];
+    const bool stick = r >= 0 && Implicit(pair.friction.kind);
+    if (!resting_[i] && !stick) continue;
+    if (resting_[i]) {
+      // linearly implicit about the sub-step's start, where the point is in
+      // contact (the law at RK4's end state, with the forces held over a
+      // long sub-step, may be out of it): f = f0 + k dx + c dx', the law's
+      // spring and damper there, and the friction's likewise
+      const double x0 = x_start_[i];
+      const ContactState start{x0, rate_start_[i], v0[i], mass_[i]};
+      const double k = NormalStiffness(pair.params, x0);
+      const double c = DampingCoefficient(pair.params, start);
+      const double gn =
+          start_force[i] + k * ((*x)[i] - x0) + c * ((*rate)[i] - rate_start_[i]);
+      hold(i, gn, k, c, -1);
+      if (!stick) continue;
+      const FrictionParams& f = pair.friction;
+      const double kt = TangentialStiffness(f, pair.params, x0);
+      const double ct =
+          TangentialDamping(f, pair.params, start, kt, pair.friction_mass) + f.viscous;
+      const double speed = std::hypot((*rate)[r], (*rate)[r + 1]);
+      const double limit =
+          std::max(gn, 0.0) * (memory_[i].sliding ? SlidingMu(f, speed) : f.mu_static);
+      for (int j = 0; j < 2; ++j) {
+        const int t = r + j;
+        hold(t, start_force[t] + kt * ((*x)[t] - x_start_[t]) + ct * ((*rate)[t] - rate_start_[t]),
+             kt, ct, limit);
+      }
+      continue;
+    }
+    if (!((*x)[i] > 0)) {
+      // out of contact at the sub-step's end: no force there
+      for (int j = 0; j < 2; ++j) hold(r + j, 0.0, 0.0, 0.0, 0);
+      continue;
+    }
+    const ContactState state{(*x)[i], (*rate)[i], v0[i], mass_[i]};
+    const double fn = EvaluateLaw(pair.params, state).total;
+    double slip[3], k = 0, c = 0;
+    const FrictionOutput out = Friction(i, fn, v0[i], x->data(), rate->data(), slip, &k, &c);
+    const FrictionParams& f = pair.friction;
+    const double limit =
+        std::max(fn, 0.0) * (memory_[i].sliding ? SlidingMu(f, mju_norm3(slip)) : f.mu_static);
+    // a sliding point keeps its force at the cap (g)
+    const bool linear = !out.sliding;
+    for (int j = 0; j < 2; ++j) {
+      const double g = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
+      hold(r + j, g, linear ? k : 0.0, linear ? c : 0.0, limit);
+    }
+  }
+  if (held.empty()) return;
+  // backward Euler on the solved rows: f = g - K A delta (x and x' at the
+  // sub-step's end moved by -step^2 A delta and -step A delta), solved as
+  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
+  // A normal force below 0 is put at 0, a friction force beyond its cap at
+  // the cap, and the others are solved again (once).
+  std::vector<char> solved(rows, 0);
+  for (int pass = 0; pass < 2 && !solve.empty(); ++pass) {
+    const int m = static_cast<int>(solve.size());
+    std::fill(solved.begin(), solved.end(), 0);
+    for (const int r : solve) solved[r] = 1;
+    system_.assign(static_cast<size_t>(m) * m, 0.0);
+    std::vector<double> rhs(m), f(m);
+    for (int a = 0; a < m; ++a) {
+      const int r = solve[a];
+      const double* row = a_.data() + static_cast<size_t>(r) * rows;
+      for (int b = 0; b < m; ++b) system_[a * m + b] = row[solve[b]];
+      system_[a * m + a] += 1 / gain[a];
+      rhs[a] = (start_force[r] + g_[r]) / gain[a];
+      for (int b = 0; b < m; ++b) rhs[a] += row[solve[b]] * start_force[solve[b]];
+      for (const int l : held) {
+        if (!solved[l]) rhs[a] -= row[l] * delta_[l];
+      }
+    }
+    if (mju_cholFactor(system_.data(), m, 0) != m) break;
+    mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
+    std::vector<int> still;
+    std::vector<double> still_gain, still_cap;
+    for (int a = 0; a < m;) {
+      // a group: a normal row (cap < 0), or a point's two tangential rows
+      const int size = cap[a] < 0 ? 1 : 2;
+      double scale = 1;
+      if (size == 1 && f[a] < 0) scale = 0;
+      if (size == 2) {
+        const double force = std::hypot(f[a], f[a + 1]);
+        if (force > cap[a]) scale = cap[a] / force;
+      }
+      for (int j = 0; j < size; ++j) {
+        delta_[solve[a + j]] = scale * f[a + j] - start_force[solve[a + j]];
+        if (scale < 1) continue;
+        still.push_back(solve[a + j]);
+        still_gain.push_back(gain[a + j]);
+        still_cap.push_back(cap[a + j]);
+      }
+      a += size;
+    }
+    if (still.size() == solve.size()) break;
+    solve.swap(still);
+    gain.swap(still_gain);
+    cap.swap(still_cap);
+  }
+  // the change of force over the whole sub-step, on every row
+  for (int r = 0; r < rows; ++r) {
+    const double* row = a_.data() + static_cast<size_t>(r) * rows;
+    double pushed = 0;
+    for (const int l : held) pushed += row[l] * delta_[l];
+    (*rate)[r] -= step * pushed;
+    (*x)[r] -= step * step * pushed;
+  }
+  for (const int l : held) {
+    impulse_sum_[l] += step * step * delta_[l];
+    impulse_[l] += step * delta_[l];
+  }
+}
+
 void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_force,
-                                const std::vector<double>& v0, std::vector<double>* depth,
+                                const std::vector<double>& v0, std::vector<double>* x,
                                 std::vector<double>* rate) {
-  const int n = static_cast<int>(depth->size());
-  // stage s: depth, rate, force, and the acceleration b - A f
+  const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
+  // stage s: position, rate, force, and the acceleration b - A f, per row
   double* d[4];
   double* r[4];
   double* f[4];
   double* acc[4];
-  stage_.resize(static_cast<size_t>(16) * n);
+  stage_.resize(static_cast<size_t>(16) * rows);
   for (int s = 0; s < 4; ++s) {
-    d[s] = stage_.data() + (4 * s + 0) * n;
-    r[s] = stage_.data() + (4 * s + 1) * n;
-    f[s] = stage_.data() + (4 * s + 2) * n;
-    acc[s] = stage_.data() + (4 * s + 3) * n;
+    d[s] = stage_.data() + (4 * s + 0) * rows;
+    r[s] = stage_.data() + (4 * s + 1) * rows;
+    f[s] = stage_.data() + (4 * s + 2) * rows;
+    acc[s] = stage_.data() + (4 * s + 3) * rows;
   }
   const double offsets[4] = {0, 0.5 * step, 0.5 * step, step};
   for (int s = 0; s < 4; ++s) {
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < rows; ++i) {
       if (s == 0) {
-        d[0][i] = (*depth)[i];
+        d[0][i] = (*x)[i];
         r[0][i] = (*rate)[i];
       } else {
-        d[s][i] = (*depth)[i] + offsets[s] * r[s - 1][i];
+        d[s][i] = (*x)[i] + offsets[s] * r[s - 1][i];
         r[s][i] = (*rate)[i] + offsets[s] * acc[s - 1][i];
       }
-      const bool acting = (*depth)[i] > 0;  // in contact at the sub-step's start
-      const LawParams& law = model_.pairs()[points_[i].pair].params;
-      f[s][i] = s == 0 ? start_force[i]
-                : acting && d[s][i] > 0
-                    ? EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total
-                    : 0.0;
+      f[s][i] = s == 0 ? start_force[i] : 0.0;
     }
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; s > 0 && i < n; ++i) {
+      const bool acting = (*x)[i] > 0;  // in contact at the sub-step's start
+      if (acting && resting_[i]) {
+        // held over the sub-step; ImplicitRows corrects it at its end
+        f[s][i] = start_force[i];
+      } else if (acting && d[s][i] > 0) {
+        const LawParams& law = model_.pairs()[points_[i].pair].params;
+        f[s][i] = EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
+      }
+      if (!acting || !(d[s][i] > 0)) continue;
+      // the friction at the stage's normal force, against the sub-sample's
+      // memory
+      const int t = tangent_row_[i];
+      if (t < 0) continue;
+      if (Implicit(model_.pairs()[points_[i].pair].friction.kind)) {
+        // held over the sub-step; ImplicitRows corrects it at its end
+        f[s][t] = start_force[t];
+        f[s][t + 1] = start_force[t + 1];
+        continue;
+      }
+      double slip[3], stiffness;
+      const FrictionOutput out = Friction(i, f[s][i], v0[i], d[s], r[s], slip, &stiffness);
+      for (int j = 0; j < 2; ++j) {
+        f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
+      }
+    }
+    for (int i = 0; i < rows; ++i) {
       double pushed = 0;  // (A f)_i
-      for (int j = 0; j < n; ++j) pushed += a_[i * n + j] * f[s][j];
+      const double* a = a_.data() + static_cast<size_t>(i) * rows;
+      for (int j = 0; j < rows; ++j) pushed += a[j] * f[s][j];
       acc[s][i] = b_[i] - pushed;
     }
   }
-  for (int i = 0; i < n; ++i) {
-    // x'' = b - A f: the depth moves by step r + step^2 / 6 (a1 + a2 + a3),
-    // whose contact part is the position impulse added to impulse_sum_
+  for (int i = 0; i < rows; ++i) {
+    // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose
+    // contact part is the position impulse added to impulse_sum_
     impulse_sum_[i] += step * impulse_[i] + step * step / 6 * (f[0][i] + f[1][i] + f[2][i]);
     impulse_[i] += step / 6 * (f[0][i] + 2 * f[1][i] + 2 * f[2][i] + f[3][i]);
-    (*depth)[i] += step * (*rate)[i] + step * step / 6 * (acc[0][i] + acc[1][i] + acc[2][i]);
+    (*x)[i] += step * (*rate)[i] + step * step / 6 * (acc[0][i] + acc[1][i] + acc[2][i]);
     (*rate)[i] += step / 6 * (acc[0][i] + 2 * acc[1][i] + 2 * acc[2][i] + acc[3][i]);
   }
 }

@@ -3,17 +3,22 @@
 // ContactStepper: the contacts of one step integrated inside it
 // (docs/timestep.md, "Contact steps"). At the step's start, for the points
 // in contact or within reach of the step (PointEvaluator collects both), it
-// takes the normal Jacobians J (one row per point), the contact-space
+// takes the contact-space rows J (one normal row per point, and two
+// tangential ones for a point whose pair has friction), the contact-space
 // inverse inertia A = J M^-1 J^T (mj_solveM) and the free contact-space
-// acceleration b = J M^-1 (the forces other than the laws' normal ones),
-// then integrates each point's depth and depth rate over the step with the
-// laws' own forces, in sub-steps of its own (classical RK4, a touch
-// ending a sub-step), the configuration frozen, the configuration frozen. The step's normal
+// acceleration b = J M^-1 (the forces other than the laws' and the
+// tangential friction), then integrates each point's depth and depth rate,
+// and its tangential displacement and slip, over the step with the laws' own
+// forces and the pair's friction model at the same sub-step's normal force,
+// in sub-steps of its own (classical RK4, a touch ending a sub-step; the
+// stick springs of coulomb and stribeck, and the normal force of a point at
+// rest, by backward Euler: ImplicitRows), the configuration frozen. The friction's memory (stick spring or bristles) is
+// committed at every sub-sample, as a step's start commits it. The step's
 // impulse P acts on the bodies as the constant generalized force -J^T P / h
 // (ApplyForce); after the step the positions are moved onto the inner
 // trajectory (CorrectPositions). The sub-samples are kept as evaluations
-// (samples()) for the step committer: episodes, impacts and the ledger see
-// the contact at the inner resolution.
+// (samples()) for the step committer: episodes, impacts, the friction state
+// and the ledger see the contact at the inner resolution.
 
 #ifndef CONTACTLAWS_MUJOCO_CONTACT_STEPPER_H_
 #define CONTACTLAWS_MUJOCO_CONTACT_STEPPER_H_
@@ -21,6 +26,8 @@
 #include <vector>
 
 #include <mujoco/mujoco.h>
+
+#include "contactlaws/friction.h"
 
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
@@ -73,7 +80,7 @@ class ContactStepper {
   int point_count() const { return static_cast<int>(points_.size()); }
   int sample_count() const { return samples_used_; }
   // The rate of inner point id at sample k (m/s): a separation's speed.
-  double Rate(int k, int id) const { return rates_[k * points_.size() + id]; }
+  double Rate(int k, int id) const { return rates_[static_cast<size_t>(k) * rows_ + id]; }
   // The inner point of pair at pos, or -1.
   int FindPoint(int pair, const double pos[3]) const;
   // The episode of inner point id when the step started (-1: none).
@@ -87,14 +94,40 @@ class ContactStepper {
   int substeps() const { return substeps_; }
 
  private:
+  // The friction's memory of a point within the step: its state at the last
+  // sub-sample (the stick spring or LuGre's z, world frame; k_t; sliding)
+  // and its tangential displacement then (row coordinates, m).
+  struct FrictionMemory {
+    double spring[3] = {0, 0, 0};
+    double stiffness = 0;
+    bool sliding = false;
+    double at[2] = {0, 0};
+  };
+
   // Sub-steps for the step of h s: options_.substeps, or each point's elastic
-  // duration and its damper's lag over the per-contact counts.
+  // duration and its dampers' lag (normal and tangential), and each friction
+  // point's tangential period, over the per-contact counts.
   int SubSteps(double h) const;
-  // One RK4 sub-step of the points' depths and rates (b - A f(d, d')), from
+  // One RK4 sub-step of the rows' positions and rates (b - A f(x, x')), from
   // the forces at its start; adds to impulse_ and impulse_sum_.
   void Rk4SubStep(double step, const std::vector<double>& start_force,
-                  const std::vector<double>& v0, std::vector<double>* depth,
+                  const std::vector<double>& v0, std::vector<double>* x,
                   std::vector<double>* rate);
+  // The friction of point i (its pair's model, against memory_[i]) at normal
+  // force fn and v0, at x and rate (all rows: its depth and depth rate, its
+  // displacement and slip): the tangential force on body[1] (world) and the
+  // state to commit; slip gets the slip (world), stiffness k_t.
+  FrictionOutput Friction(int i, double fn, double v0, const double* x, const double* rate,
+                          double slip[3], double* stiffness, double* damping = nullptr) const;
+  // After Rk4SubStep of step s (the held rows' forces at start_force):
+  // backward Euler on the normal rows of the resting points and the
+  // tangential rows of coulomb and stribeck points, those acting (in contact
+  // at the sub-step's start), each force linear in its spring and damper
+  // (about the end state; a resting point's about the sub-step's start);
+  // moves x, rate, impulse_ and impulse_sum_ by the change of force.
+  void ImplicitRows(double step, const std::vector<char>& acting,
+                    const std::vector<double>& start_force, const std::vector<double>& v0,
+                    std::vector<double>* x, std::vector<double>* rate);
   // J rows, M^-1 J^T, A, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
 
@@ -102,17 +135,34 @@ class ContactStepper {
   ContactStepsOptions options_;
   std::vector<PointEvaluation> near_;   // AddNear's points, as evaluations
   std::vector<PointEvaluation> points_; // this step's points: touching, then near
-  std::vector<double> mass_;       // per point: 1 / A_ii, kg
-  std::vector<double> j_;          // points x nv: J_i, d' = J_i qvel (+ drives)
-  std::vector<double> minv_jt_;    // points x nv: M^-1 J_i^T
-  std::vector<double> a_;          // points x points
-  std::vector<double> b_;          // per point, m/s^2
-  std::vector<double> a_free_;     // nv: M^-1 (forces but the normal laws')
-  std::vector<double> impulse_;    // per point: P at the step's end, N s
-  std::vector<double> impulse_sum_;  // per point: delta * sum_k P_k, N s^2
+  // rows: points' normal rows 0..n-1 (x = depth, x' = d'), then two per
+  // friction point (x = body[1]'s displacement relative to body[0] along
+  // the tangents since the step's start, x' = the slip along them)
+  int rows_ = 0;
+  std::vector<int> tangent_row_;   // per point: its first tangential row, or -1
+  std::vector<double> tangents_;   // per point: t1, t2 (world, 6)
+  std::vector<double> anchor_turn_;  // per point: body[0]'s xmat at the start (9)
+  std::vector<FrictionMemory> memory_;  // per point
+  std::vector<double> mass_;       // per point: 1 / A_ii of its normal row, kg
+  std::vector<double> j_;          // rows x nv: x' = J_r qvel (+ drives)
+  std::vector<double> minv_jt_;    // rows x nv: M^-1 J_r^T
+  std::vector<double> a_;          // rows x rows
+  std::vector<double> b_;          // per row, m/s^2
+  std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
+  // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
+  // minus the friction force on body[1] along the tangent)
+  std::vector<double> impulse_;    // per row: P at the step's end, N s
+  std::vector<double> impulse_sum_;  // per row: delta * sum_k P_k, N s^2
   std::vector<double> force_;      // nv: the generalized force added
-  std::vector<double> rates_;      // samples x points
+  std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
+  std::vector<int> implicit_rows_; // ImplicitRows' rows
+  std::vector<double> delta_;      // ImplicitRows' change of force, per row
+  std::vector<double> g_;          // ImplicitRows' explicit change, g - f0
+  std::vector<double> system_;     // ImplicitRows' matrix
+  std::vector<char> resting_;      // per point: at rest (kRestingFraction)
+  std::vector<double> x_start_;    // per row: x at the sub-step's start
+  std::vector<double> rate_start_; // per row: x' at the sub-step's start
   std::vector<InnerSample> samples_;
   int samples_used_ = 0;
   int substeps_ = 0;

@@ -117,7 +117,8 @@ void AddRollingResistance(const mjModel* m, mjData* d, const GeomPair& pair,
 }  // namespace
 
 void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,
-                 const GeomPair& pair, const mjContact& con, PointEvaluation* e) {
+                 const GeomPair& pair, const mjContact& con, PointEvaluation* e,
+                 TangentialForce tangential) {
   const mjtNum* n = con.frame;
   const int b0 = pair.body[0];
   const int b1 = pair.body[1];
@@ -163,7 +164,7 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   }
 
   const FrictionOutput out = EvaluateFriction(params, in);
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; tangential == TangentialForce::kAdd && b < 2; ++b) {
     mjtNum push[3];
     vec3::Scale(push, out.force, b == 1 ? 1.0 : -1.0);
     AddPointForce(model.model(), d, pair.body[b], con.pos, push, d->qfrc_passive);

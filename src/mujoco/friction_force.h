@@ -24,9 +24,14 @@ namespace contactlaws::internal {
 // PointEvaluator::EvaluatePoint leaves it): records its slip (in the tangent
 // plane) and spin in *e, and for a pair with friction adds the friction force
 // and torque to d->qfrc_passive and records them in *e, with the state to
-// commit (episodes: the committed memory of e's open episode).
+// commit (episodes: the committed memory of e's open episode). With
+// kRecordOnly the tangential force is recorded and not added (the contact
+// steps integrate it inside the step); the rolling and torsional torques are
+// added either way.
+enum class TangentialForce { kAdd, kRecordOnly };
 void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,
-                 const GeomPair& pair, const mjContact& con, PointEvaluation* e);
+                 const GeomPair& pair, const mjContact& con, PointEvaluation* e,
+                 TangentialForce tangential = TangentialForce::kAdd);
 
 }  // namespace contactlaws::internal
 

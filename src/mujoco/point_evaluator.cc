@@ -60,7 +60,8 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
         vec3::Scale(push, con.frame, b == 1 ? e.force : -e.force);
         AddPointForce(m, d, pair.body[b], con.pos, push, d->qfrc_passive);
       }
-      AddFriction(model_, d, episodes, pair, con, &e);
+      AddFriction(model_, d, episodes, pair, con, &e,
+                  inner ? TangentialForce::kRecordOnly : TangentialForce::kAdd);
     }
   }
 }

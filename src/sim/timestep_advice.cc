@@ -108,16 +108,12 @@ std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& ad
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
                                           const std::vector<TimestepAdvice>& advice) {
   std::vector<std::string> warnings;
-  // contacts integrated inside the step resolve the normal law's duration
-  // and dampers in their sub-steps; friction still acts at the step
+  // contacts integrated inside the step resolve the normal law's duration,
+  // the tangential friction's period and their dampers in their sub-steps
   const bool inner = sim.contacts().contact_steps().enabled();
   for (const TimestepAdvice& a : advice) {
     if (a.coarse && !inner) warnings.push_back(CoarseTimestepWarning(sim, a));
-    if (a.tangential_coarse) {
-      warnings.push_back(inner ? "--contact-steps integrates the normal law inside the step, not "
-                                 "friction: " + TangentialTimestepWarning(sim, a)
-                               : TangentialTimestepWarning(sim, a));
-    }
+    if (a.tangential_coarse && !inner) warnings.push_back(TangentialTimestepWarning(sim, a));
     if (a.resting_coarse && !inner) warnings.push_back(RestingTimestepWarning(sim, a));
     if (a.start_coarse && !inner) warnings.push_back(StartTimestepWarning(sim, a));
   }
