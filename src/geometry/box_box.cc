@@ -17,6 +17,7 @@ using geometry::Dot;
 using geometry::Scale;
 using geometry::Sub;
 using geometry::kAxisTieFraction;
+using geometry::kParallelFaceSine;
 using geometry::kParallelSine;
 
 // Axis i of the box (column i of its rotation), world frame.
@@ -79,6 +80,11 @@ Candidate SeparatingAxis(const OrientedBox& a, const OrientedBox& b) {
     }
   }
   const Candidate& face = face_b.separation > face_a.separation + tie ? face_b : face_a;
+  // the other box's face most nearly parallel to the reference face
+  const OrientedBox& other = face.feature == BoxFeature::kFaceOfA ? b : a;
+  double aligned = 0;
+  for (int k = 0; k < 3; ++k) aligned = std::max(aligned, std::fabs(Dot(face.normal, Axis(other, k))));
+  if (aligned * aligned >= 1 - kParallelFaceSine * kParallelFaceSine) return face;
   return edge.separation > face.separation + tie ? edge : face;
 }
 

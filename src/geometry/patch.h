@@ -37,6 +37,13 @@ inline double Norm(const Vector3& a) { return std::sqrt(Dot(a, a)); }
 // normalised, carries round-off amplified by 1/sine, and two nearly parallel
 // edges touch as a face contact's clipped edge does.
 constexpr double kParallelSine = 1e-3;
+// Two faces closer to parallel than this sine (0.1 rad, 5.7 degrees) touch
+// over a patch, and the face contact (the incident face clipped by the
+// reference face, each point at its own depth) is kept over any edge axis:
+// when a corner of one overhangs the other, an edge-pair axis overlaps less
+// than the face normal, and the least overlap alone would carry a resting
+// box on one point of that edge crossing.
+constexpr double kParallelFaceSine = 0.1;
 // An edge axis, or a face of the second body, replaces the best face of the
 // first only when it separates more by this fraction of the largest half
 // size: the axes that coincide (the faces of two aligned boxes, and the edge

@@ -193,6 +193,62 @@ TEST(BoxBoxTest, IssueExampleTiltedOneDegree) {
   EXPECT_NEAR(deepest, 1.73e-3, kTolerance);
 }
 
+// Box b of a's size turned by yaw degrees about z, then tilted by tilt rad
+// about a horizontal axis at angle heading, its centre over (x, y) and its
+// lowest corner overlap below a's top face.
+OrientedBox Landing(const OrientedBox& a, double yaw, double tilt, double heading, double overlap,
+                    double x, double y) {
+  const Matrix rotation = Multiply(Rotation({std::cos(heading), std::sin(heading), 0},
+                                            tilt * 180 / kPi),
+                                   Rotation({0, 0, 1}, yaw));
+  OrientedBox b{{x, y, 0}, rotation, a.half};
+  b.centre[2] = a.centre[2] + a.half[2] - overlap - Lowest(b)[2];
+  return b;
+}
+
+TEST(BoxBoxTest, ABoxLandingTurnedAndBarelyTiltedGivesAPatch) {
+  // box_stack's top box landing at a 2 ms step: turned 50 degrees, tilted
+  // 3e-3 rad, its lowest corner 0.18 mm down and overhanging. Along an edge
+  // pair's axis the boxes overlap less than along the face normal, and the
+  // least overlap alone carried the landing box on one point of that edge
+  // crossing; the faces touch over a patch: the lower box's top face clips
+  // the upper one's bottom face, each point at its own depth.
+  const OrientedBox a{{0, 0, 0}, kIdentity, kCube};
+  const OrientedBox b = Landing(a, 50.2889, 3.0861e-3, 0.3, 1.83184e-4, 3.58774e-3, -8.32184e-3);
+  const BoxBoxContact c = CollideBoxes(a, b, 0);
+  ExpectWellFormed(a, b, c);
+  EXPECT_NE(c.feature, BoxFeature::kEdgeEdge);  // either box's face
+  EXPECT_GE(c.count, 3);
+  EXPECT_GE(c.normal[2], std::cos(3.0861e-3) - 1e-12);  // a face normal, up or tilted
+}
+
+TEST(BoxBoxTest, NearlyParallelFacesNeverTouchOnAnEdgeCrossing) {
+  // 20,000 landings of equal boxes, turned anyhow, tilted 1e-3 to 0.3 rad,
+  // up to 0.5 mm deep, off centre by up to 3 cm: below 0.1 rad of tilt
+  // (kParallelFaceSine) the contact is a face's, and every contact is well
+  // formed (its points on both surfaces, within the overlap)
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  const OrientedBox a{{0, 0, 0}, kIdentity, kCube};
+  int patches = 0, edges = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double tilt = std::pow(10.0, -3 + 2.5 * u(random));
+    const OrientedBox b = Landing(a, 90 * u(random), tilt, 2 * kPi * u(random),
+                                  1e-5 + 5e-4 * u(random), 0.06 * (u(random) - 0.5),
+                                  0.06 * (u(random) - 0.5));
+    const BoxBoxContact c = CollideBoxes(a, b, 0);
+    ExpectWellFormed(a, b, c);
+    if (tilt < 0.0995) {
+      ASSERT_NE(c.feature, BoxFeature::kEdgeEdge) << k;
+      patches += c.count >= 3;
+    } else {
+      edges += c.feature == BoxFeature::kEdgeEdge;
+    }
+  }
+  EXPECT_GT(patches, 5000);  // most landings below 0.1 rad rest on a patch
+  EXPECT_GT(edges, 100);     // steeper, edge crossings remain what they are
+}
+
 TEST(BoxBoxTest, EdgeOnFaceGivesTheEdgeEndsAtFullDepth) {
   const double h = kCube[0];
   for (const double f : kOverlapFractions) {
