@@ -32,6 +32,8 @@ def read_profiles(path):
 def panel(ax, key, rows):
     value = [float(r["value"]) for r in rows]
     mean = [float(r["mean"]) for r in rows]
+    # fit --trim: the best and the span are of the trimmed mean, drawn beside the mean's band
+    trimmed = [float(r["trimmed_mean"]) for r in rows] if "trimmed_mean" in rows[0] else None
     lo = [float(r["mean_lo"]) for r in rows]
     hi = [float(r["mean_hi"]) for r in rows]
     log = rows[0]["scale"] == "log"
@@ -40,6 +42,9 @@ def panel(ax, key, rows):
     ax.axvspan(*span, color="tab:gray", alpha=0.2, label="span: scores the same as the best")
     ax.fill_between(value, lo, hi, color="tab:blue", alpha=0.2, label="mean, 95% interval")
     ax.plot(value, mean, color="tab:blue", lw=1)
+    if trimmed:
+        ax.plot(value, trimmed, color="tab:green", lw=1, label="trimmed mean (what the fit minimises)")
+        mean = trimmed
     for kind, style in (("no", dict(marker="o", mfc="white", mec="tab:blue", label="worse")),
                         ("yes", dict(marker="o", color="tab:blue", label="indistinguishable")),
                         ("best", dict(marker="*", color="tab:red", ms=12, label="best"))):

@@ -174,6 +174,7 @@ struct ProfilePoint {
   double value = 0;              // of the profiled parameter
   std::vector<double> values;    // every parameter's, re-fitted or held
   Summary score;                 // of the per-trajectory scores: mean with its interval
+  double objective = 0;          // what the fit minimises: score's mean, or at fit.trim the trimmed mean
   PairedDifference versus_best;  // per-trajectory score less the best point's
   bool fitted = false;           // the fitted value itself
   bool Indistinguishable() const { return !versus_best.Distinguishable(); }

@@ -261,12 +261,13 @@ int FitCommand(const FitArgs& args) {
     if (winner.friction) options.replay.simulation.overrides.friction = winner.friction;
     options.replay.should_stop = [] { return stop_signal.load(); };
     options.metric = metric;
+    options.trim = trim;
     options.parameters = winner.parameters;
     options.seed = seed;
     profile = ProfileWinner(winner, train, options, *profile_request,
                             args.quiet || !WritesOutputs());
     interrupted = profile.interrupted;
-    if (!interrupted) WriteProfile(winner, profile, &*profile_file);
+    if (!interrupted) WriteProfile(winner, profile, trim, &*profile_file);
   }
   if (!WritesOutputs()) return 0;  // rank 0 of the job writes and prints
   std::FILE* file = std::fopen((dir + "/best_tag.txt").c_str(), "w");

@@ -131,22 +131,32 @@ WinnerProfile ProfileWinner(const Fitted& winner, const Replay& replay, const Fi
   return out;
 }
 
-void WriteProfile(const Fitted& winner, const WinnerProfile& profile, CsvFile* file) {
-  file->Header({"key", "scale", "value", "fitted", "mean", "mean_lo", "mean_hi", "versus_best",
-                "versus_best_lo", "versus_best_hi", "indistinguishable", "span_lo", "span_hi",
-                "determined"});
+void WriteProfile(const Fitted& winner, const WinnerProfile& profile, double trim,
+                  CsvFile* file) {
+  std::vector<std::string> header = {"key", "scale", "value", "fitted", "mean", "mean_lo", "mean_hi"};
+  if (trim > 0) header.emplace_back("trimmed_mean");
+  for (const char* c : {"versus_best", "versus_best_lo", "versus_best_hi", "indistinguishable",
+                        "span_lo", "span_hi", "determined"}) {
+    header.emplace_back(c);
+  }
+  file->Header(header);
   for (const ParameterProfile& profile : profile.profiles) {
     const FitParameter& p = winner.parameters[profile.parameter];
     for (size_t k = 0; k < profile.points.size(); ++k) {
       const ProfilePoint& point = profile.points[k];
       const PairedDifference& d = point.versus_best;
-      file->Fields({p.key, p.log ? "log" : "linear", Field(point.value),
-                    point.fitted ? "yes" : "no", Field(point.score.value.mean),
-                    Field(point.score.mean.lo), Field(point.score.mean.hi), Field(d.mean),
-                    Field(d.interval.lo), Field(d.interval.hi),
-                    k == profile.best ? "best" : point.Indistinguishable() ? "yes" : "no",
-                    Field(profile.span_lo()), Field(profile.span_hi()),
-                    profile.determined ? "yes" : "no"});
+      std::vector<std::string> row = {p.key, p.log ? "log" : "linear", Field(point.value),
+                                      point.fitted ? "yes" : "no", Field(point.score.value.mean),
+                                      Field(point.score.mean.lo), Field(point.score.mean.hi)};
+      if (trim > 0) row.push_back(Field(point.objective));
+      for (std::string field :
+           {Field(d.mean), Field(d.interval.lo), Field(d.interval.hi),
+            std::string(k == profile.best ? "best" : point.Indistinguishable() ? "yes" : "no"),
+            Field(profile.span_lo()), Field(profile.span_hi()),
+            std::string(profile.determined ? "yes" : "no")}) {
+        row.push_back(std::move(field));
+      }
+      file->Fields(row);
     }
   }
 }

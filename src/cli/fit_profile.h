@@ -41,8 +41,9 @@ struct WinnerProfile {
 WinnerProfile ProfileWinner(const Fitted& winner, const Replay& replay, const FitOptions& options,
                             const ProfileRequest& request, bool quiet);
 
-// profile.csv: a row per point.
-void WriteProfile(const Fitted& winner, const WinnerProfile& profile, CsvFile* file);
+// profile.csv: a row per point (with trim > 0, the trimmed mean beside the mean).
+void WriteProfile(const Fitted& winner, const WinnerProfile& profile, double trim,
+                  CsvFile* file);
 
 // A line per profiled parameter: determined, or not, with its span.
 void PrintProfile(const Fitted& winner, const WinnerProfile& profile,

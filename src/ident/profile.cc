@@ -131,7 +131,8 @@ std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fi
         break;
       }
       point.score = Summarize(scores, options.seed, options.resamples);
-      objective.push_back(fit.trim > 0 ? TrimmedMean(scores, fit.trim) : point.score.value.mean);
+      point.objective = fit.trim > 0 ? TrimmedMean(scores, fit.trim) : point.score.value.mean;
+      objective.push_back(point.objective);
       profile.points.push_back(std::move(point));
       point_scores.push_back(scores);
     }
