@@ -8,7 +8,9 @@
 #      evaluation is A's point, so B cannot end worse than A; with FOLDS-fold cross-validation
 #      over the training tosses (--folds), whose held-out score chooses the winner;
 #   C. MuJoCo's own contact (mjcf/cube_toss_mujoco.xml: solref and friction), the peer, with
-#      REFINE_BUDGET evaluations (the most any of ours gets) and the same folds.
+#      REFINE_BUDGET evaluations (the most any of ours gets) and the same folds;
+#   D. the winner of B (the best cross-validated score) profiled through its fitted values
+#      (--profile all): what the training tosses determine and what they do not.
 # Each fit identifies the restitution, stiffness, friction coefficient and the board's offset,
 # and a law's own key (hunt-crossley-constant's dissipation); keys a law or model does not read
 # are not fitted. The board's offset is bounded by where the data rest (board.offset=rest: the
@@ -171,6 +173,29 @@ for ranking in "$out"/refine-*/ranking.csv; do
   read -r _ _ screened < <(train_score "$out/law-$law/ranking.csv" "$friction")
   echo "cube_toss: B. $law/$friction from stage A's point, $objective $screened, to $refined"
 done
+
+# "LAW FRICTION" of stage B's winner: the best cross-validated score (the column cv_ and the
+# objective's name after train_)
+winner() {
+  awk -F, -v objective="cv_${objective#train_}" '
+    FNR == 1 {for (i = 1; i <= NF; ++i) if ($i == objective) c = i; next}
+    {print $c, $1, $2}' "$out"/refine-*/ranking.csv | sort -g | head -n 1 | cut -d" " -f2-
+}
+
+# "KEY=VALUE,..." of the values of ranking.csv $1's row whose friction is $2
+fitted_values() {
+  awk -F, -v friction="$2" '
+    FNR == 1 {for (i = 1; i <= NF; ++i) {key[i] = $i; if ($i == "train_mean") last = i - 1}; next}
+    $2 == friction {
+      s = ""
+      for (i = 3; i <= last; ++i) if ($i != "") s = s (s == "" ? "" : ",") key[i] "=" $i
+      print s; exit
+    }' "$1"
+}
+
+read -r best_law best_friction < <(winner)
+echo "cube_toss: D. the profile of $best_law/$best_friction through its fitted values"
+echo "profile $scene --budget 1 --laws $best_law --frictions $best_friction --params $(law_params "$best_law") --initial $(fitted_values "$out/refine-$best_law-$best_friction/ranking.csv" "$best_friction") --profile all --profile-points 9" | fit_all
 
 echo "cube_toss: $(($(date +%s) - start)) s of fitting (budgets ${budget} and ${refine_budget}, ${parallel} fits x ${jobs} threads)"
 CUBE_TOSS_PARAMS="${shared},restitution=0.01:0.95,dissipation=0.01:10:log,${mujoco_params}" \

@@ -3,14 +3,16 @@
 
     scripts/cube_toss_report.py results/cube_toss docs
 
-Reads OUT/law-*/ (stage A), OUT/refine-*/ (stage B) and OUT/mujoco/ (stage C): each fit's
-ranking.csv, errors.csv and best_trajectories.csv, and OUT/validate.csv; writes
-DOCS/validation.md, DOCS/cube_toss_errors.png and DOCS/cube_toss_trajectory.png.
+Reads OUT/law-*/ (stage A), OUT/refine-*/ (stage B), OUT/mujoco/ (stage C) and OUT/profile/
+(stage D): each fit's ranking.csv, errors.csv and best_trajectories.csv, the profile's
+profile.csv, and OUT/validate.csv; writes DOCS/validation.md, DOCS/cube_toss_errors.png,
+DOCS/cube_toss_trajectory.png and DOCS/cube_toss_profile.png.
 """
 import csv
 import glob
 import math
 import os
+import subprocess
 import sys
 
 import matplotlib
@@ -20,7 +22,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 # Acosta, Yang & Posa (2022): mean e_q of each simulator tuned in-sample on all 550 tosses
 PUBLISHED = [("Drake", 0.270), ("Bullet", 0.272), ("MuJoCo", 0.371)]
-GOAL_MEDIAN = 0.045
 CUBE_MASS, GRAVITY, HALF_SIDE = 0.37, 9.81, 0.0524
 # a fitted value this close to a bound, as a share of its range (of log(hi/lo) on a log scale),
 # may be held there by the bound rather than found: a wider range tells which
@@ -136,6 +137,24 @@ def rest_height(measured, simulated):
     return median, len(gaps)
 
 
+def quaternion(row):
+    return [float(row[f"cube.q{c}"]) for c in "wxyz"]
+
+
+def turn(q1, q2):
+    """The angle of the rotation between unit quaternions q1 and q2, rad in [0, pi]."""
+    dot = abs(sum(a * b for a, b in zip(q1, q2)))
+    return 2 * math.acos(min(1.0, dot))
+
+
+def profiles(path):
+    """{key: [row, ...]} of profile.csv, in its order."""
+    out = {}
+    for row in read_csv(path):
+        out.setdefault(row["key"], []).append(row)
+    return out
+
+
 def parse_bounds(text):
     bounds = {}
     for item in text.split(","):
@@ -155,20 +174,29 @@ def main():
     # the winner: the best cross-validated mean over the training tosses where the fits have
     # folds (stage B), else the best training mean (the held-out set chooses nothing)
     folded = [r for r in ours if r[1].get("cv_mean")]
-    winner = min(folded or ours, key=lambda r: float(r[1]["cv_mean" if folded else "train_mean"]))
+    # what the fits minimise: the trimmed mean where they were given --trim
+    trimmed = bool(rows[0][1].get("train_trimmed_mean"))
+    objective = "trimmed_mean" if trimmed else "mean"
+    winner = min(folded or ours, key=lambda r: float(r[1][("cv_" if folded else "train_") + objective]))
     w = winner[1]
     keys = [k for k in w.keys() if k not in ("law", "friction") and not k.startswith(("train_",
             "validate_", "cv_", "versus_winner")) and k != "distinguishable" and k not in ("evaluations", "wall_seconds", "status")]
 
     # figure 1: the held-out error distribution per combination
-    table = sorted(rows, key=lambda r: float(r[1]["train_mean"]))
+    table = sorted(rows, key=lambda r: float(r[1]["train_" + objective]))
     # a row's label legible: about 0.15 inch a combination
     fig, ax = plt.subplots(figsize=(10, max(5.5, 1.5 + 0.15 * len(table))))
     data = [errors(folder, row, "validate") for _, row, folder in table]
     ax.boxplot(data, vert=False, whis=(5, 95), showmeans=True, flierprops={"markersize": 2})
+    # the held-out mean's 95% bootstrap interval, a red bar under each box
+    for k, (_, row, _) in enumerate(table):
+        lo, hi = value(row, "validate_mean_lo"), value(row, "validate_mean_hi")
+        if lo is not None and hi is not None:
+            ax.plot([lo, hi], [k + 1.3, k + 1.3], color="tab:red", lw=1.5)
     ax.set_yticks(range(1, len(table) + 1), [f"{label(r)} ({s})" for s, r, _ in table], fontsize=7)
     ax.set_xscale("log")
-    ax.set_xlabel("e_q per held-out toss (boxes: quartiles, whiskers 5-95 %, triangle: mean)")
+    ax.set_xlabel("e_q per held-out toss (boxes: quartiles, whiskers 5-95 %, triangle: mean, "
+                  "red: the mean's 95% bootstrap interval)")
     # each label on a line of its own above the first row, beside its score's line
     for k, (score, names) in enumerate(published_labels(PUBLISHED)):
         ax.axvline(score, ls=":", lw=1, color="grey")
@@ -189,7 +217,7 @@ def main():
                 if e["law"] == w["law"] and e["friction"] == w["friction"] and e["set"] == "validate"}
     ranked = sorted(per_toss, key=per_toss.get)
     toss = ranked[len(ranked) // 2]
-    fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+    fig, axes = plt.subplots(1, 4, figsize=(15, 3.6))
     for ax, q in zip(axes, ("x", "y", "z")):
         ax.plot([float(r["time"]) for r in measured[toss]], [float(r[f"cube.{q}"]) for r in measured[toss]],
                 ".", ms=3, label="measured (148 Hz)")
@@ -197,6 +225,18 @@ def main():
                 "-", lw=1.2, label=f"{label(w)}, fitted")
         ax.set_xlabel("time (s)")
         ax.set_ylabel(f"cube.{q} (m)")
+    # the cube's turn from its first measured orientation, measured and simulated
+    first = quaternion(measured[toss][0])
+    for rows_, style, name in ((measured[toss], ".", "measured"), (simulated[toss], "-", "simulated")):
+        axes[3].plot([float(r["time"]) for r in rows_],
+                     [math.degrees(turn(first, quaternion(r))) for r in rows_], style, ms=3, lw=1.2,
+                     label=name)
+    axes[3].set_xlabel("time (s)")
+    axes[3].set_ylabel("turn from the first sample (deg)")
+    last_z = float(measured[toss][-1]["cube.z"])
+    axes[2].axhline(last_z, ls=":", lw=0.8, color="grey")
+    axes[2].text(axes[2].get_xlim()[0], last_z, f" measured rest {last_z * 1e3:.1f} mm, simulated "
+                 f"{float(simulated[toss][-1]['cube.z']) * 1e3:.1f} mm", fontsize=7, va="bottom")
     axes[0].legend(fontsize=7)
     fig.suptitle(f"Held-out toss {toss} (the median e_q of the winner: {per_toss[toss]:.3g})")
     fig.tight_layout()
@@ -204,39 +244,74 @@ def main():
 
     # the page
     vmean, vmed = float(w["validate_mean"]), float(w["validate_median"])
+    score_words = ("the mean e_q of the best 80% of the tosses (`--trim 0.2`)" if trimmed
+                   else "the mean e_q")
     lines = [
         "# Validation on real cube tosses",
         "",
         "Made by `scripts/cube_toss.sh` (this page, its figures and every number on it; the "
         "fits' files are under `results/cube_toss/`). The data: 300 real tosses of a 0.37 kg cube "
         "onto a board, tracked at 148 Hz (`data/cube_tosses/`, Pfrommer, Halm & Posa 2020; "
-        "Acosta, Yang & Posa 2022, BSD-3). Tosses 0-199 train every fit; tosses 200-299 are "
-        "held out: no fit and no choice sees them, the winner is the best *training* score. "
-        "The score is the published e_q (docs/identification.md), the start state the published "
-        "refit (`--start refit`), every rollout at the published 10 steps per sample.",
+        "Acosta, Yang & Posa 2022, BSD-3). Tosses 0-199 train every fit and make every choice; "
+        "tosses 200-299 are scored once, at the end. The score is the published e_q "
+        "(docs/identification.md), the start state the published refit (`--start refit`), every "
+        "rollout at the published 10 steps per sample. Every interval is a 95% percentile "
+        "bootstrap over tosses (seeded).",
         "",
-        f"**Winner: {label(w)}**, held-out mean e_q **{vmean:.4g}**, median **{vmed:.4g}** "
-        f"(p90 {float(w['validate_p90']):.3g}); trained on tosses 0-199 to a mean of "
-        f"{float(w['train_mean']):.4g}.",
+        "**Held out, with a caveat.** Tosses 200-299 steered earlier rounds of this benchmark's "
+        "design (its ranges, its stages, where the board is), so they are not a clean held-out "
+        "set any more: their numbers below are an optimistic estimate. The choice of the law on "
+        "this page is made without them, by 5-fold cross-validation over tosses 0-199.",
         "",
+        f"**The score the fits minimise: {score_words}.** About 15% of the tosses end on another "
+        "face than measured and score about 1.7 each, some fifty times a typical toss: they make "
+        "most of the plain mean, and which tosses they are depends on chaotic tumbling more than "
+        "on the parameters. A fit of the plain mean spends its search on that lottery; the "
+        "trimmed mean follows the typical toss. The plain mean, the median and p90 are reported "
+        "beside it, as the published comparison needs.",
+        "",
+        "**The board where the data put it.** `board.offset=rest`: each fit may move the board "
+        "only within the 95% interval of the training tosses' median resting height less the "
+        "cube's half side, about 1.2 mm below the nominal plane (a free offset absorbed the "
+        "law's error: the fit before put it 9.9 mm down).",
+        "",
+        f"**Winner: {label(w)}** (chosen by its cross-validated {objective.replace('_', ' ')} "
+        f"over tosses 0-199: {interval(w, 'cv_' + objective)}).",
+        "",
+        "| on tosses | mean e_q | median e_q | trimmed mean e_q | position RMS, median (mm) | "
+        "angle RMS, median (deg) | another face |",
+        "|---|---|---|---|---|---|---|",
     ]
+    for name, prefix in (("0-199, fitted on (in-sample)", "train"),
+                         ("0-199, each scored by the fit of the folds without it", "cv"),
+                         ("200-299, held out (see the caveat)", "validate")):
+        if value(w, prefix + "_mean") is None:
+            continue
+        share = value(w, prefix + "_another_face")
+        lines.append(
+            f"| {name} | {interval(w, prefix + '_mean')} | {interval(w, prefix + '_median')} | "
+            f"{interval(w, prefix + '_trimmed_mean') if trimmed else '-'} | "
+            f"{interval(w, prefix + '_position_mm_median')} | "
+            f"{interval(w, prefix + '_angle_deg_median')} | "
+            + (f"{share * 100:.1f}% [{value(w, prefix + '_another_face_lo') * 100:.1f}, "
+               f"{value(w, prefix + '_another_face_hi') * 100:.1f}]" if share is not None else "-")
+            + " |")
+    lines.append("")
     if folded:
         same = [label(r[1]) for r in folded if r[1].get("distinguishable") == "no"]
         lines += [
-            f"Chosen by its cross-validated mean e_q over the training tosses (stage B's folds, "
-            f"95% bootstrap interval): {interval(w, 'cv_mean')}; combinations whose paired "
-            f"interval against it contains 0 (not told apart by the data): "
-            f"{', '.join(same) if same else 'none'}.",
+            f"Combinations whose paired interval against the winner (cross-validated, per toss) "
+            f"contains 0, so the data do not tell them apart: {', '.join(same) if same else 'none'}.",
             "",
         ]
     lines += [
         "| | mean e_q | median e_q | tosses | how |",
         "|---|---|---|---|---|",
-        f"| contactlaws, {label(w)} | {vmean:.4g} | {vmed:.4g} | 100 held out | fitted on 200 others |",
+        f"| contactlaws, {label(w)} | {interval(w, 'validate_mean')} | {interval(w, 'validate_median')} | 100 held out | fitted on 200 others |",
     ]
     for _, row, _ in peer:
-        lines.append(f"| MuJoCo's own contact, same command | {float(row['validate_mean']):.4g} | "
-                     f"{float(row['validate_median']):.4g} | 100 held out | fitted on 200 others |")
+        lines.append(f"| MuJoCo's own contact, same command | {interval(row, 'validate_mean')} | "
+                     f"{interval(row, 'validate_median')} | 100 held out | fitted on 200 others |")
     for name, score in PUBLISHED:
         lines.append(f"| {name} (Acosta et al. 2022) | {score} | - | 550 | tuned on the same 550 (in-sample) |")
     best_published = min(s for _, s in PUBLISHED)
@@ -245,26 +320,29 @@ def main():
         "",
         f"The winner's held-out mean is {verdict} the best published in-sample mean "
         f"({best_published}) by {abs(best_published - vmean):.3g} "
-        f"({abs(best_published - vmean) / best_published * 100:.0f}%); its median is "
-        f"{'below' if vmed < GOAL_MEDIAN else 'above'} {GOAL_MEDIAN}. A few tosses land on "
+        f"({abs(best_published - vmean) / best_published * 100:.0f}%), an interval of "
+        f"{interval(w, 'validate_mean')} over these 100 tosses. A few tosses land on "
         f"another face than measured in every simulator and score about 1.7 each: they make "
         f"the mean; the median says how well a typical toss is followed.",
         "",
         "## Every fit",
         "",
         "Stage A fits every law with every friction model, stage B fits the combinations that A "
-        "ranks best by their training score again with a larger budget, each starting from its "
-        "stage-A fit's values (`--initial`: B cannot end worse than A), stage C fits MuJoCo's "
-        "own contact (solref's time constant and damping ratio, friction) through the same "
-        "`contactlaws fit` with that larger budget. Rows are sorted by training mean. A '-' is "
-        "a key the law or model does not read.",
+        "ranks best by their training score again with a larger budget and 5-fold "
+        "cross-validation, each starting from its stage-A fit's values (`--initial`: B cannot "
+        "end worse than A), stage C fits MuJoCo's own contact (solref's time constant and "
+        "damping ratio, friction) through the same `contactlaws fit` with that larger budget and "
+        f"the same folds. Rows are sorted by training {objective.replace('_', ' ')}, the score "
+        "the fits minimise. A '-' is a key the law or model does not read.",
         "",
-        "| stage | law/friction | " + " | ".join(keys) + " | train mean [95%] | train median | "
+        "| stage | law/friction | " + " | ".join(keys) +
+        f" | train {objective.replace('_', ' ')} [95%] | train mean [95%] | train median | "
         "held-out mean | held-out median | held-out p90 | evaluations |",
-        "|---" * (len(keys) + 8) + "|",
+        "|---" * (len(keys) + 9) + "|",
     ]
     for stage, row, _ in table:
         lines.append(f"| {stage} | {label(row)} | " + " | ".join(fmt(value(row, k)) for k in keys) +
+                     f" | {interval(row, 'train_' + objective)}"
                      f" | {interval(row, 'train_mean')} | {fmt(value(row, 'train_median'))}"
                      f" | {fmt(value(row, 'validate_mean'))} | {fmt(value(row, 'validate_median'))}"
                      f" | {fmt(value(row, 'validate_p90'))} | {row['evaluations']} |")
@@ -276,6 +354,25 @@ def main():
         lines += ["", f"At its bound (within {EDGE:.0%} of its range, of log(hi/lo) for a log "
                   "range): the range should widen, a value outside it may score better."]
         lines += [f"- {e}" for e in edges]
+    profile_csv = os.path.join(out, "profile", "profile.csv")
+    if os.path.exists(profile_csv):
+        subprocess.run([sys.executable, os.path.join(os.path.dirname(__file__), "plot_profile.py"),
+                        profile_csv, os.path.join(docs, "cube_toss_profile.png")], check=True)
+        lines += ["", "## What the data determine", "",
+                  f"The winner's score along each parameter across its range, the others at their "
+                  f"fitted values (stage D, `fit --profile all`, 9 points and the fitted value, "
+                  f"on tosses 0-199). A value scores the same as the best when the paired 95% "
+                  f"bootstrap interval of its per-toss difference from the best contains 0; a "
+                  f"parameter whose such values span a decade (or half its range) is not "
+                  f"determined by these data:", ""]
+        for key, rows_ in profiles(profile_csv).items():
+            r = rows_[0]
+            lo, hi = float(r["span_lo"]), float(r["span_hi"])
+            best = next(float(x["value"]) for x in rows_ if x["indistinguishable"] == "best")
+            verdict = ("determined" if r["determined"] == "yes" else "**not determined**")
+            lines.append(f"- `{key}`: {verdict}: any value in [{lo:.3g}, {hi:.3g}] scores the same "
+                         f"as the best ({best:.3g})")
+        lines += ["", "![the profiles](cube_toss_profile.png)"]
     lines += ["", "## What the fitted values mean", ""]
     lines += [f"- {m}." for m in meaning(w)]
     rest = rest_height(measured, simulated)
