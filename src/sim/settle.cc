@@ -116,7 +116,7 @@ double Residual(const mjModel* m, const mjData* d, const std::vector<uint8_t>& m
   for (int j = 0; j < m->njnt; ++j) {
     if (!moving[j]) continue;
     if (directions.Held(m->jnt_bodyid[j])) {
-      residual = std::max(residual, directions.Residual(m, d, m->jnt_bodyid[j]));
+      residual = std::max(residual, directions.Residual(m, d, m->jnt_bodyid[j]).Max());
       continue;
     }
     for (int v = 0; v < DofSize(m->jnt_type[j]); ++v) {
@@ -225,6 +225,31 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
 
   // the normal equilibrium
   if (!relax(touching.directions)) {
+    // a body whose contacts carry its weight and not its turn tips: a domino
+    // stood on an edge; no relaxation ends that, and the refusal says so
+    int tipping = -1;
+    double turn = 0;
+    for (int b = 1; b < m->nbody; ++b) {
+      if (!touching.body[b] || !touching.directions.Held(b)) continue;
+      const SettleDirections::Acceleration a = touching.directions.Residual(m, d, b);
+      // its turn's acceleration at its reach (its geoms' bounding radius),
+      // against its translation's: a turn ten times faster tips it
+      double reach = 0;
+      for (int g = m->body_geomadr[b]; g >= 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
+        reach = std::max(reach, m->geom_rbound[g]);
+      }
+      if (a.angular > std::max(turn, kSettleResidual) && a.angular * reach > 10 * a.linear) {
+        tipping = b;
+        turn = a.angular;
+      }
+    }
+    if (tipping >= 0) {
+      throw Error(fmt::format(
+          "{}: --settle: body '{}' tips: its contacts carry its weight but not its turn (it "
+          "still turns at {:.3g} rad/s^2 after {} s of relaxation), so it has no resting pose "
+          "to start from; start it without --settle, or where it rests",
+          sim->source(), ObjectName(m, mjOBJ_BODY, tipping), turn, kSettleDuration));
+    }
     throw Error(fmt::format(
         "{}: --settle: no equilibrium along the contacts' normals: the bodies in contact still "
         "accelerate at {:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m)",

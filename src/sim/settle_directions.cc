@@ -93,7 +93,8 @@ void SettleDirections::Project(const mjModel* m, mjData* d) const {
   }
 }
 
-double SettleDirections::Residual(const mjModel* m, const mjData* d, int b) const {
+SettleDirections::Acceleration SettleDirections::Residual(const mjModel* m, const mjData* d,
+                                                          int b) const {
   const Body* body = Find(b);
   const mjtNum* a = d->qacc + m->jnt_dofadr[body->joint];
   mjtNum linear[3], angular[3];
@@ -101,9 +102,10 @@ double SettleDirections::Residual(const mjModel* m, const mjData* d, int b) cons
   Translate(*body, linear);
   mju_rotVecQuat(angular, a + 3, d->qpos + m->jnt_qposadr[body->joint] + 3);
   if (body->rank == 1) mju_addToScl3(angular, body->basis[0], -mju_dot3(angular, body->basis[0]));
-  double residual = 0;
+  Acceleration residual;
   for (int i = 0; i < 3; ++i) {
-    residual = std::max({residual, std::abs(linear[i]), std::abs(angular[i])});
+    residual.linear = std::max(residual.linear, std::abs(linear[i]));
+    residual.angular = std::max(residual.angular, std::abs(angular[i]));
   }
   return residual;
 }

@@ -37,9 +37,13 @@ class SettleDirections {
   // qvel of its free joint.
   void Project(const mjModel* m, mjData* d) const;
 
-  // The largest |qacc| of body b's free joint in its directions (m/s^2 and
-  // rad/s^2), after mj_forward.
-  double Residual(const mjModel* m, const mjData* d, int b) const;
+  // The largest |qacc| of body b's free joint in its directions, after
+  // mj_forward: of its translation (m/s^2) and of its turn (rad/s^2).
+  struct Acceleration {
+    double linear = 0, angular = 0;
+    double Max() const { return linear > angular ? linear : angular; }
+  };
+  Acceleration Residual(const mjModel* m, const mjData* d, int b) const;
 
   // The load of a free body b (world, N): gravity on its subtree, the
   // actuator and applied forces on its free joint's translation.

@@ -193,6 +193,41 @@ TEST_F(SettleTest, ABodyNoContactCarriesIsRefusedNamingIt) {
   }
 }
 
+// A domino stood on an edge, tilted 12 degrees, its lowest edge 8 um into
+// the floor: its contacts carry its weight, not its turn (its centre is
+// beside the edge), so no resting pose exists and it tips. Refused in one
+// line that says so, naming it; the same domino upright settles.
+TEST_F(SettleTest, ABodyThatTipsIsRefusedSayingSo) {
+  const std::string xml = R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="domino" pos="0 0 0.03995" euler="0 TILT 0"><freejoint/>
+      <geom name="domino" type="box" size="0.004 0.012 0.04" mass="0.05"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:floor" data="geom1=floor geom2=domino law=hunt-crossley
+    restitution=0.3 stiffness=1e7 friction=coulomb mu=0.5"/></custom>
+</mujoco>)";
+  SimulationOptions options;
+  options.settle = true;
+  auto with_tilt = [&](const char* tilt) {
+    std::string scene = xml;
+    scene.replace(scene.find("TILT"), 4, tilt);
+    return scene;
+  };
+  try {
+    MakeSimulation(with_tilt("12"), options);
+    ADD_FAILURE() << "settled a domino on its edge";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    std::printf("%s\n", what.c_str());
+    EXPECT_NE(what.find("--settle: body 'domino' tips"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  Simulation& upright = MakeSimulation(with_tilt("0"), options);
+  EXPECT_EQ(upright.settled()->bodies, 1);
+}
+
 // A 10 kg plate (1 x 1 x 0.1 m) on a floor with 25 balls (0.5 kg, r 5 cm)
 // resting on it, all placed touching, frictionless so that only the laws'
 // dampers act. Settled, every contact starts at the law's floor of v0
