@@ -139,17 +139,16 @@ train_score() {
     friction == "" || $2 == friction {print $1, $2, $c; exit}' "$1"
 }
 
-# "KEY=VALUE,..." of the values stage A fitted for law $1 with friction $2: its row of
-# $out/law-$1/ranking.csv (law,friction, the --params keys, train_mean,...), the keys the law
-# reads (the others' fields are empty).
-stage_a_values() {
+# "KEY=VALUE,..." of the values of ranking.csv $1's row whose friction is $2 (law,friction,
+# the --params keys, train_mean,...): the keys the law reads (the others' fields are empty).
+fitted_values() {
   awk -F, -v friction="$2" '
     FNR == 1 {for (i = 1; i <= NF; ++i) {key[i] = $i; if ($i == "train_mean") last = i - 1}; next}
     $2 == friction {
       s = ""
       for (i = 3; i <= last; ++i) if ($i != "") s = s (s == "" ? "" : ",") key[i] "=" $i
       print s; exit
-    }' "$out/law-$1/ranking.csv"
+    }' "$1"
 }
 
 start=$(date +%s)
@@ -162,7 +161,7 @@ done | fit_all
 echo "cube_toss: B. the ${refine} best of A again; C. MuJoCo's own contact (budget ${refine_budget})"
 {
   best_combinations | while read -r law friction; do
-    echo "refine-$law-$friction $scene --budget $refine_budget --folds $folds --laws $law --frictions $friction --params $(law_params "$law") --initial $(stage_a_values "$law" "$friction")"
+    echo "refine-$law-$friction $scene --budget $refine_budget --folds $folds --laws $law --frictions $friction --params $(law_params "$law") --initial $(fitted_values "$out/law-$law/ranking.csv" "$friction")"
   done
   echo "mujoco mjcf/cube_toss_mujoco.xml --budget $refine_budget --folds $folds --params $mujoco_params"
 } | fit_all
@@ -180,17 +179,6 @@ winner() {
   awk -F, -v objective="cv_${objective#train_}" '
     FNR == 1 {for (i = 1; i <= NF; ++i) if ($i == objective) c = i; next}
     {print $c, $1, $2}' "$out"/refine-*/ranking.csv | sort -g | head -n 1 | cut -d" " -f2-
-}
-
-# "KEY=VALUE,..." of the values of ranking.csv $1's row whose friction is $2
-fitted_values() {
-  awk -F, -v friction="$2" '
-    FNR == 1 {for (i = 1; i <= NF; ++i) {key[i] = $i; if ($i == "train_mean") last = i - 1}; next}
-    $2 == friction {
-      s = ""
-      for (i = 3; i <= last; ++i) if ($i != "") s = s (s == "" ? "" : ",") key[i] "=" $i
-      print s; exit
-    }' "$1"
 }
 
 read -r best_law best_friction < <(winner)
