@@ -61,6 +61,17 @@ MeasuredData ReadMeasuredData(const std::string& path);
 // The same from text in memory; source names it in messages.
 MeasuredData ParseMeasuredData(std::string_view text, const std::string& source);
 
+// The same from a table's columns (Python's DataFrame): per sample its
+// trajectory's name and its time (s), and the measured columns' names with
+// their values (values[c][k]: column c at sample k), checked as a file is;
+// a sample is named in messages "SOURCE row K" (K from 0). Also throws
+// Error for columns of other lengths than the samples'.
+MeasuredData MeasuredFromColumns(const std::vector<std::string>& trajectory,
+                                 const std::vector<double>& time,
+                                 const std::vector<std::string>& columns,
+                                 const std::vector<std::vector<double>>& values,
+                                 const std::string& source);
+
 }  // namespace contactlaws
 
 #endif  // CONTACTLAWS_MEASURED_H_

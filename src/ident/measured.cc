@@ -39,10 +39,17 @@ std::vector<std::string_view> Fields(std::string_view line) {
 
 class Reader {
  public:
-  explicit Reader(const std::string& source) : source_(source) {}
+  // rows: "SOURCE:LINE" of a file, else "SOURCE row K" (a table's, from 0)
+  Reader(const std::string& source, bool lines) : source_(source), lines_(lines) {}
 
   [[noreturn]] void Fail(int row, std::string_view what) const {
-    throw Error(fmt::format("{}:{}: {}", source_, row, what));
+    throw Error(fmt::format(lines_ ? "{}:{}: {}" : "{} row {}: {}", source_, row, what));
+  }
+
+  // The header's (a file's line 1, a table's column names).
+  [[noreturn]] void FailHeader(std::string_view what) const {
+    if (lines_) Fail(1, what);
+    throw Error(fmt::format("{}: {}", source_, what));
   }
 
   void Header(std::string_view line, MeasuredData* data) const {
@@ -52,28 +59,32 @@ class Reader {
                           "measured column, not '{}'",
                           line.substr(0, 80)));
     }
-    for (size_t c = 2; c < fields.size(); ++c) {
-      const std::string_view name = fields[c];
+    Columns(std::vector<std::string_view>(fields.begin() + 2, fields.end()), data);
+  }
+
+  // The measured columns' names (after trajectory,time), checked into data.
+  void Columns(const std::vector<std::string_view>& names, MeasuredData* data) const {
+    for (size_t k = 0; k < names.size(); ++k) {
+      const size_t c = k + 2;
+      const std::string_view name = names[k];
       const size_t dot = name.rfind('.');
       if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) {
-        Fail(1, fmt::format("column {} '{}' is not of the form <body>.<quantity> or "
+        FailHeader(fmt::format("column {} '{}' is not of the form <body>.<quantity> or "
                             "<joint>.<quantity>",
                             c + 1, name));
       }
-      if (data->Column(name) >= 0) Fail(1, fmt::format("column '{}' is given twice", name));
+      if (data->Column(name) >= 0) FailHeader(fmt::format("column '{}' is given twice", name));
       data->columns.emplace_back(name);
     }
   }
 
-  // One sample into data; row is the file's line.
+  // One sample of a file into data; row is the file's line.
   void Sample(int row, std::string_view line, MeasuredData* data) {
     const std::vector<std::string_view> fields = Fields(line);
     const size_t width = data->columns.size() + 2;
     if (fields.size() != width) {
       Fail(row, fmt::format("{} fields where the header has {}", fields.size(), width));
     }
-    const std::string_view name = fields[0];
-    if (name.empty()) Fail(row, "column trajectory: empty value");
     auto value = [&](size_t f, std::string_view column) {
       const std::optional<double> v = ParseNumber(fields[f]);
       if (!v) {
@@ -81,6 +92,15 @@ class Reader {
       }
       return *v;
     };
+    Sample(row, fields[0], value, fields[1], data);
+  }
+
+  // One sample into data: its trajectory's name, value(f, column) of field f
+  // (1: time, 2..: the columns), time's text for messages.
+  template <typename Value>
+  void Sample(int row, std::string_view name, const Value& value, std::string_view time_text,
+              MeasuredData* data) {
+    if (name.empty()) Fail(row, "column trajectory: empty value");
     if (data->trajectories.empty() || data->trajectories.back().name != name) {
       if (!seen_.emplace(std::string(name), row).second) {
         Fail(row, fmt::format("column trajectory: '{}' continues after other trajectories (its "
@@ -98,7 +118,7 @@ class Reader {
     if (!t.time.empty() && !(time > t.time.back())) {
       Fail(row, fmt::format("column time: value {} does not increase within trajectory '{}' "
                             "(previous sample: {})",
-                            fields[1], t.name, t.time.back()));
+                            time_text, t.name, t.time.back()));
     }
     t.time.push_back(time);
     for (size_t c = 0; c < data->columns.size(); ++c) {
@@ -145,6 +165,7 @@ class Reader {
 
  private:
   const std::string& source_;
+  bool lines_;
   std::unordered_map<std::string, int> seen_;  // trajectory -> its first line
 };
 
@@ -153,7 +174,7 @@ class Reader {
 MeasuredData ParseMeasuredData(std::string_view text, const std::string& source) {
   MeasuredData data;
   data.source = source;
-  Reader reader(source);
+  Reader reader(source, true);
   int row = 0;
   size_t start = 0;
   while (start < text.size()) {
@@ -170,6 +191,49 @@ MeasuredData ParseMeasuredData(std::string_view text, const std::string& source)
   }
   if (row == 0) throw Error(fmt::format("{}: the file is empty (a header and samples expected)", source));
   if (data.trajectories.empty()) throw Error(fmt::format("{}: no sample after the header", source));
+  reader.Finish(&data);
+  reader.CheckQuaternions(data);
+  return data;
+}
+
+MeasuredData MeasuredFromColumns(const std::vector<std::string>& trajectory,
+                                 const std::vector<double>& time,
+                                 const std::vector<std::string>& columns,
+                                 const std::vector<std::vector<double>>& values,
+                                 const std::string& source) {
+  MeasuredData data;
+  data.source = source;
+  Reader reader(source, false);
+  if (columns.size() != values.size()) {
+    throw Error(fmt::format("{}: {} column names for {} columns of values", source,
+                            columns.size(), values.size()));
+  }
+  if (columns.empty()) {
+    throw Error(fmt::format("{}: no measured column beside trajectory and time", source));
+  }
+  const size_t rows = trajectory.size();
+  if (time.size() != rows) {
+    throw Error(fmt::format("{}: {} times for {} samples", source, time.size(), rows));
+  }
+  for (size_t c = 0; c < columns.size(); ++c) {
+    if (values[c].size() != rows) {
+      throw Error(fmt::format("{}: column {}: {} values for {} samples", source, columns[c],
+                              values[c].size(), rows));
+    }
+  }
+  reader.Columns(std::vector<std::string_view>(columns.begin(), columns.end()), &data);
+  if (rows == 0) throw Error(fmt::format("{}: no sample", source));
+  for (size_t k = 0; k < rows; ++k) {
+    const int row = static_cast<int>(k);
+    auto value = [&](size_t f, std::string_view column) {
+      const double v = f == 1 ? time[k] : values[f - 2][k];
+      if (!std::isfinite(v)) {
+        reader.Fail(row, fmt::format("column {}: value {} is not a finite number", column, v));
+      }
+      return v;
+    };
+    reader.Sample(row, trajectory[k], value, fmt::format("{}", time[k]), &data);
+  }
   reader.Finish(&data);
   reader.CheckQuaternions(data);
   return data;
