@@ -14,10 +14,10 @@ namespace {
 using geometry::Add;
 using geometry::Cross;
 using geometry::Dot;
+using geometry::NearlyParallelFaces;
 using geometry::Scale;
 using geometry::Sub;
 using geometry::kAxisTieFraction;
-using geometry::kParallelFaceSine;
 using geometry::kParallelSine;
 
 // Axis i of the box (column i of its rotation), world frame.
@@ -84,7 +84,7 @@ Candidate SeparatingAxis(const OrientedBox& a, const OrientedBox& b) {
   const OrientedBox& other = face.feature == BoxFeature::kFaceOfA ? b : a;
   double aligned = 0;
   for (int k = 0; k < 3; ++k) aligned = std::max(aligned, std::fabs(Dot(face.normal, Axis(other, k))));
-  if (aligned * aligned >= 1 - kParallelFaceSine * kParallelFaceSine) return face;
+  if (NearlyParallelFaces(aligned)) return face;
   return edge.separation > face.separation + tie ? edge : face;
 }
 

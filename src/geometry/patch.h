@@ -44,6 +44,12 @@ constexpr double kParallelSine = 1e-3;
 // than the face normal, and the least overlap alone would carry a resting
 // box on one point of that edge crossing.
 constexpr double kParallelFaceSine = 0.1;
+// Whether a reference face and an incident face, the cosine between the
+// one's outward normal and the other's inward one, are within
+// kParallelFaceSine of parallel: then their contact is the face contact.
+inline bool NearlyParallelFaces(double cosine) {
+  return cosine > 0 && cosine * cosine >= 1 - kParallelFaceSine * kParallelFaceSine;
+}
 // An edge axis, or a face of the second body, replaces the best face of the
 // first only when it separates more by this fraction of the largest half
 // size: the axes that coincide (the faces of two aligned boxes, and the edge

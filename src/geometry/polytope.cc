@@ -16,6 +16,7 @@ using geometry::Add;
 using geometry::Cross;
 using geometry::Dot;
 using geometry::Hull;
+using geometry::NearlyParallelFaces;
 using geometry::Norm;
 using geometry::Scale;
 using geometry::Sub;
@@ -31,7 +32,9 @@ struct Candidate {
 };
 
 // The axis of least overlap: a face of a, else a face of b, else an edge
-// pair, each only when clearly better than the one before.
+// pair, each only when clearly better than the one before; the face's axis
+// whatever an edge pair's says when the incident face is nearly parallel to
+// it (patch.h, kParallelFaceSine).
 Candidate SeparatingAxis(const Hull& a, const Hull& b) {
   const double tie = kAxisTieFraction * std::max(a.max_half, b.max_half);
   Candidate face_a, face_b, edge;
@@ -63,6 +66,15 @@ Candidate SeparatingAxis(const Hull& a, const Hull& b) {
     }
   }
   const Candidate& face = face_b.separation > face_a.separation + tie ? face_b : face_a;
+  // the other polytope's face most opposed to the reference face (the
+  // incident face); face.normal is a's outward normal or b's inward one
+  const Hull& other = face.feature == PolytopeFeature::kFaceOfA ? b : a;
+  const double sign = face.feature == PolytopeFeature::kFaceOfA ? -1 : 1;
+  double opposed = -1;
+  for (int g = 0; g < other.face_count; ++g) {
+    opposed = std::max(opposed, sign * Dot(face.normal, other.faces[g].normal));
+  }
+  if (NearlyParallelFaces(opposed)) return face;
   return edge.separation > face.separation + tie ? edge : face;
 }
 

@@ -198,10 +198,7 @@ TEST(BoxBoxTest, IssueExampleTiltedOneDegree) {
 // lowest corner overlap below a's top face.
 OrientedBox Landing(const OrientedBox& a, double yaw, double tilt, double heading, double overlap,
                     double x, double y) {
-  const Matrix rotation = Multiply(Rotation({std::cos(heading), std::sin(heading), 0},
-                                            tilt * 180 / kPi),
-                                   Rotation({0, 0, 1}, yaw));
-  OrientedBox b{{x, y, 0}, rotation, a.half};
+  OrientedBox b{{x, y, 0}, LandingAttitude(yaw, tilt, heading), a.half};
   b.centre[2] = a.centre[2] + a.half[2] - overlap - Lowest(b)[2];
   return b;
 }

@@ -1,8 +1,8 @@
 // Copyright contactlaws authors.
 //
 // Boxes placed in known contact, for the geometry tests (box_box_test,
-// polytope_test): rotations, a box's lowest point, a box put on another with
-// a given overlap.
+// polytope_test): rotations, a landing body's attitude, a box's lowest
+// point, a box put on another with a given overlap.
 
 #ifndef CONTACTLAWS_TESTS_GEOMETRY_BOX_SCENES_H_
 #define CONTACTLAWS_TESTS_GEOMETRY_BOX_SCENES_H_
@@ -64,6 +64,13 @@ inline Vector3 Lowest(const OrientedBox& box) {
     local[i] = std::fabs(down[i]) < 1e-12 ? 0.0 : std::copysign(box.half[i], down[i]);
   }
   return Add(box.centre, Apply(box.rotation, local));
+}
+
+// A landing body's attitude: turned by yaw degrees about z, then tilted by
+// tilt rad about the horizontal axis at heading rad from x.
+inline Matrix LandingAttitude(double yaw, double tilt, double heading) {
+  return Multiply(Rotation({std::cos(heading), std::sin(heading), 0}, tilt * 180 / kPi),
+                  Rotation({0, 0, 1}, yaw));
 }
 
 // Box b above a: b's lowest point `overlap` below a's top face, at (x, y).
