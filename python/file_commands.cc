@@ -72,9 +72,33 @@ cli::SweepArgs SweepArgsOf(const std::string& scene, const py::dict& kwargs) {
   return args;
 }
 
+// data: a path, or a table's columns as the Python side hands them over:
+// {"source": str, "trajectory": [str], "time": float64 array, "columns":
+// [str], "values": [float64 array]} (contactlaws._measured_columns).
+void TakeData(const py::dict& kwargs, cli::ReplayArgs* args) {
+  if (!kwargs.contains("data") || !py::isinstance<py::dict>(kwargs["data"])) {
+    Take(kwargs, "data", &args->data);
+    return;
+  }
+  const py::dict table = kwargs["data"].cast<py::dict>();
+  const auto doubles = [](const py::handle& h) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(h);
+    if (!a || a.ndim() != 1) throw py::type_error("data: a column is not a 1-D array of numbers");
+    return std::vector<double>(a.data(), a.data() + a.size());
+  };
+  std::vector<std::vector<double>> values;
+  for (const py::handle column : table["values"]) values.push_back(doubles(column));
+  const std::string source = table["source"].cast<std::string>();
+  args->data = source;
+  args->measured = MeasuredFromColumns(table["trajectory"].cast<std::vector<std::string>>(),
+                                       doubles(table["time"]),
+                                       table["columns"].cast<std::vector<std::string>>(), values,
+                                       source);
+}
+
 void TakeReplay(const std::string& scene, const py::dict& kwargs, cli::ReplayArgs* args) {
   args->scene = scene;
-  Take(kwargs, "data", &args->data);
+  TakeData(kwargs, args);
   Take(kwargs, "start", &args->start);
   Take(kwargs, "refit_height", &args->refit_height);
   Take(kwargs, "refit_lead", &args->refit_lead);

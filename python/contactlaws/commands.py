@@ -113,10 +113,32 @@ def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, 
     return table
 
 
+def _data(data):
+    """A path as text, or a DataFrame in the measured format (docs/identification.md:
+    trajectory, time, then <body>.<quantity> columns, a row per sample) as its columns,
+    numbers as float64 arrays: read and checked by the library as a file is, no file written."""
+    if not isinstance(data, _pd.DataFrame):
+        return str(data)
+    names = [str(c) for c in data.columns]
+    if names[:2] != ["trajectory", "time"]:
+        raise ValueError(f"data: a DataFrame's first columns must be trajectory, time, then "
+                         f"<body>.<quantity> columns, not {', '.join(names[:3])}")
+
+    def numbers(column):
+        try:
+            return data[column].to_numpy(dtype="float64")
+        except (TypeError, ValueError) as e:
+            raise ValueError(f"data: column {column}: not numbers ({e})") from None
+
+    return {"source": "the DataFrame data", "trajectory": [str(t) for t in data["trajectory"]],
+            "time": numbers("time"), "columns": names[2:],
+            "values": [numbers(c) for c in data.columns[2:]]}
+
+
 def _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric, weights,
                     length, timestep, max_timestep, accuracy, integrator, law, restitution,
                     dissipation, friction, mu, set, jobs):
-    return dict(data=str(data), start=start, refit_height=refit_height, refit_lead=refit_lead,
+    return dict(data=_data(data), start=start, refit_height=refit_height, refit_lead=refit_lead,
                 refit_min_samples=refit_min_samples, metric=metric, weights=_text_list(weights),
                 length=length, timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
                 integrator=integrator, law=law, restitution=restitution,
@@ -143,8 +165,9 @@ def replay(scene, data, *, start="first", refit_height=None, refit_lead=3, refit
     """Measured trajectories simulated from their start and scored, as
     `contactlaws replay` (docs/identification.md).
 
-    data: the measured CSV (time s, positions m, quaternions, velocities m/s,
-    rad/s). start: "first" or "refit" (refit_height m, refit_lead and
+    data: the measured CSV's path, or a DataFrame of the same columns
+    (trajectory, time s, positions m, quaternions, velocities m/s, rad/s),
+    checked as the file would be and never written. start: "first" or "refit" (refit_height m, refit_lead and
     refit_min_samples samples). metric: "e_q", "position_rms" (m),
     "angle_rms" (rad) or "weighted" (weights "P,A[,J]"); length: e_q's L, m.
     timestep: s or "auto"; law, restitution, dissipation (s/m), friction, mu:

@@ -97,6 +97,25 @@ def test_replay_gives_the_command_lines_files(tmp_path, measured):
     assert len(result.scores) == 2
 
 
+def test_replay_takes_a_dataframe_as_the_file(tmp_path, measured):
+    # the measured CSV read into a DataFrame: the same scores to the bit as the
+    # command line on the file, the data never written
+    frame = pd.read_csv(measured, float_precision="round_trip")
+    cli("replay", BALL, "--data", str(measured), "--law=flores", "--restitution=0.5",
+        "--timestep=1e-4", "--quiet", "--output", str(tmp_path))
+    result = contactlaws.replay(BALL, frame, law="flores", restitution=0.5, timestep=1e-4)
+    assert_same(result.scores, tmp_path / "replay.csv")
+    assert_same(result.trajectories, tmp_path / "trajectories.csv")
+    # refused as the file would be, the table's row named (from 0)
+    backwards = frame.copy()
+    backwards.loc[1, "time"] = backwards.loc[0, "time"]
+    with pytest.raises(contactlaws.Error, match=r"the DataFrame data row 1: column time: value "
+                                                r".* does not increase within trajectory"):
+        contactlaws.replay(BALL, backwards, law="flores", timestep=1e-4)
+    with pytest.raises(ValueError, match="first columns must be trajectory, time"):
+        contactlaws.replay(BALL, frame.drop(columns="trajectory"), timestep=1e-4)
+
+
 def test_fit_gives_the_command_lines_files(tmp_path, measured):
     flags = ["--params=restitution=0.3:0.9", "--law=flores", "--timestep=1e-4", "--budget=6"]
     cli("fit", BALL, "--data", str(measured), *flags, "--quiet", "--output", str(tmp_path))

@@ -63,7 +63,7 @@ std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& op
 int FitCommand(const FitArgs& args) {
   // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
   const Scene scene(args.scene, LoadSizedModel(args.scene, Overrides{}));
-  const MeasuredData train_data = ReadData("--data", args.data);
+  const MeasuredData train_data = DataOf(args);
   const Replay train(scene, train_data);
   std::optional<MeasuredData> validate_data;
   if (args.validate) validate_data = ReadData("--validate", *args.validate);

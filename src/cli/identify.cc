@@ -88,6 +88,10 @@ uint64_t ParseSeed(const std::string& text) {
   return static_cast<uint64_t>(*seed);
 }
 
+MeasuredData DataOf(const ReplayArgs& args) {
+  return args.measured ? *args.measured : ReadData("--data", args.data);
+}
+
 MeasuredData ReadData(const std::string& option, const std::string& path) {
   if (path.empty()) Refuse(option, path, "must name a trajectory file");
   return ReadMeasuredData(path);

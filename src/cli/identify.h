@@ -19,6 +19,8 @@ namespace contactlaws::cli {
 // replay's options; fit takes them all.
 struct ReplayArgs : CommonArgs {
   std::string data;                    // the measured trajectories
+  // in place of data's file: trajectories already read (Python's DataFrame)
+  std::optional<MeasuredData> measured;
   std::optional<std::string> output;   // DIR
   std::string start = "first";         // first or refit
   std::optional<std::string> refit_height;
@@ -62,6 +64,9 @@ ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Met
 
 // The measured data of path, bound to scene by Replay's constructor.
 MeasuredData ReadData(const std::string& option, const std::string& path);
+
+// args.measured, else ReadData("--data", args.data).
+MeasuredData DataOf(const ReplayArgs& args);
 
 // replay.csv's columns and one trajectory's fields.
 std::vector<std::string> ReplayColumns();

@@ -32,7 +32,7 @@ std::string SettledText(const std::vector<ReplayedTrajectory>& replayed) {
 int ReplayCommand(const ReplayArgs& args) {
   // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
   const Scene scene(args.scene, LoadSizedModel(args.scene, Overrides{}));
-  const MeasuredData data = ReadData("--data", args.data);
+  const MeasuredData data = DataOf(args);
   const Replay replay(scene, data);
   Metric metric = Metric::kEq;
   ReplayOptions options = ParseReplayOptions(args, scene, &metric);
