@@ -12,6 +12,7 @@ import csv
 import glob
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -145,6 +146,18 @@ def turn(q1, q2):
     """The angle of the rotation between unit quaternions q1 and q2, rad in [0, pi]."""
     dot = abs(sum(a * b for a, b in zip(q1, q2)))
     return 2 * math.acos(min(1.0, dot))
+
+
+def rest_interval(log):
+    """[lo, hi] mm of the board's offset that the fit's log gives (board.offset=rest), or None."""
+    if not os.path.exists(log):
+        return None
+    with open(log) as f:
+        for line in f:
+            m = re.search(r"board\.offset -?[\d.]+ mm \[(-?[\d.]+), (-?[\d.]+)\]", line)
+            if m:
+                return float(m.group(1)), float(m.group(2))
+    return None
 
 
 def profiles(path):
@@ -375,6 +388,16 @@ def main():
         lines += ["", "![the profiles](cube_toss_profile.png)"]
     lines += ["", "## What the fitted values mean", ""]
     lines += [f"- {m}." for m in meaning(w)]
+    interval_mm = rest_interval(winner[2] + ".log")
+    offset = value(w, "board.offset")
+    if interval_mm and offset is not None:
+        lo, hi = interval_mm
+        at = (" at its lower bound: the fit moved the board down as far as the data let it"
+              if offset * 1e3 <= lo + 1e-3 else
+              " at its upper bound: the fit moved the board up as far as the data let it"
+              if offset * 1e3 >= hi - 1e-3 else " inside it")
+        lines.append(f"- The board at {offset * 1e3:.3f} mm: the data's interval for it is "
+                     f"[{lo:.3f}, {hi:.3f}] mm{at}.")
     rest = rest_height(measured, simulated)
     if rest:
         gap, tosses = rest
