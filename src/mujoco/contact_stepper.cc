@@ -787,14 +787,15 @@ void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_fo
         f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       }
     }
-    // (A f), A symmetric, over the rows with a force
-    pushed_.assign(rows, 0.0);
+    // (A f), A symmetric, over the rows with a force, summed in acc[s]
+    double* pushed = acc[s];
+    for (int i = 0; i < rows; ++i) pushed[i] = 0;
     for (int j = 0; j < rows; ++j) {
       if (f[s][j] == 0) continue;
       const double* a = a_.data() + static_cast<size_t>(j) * rows;
-      for (int i = 0; i < rows; ++i) pushed_[i] += a[i] * f[s][j];
+      for (int i = 0; i < rows; ++i) pushed[i] += a[i] * f[s][j];
     }
-    for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed_[i];
+    for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed[i];
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose

@@ -167,7 +167,6 @@ class ContactStepper {
   std::vector<double> gain_, cap_, still_gain_, still_cap_, rhs_, solution_;
   std::vector<char> solved_;
   std::vector<int> envelope_;      // per row of ImplicitRows' matrix: its first nonzero
-  std::vector<double> pushed_;     // Rk4SubStep's A f
   std::vector<char> acting_;       // per point: in contact at the sub-step's start
   std::vector<char> resting_;      // per point: at rest (kRestingFraction)
   std::vector<double> x_start_;    // per row: x at the sub-step's start
