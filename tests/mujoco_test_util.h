@@ -7,6 +7,8 @@
 #define CONTACTLAWS_TESTS_MUJOCO_TEST_UTIL_H_
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -35,6 +37,10 @@ class MujocoTest : public ::testing::Test {
     for (const std::string& w : Warnings()) ADD_FAILURE() << "MuJoCo warning: " << w;
     for (const UniqueData& d : data_) CheckNoWarnings(d.get());
     for (const auto& sim : simulations_) CheckNoWarnings(sim->data());
+    if (std::getenv(kTestContactStepsVariable) && simulations_.empty()) {
+      std::printf("note: no Simulation made by the fixture: this test ran without contact "
+                  "steps\n");
+    }
   }
 
   static void CheckNoWarnings(const mjData* d) {
@@ -70,16 +76,38 @@ class MujocoTest : public ::testing::Test {
   Simulation& MakeSimulation(std::string_view xml, const SimulationOptions& options = {}) {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string name = fmt::format("{}.xml", info->name());
-    simulations_.push_back(
-        std::make_unique<Simulation>(LoadModelString(xml, name), name, options));
+    simulations_.push_back(std::make_unique<Simulation>(LoadModelString(xml, name), name,
+                                                        WithTestContactSteps(options)));
     return *simulations_.back();
   }
 
   // A Simulation of a scene of mjcf/, checked like MakeSimulation's.
   Simulation& MakeSceneSimulation(const std::string& file, const SimulationOptions& options = {}) {
     const std::string path = std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/" + file;
-    simulations_.push_back(std::make_unique<Simulation>(LoadModelFile(path), file, options));
+    simulations_.push_back(
+        std::make_unique<Simulation>(LoadModelFile(path), file, WithTestContactSteps(options)));
     return *simulations_.back();
+  }
+
+  // options, with the contacts integrated inside each step when the test
+  // runs under kTestContactStepsVariable (auto or a count of sub-steps; the
+  // tests registered a second time, label contact-steps: tests/CMakeLists.txt)
+  // and options do not set them already.
+  static constexpr const char* kTestContactStepsVariable = "CONTACTLAWS_TEST_CONTACT_STEPS";
+  static SimulationOptions WithTestContactSteps(SimulationOptions options) {
+    const char* text = std::getenv(kTestContactStepsVariable);
+    if (!text || options.contact_steps.enabled()) return options;
+    const std::string value = text;
+    if (value == "auto") {
+      options.contact_steps.substeps = kContactStepsAuto;
+    } else if (!value.empty() && value.find_first_not_of("0123456789") == std::string::npos &&
+               value.size() < 7 && std::stoi(value) >= 1) {
+      options.contact_steps.substeps = std::stoi(value);
+    } else {
+      throw Error(fmt::format("{}={} must be auto or a whole number >= 1",
+                              kTestContactStepsVariable, value));
+    }
+    return options;
   }
 
   // Data owned by the fixture, checked for warnings at the end of the test.

@@ -55,6 +55,7 @@ struct SimulateArgs {
   std::optional<std::string> friction;
   std::optional<std::string> mu;
   std::optional<std::string> accuracy;  // the plugin steps with the auto timestep
+  std::optional<std::string> contact_steps;  // the plugin integrates contacts inside the step
   bool settle = false;  // the plugin starts the bodies in contact settled
   bool plain = false;   // MuJoCo's default look, not render/scene_look.h's
 };

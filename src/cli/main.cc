@@ -176,6 +176,10 @@ void AddSimulate(CLI::App* app, Commands* c) {
             "step with the contact-aware timestep (docs/timestep.md) at this relative error in a "
             "collision's rebound, peak force and duration, in (0, 0.1] (default: the scene's "
             "fixed timestep)");
+  c->simulate_cmd->add_option(
+      "--contact-steps", c->simulate.contact_steps,
+      "auto or N: integrate the contacts inside each of the scene's fixed steps, in sub-steps "
+      "per contact (auto) or N of them (docs/timestep.md, \"Contact steps\"); default: off");
   AddSettle(c->simulate_cmd, &c->simulate.settle);
   AddPlain(c->simulate_cmd, &c->simulate.plain);
 }

@@ -1,10 +1,11 @@
 // Copyright contactlaws authors.
 //
 // contactlaws simulate SCENE [--law L] [--restitution E] [--friction M] [--mu X]
-// [--accuracy TOL] [--settle]: MuJoCo's own viewer, mujoco-simulate, with
-// libcontactlaws_plugin.so preloaded and the overrides in its environment
-// (--accuracy as CONTACTLAWS_ACCURACY: the plugin sets the auto timestep
-// before each step; --settle as CONTACTLAWS_SETTLE=1). The scene's tags, the
+// [--accuracy TOL | --contact-steps auto|N] [--settle]: MuJoCo's own viewer,
+// mujoco-simulate, with libcontactlaws_plugin.so preloaded and the overrides
+// in its environment (--accuracy as CONTACTLAWS_ACCURACY: the plugin sets the
+// auto timestep before each step; --contact-steps as
+// CONTACTLAWS_CONTACT_STEPS; --settle as CONTACTLAWS_SETTLE=1). The scene's tags, the
 // overrides and the settling are checked first, as run checks them, so a
 // refusal is the same line and no window opens.
 
@@ -38,6 +39,10 @@ int SimulateCommand(const SimulateArgs& args) {
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
   ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
   if (args.accuracy) ParseAccuracy(*args.accuracy, std::nullopt);
+  if (args.contact_steps) {
+    if (args.accuracy) Refuse("--contact-steps", *args.contact_steps, "goes with a fixed timestep");
+    ParseContactSteps(*args.contact_steps);
+  }
   options.settle = args.settle;
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window
   const std::string viewer = RequireProgram("simulate", "mujoco-simulate", "libmujoco-samples");
@@ -51,6 +56,7 @@ int SimulateCommand(const SimulateArgs& args) {
   SetVariable("CONTACTLAWS_FRICTION", args.friction);
   SetVariable("CONTACTLAWS_MU", args.mu);
   SetVariable("CONTACTLAWS_ACCURACY", args.accuracy);
+  SetVariable("CONTACTLAWS_CONTACT_STEPS", args.contact_steps);
   SetVariable("CONTACTLAWS_SETTLE", args.settle ? std::optional<std::string>("1") : std::nullopt);
   SetVariable("CONTACTLAWS_LOOK", args.plain ? std::nullopt : std::optional<std::string>("1"));
   const char* argv[] = {viewer.c_str(), args.scene.c_str(), nullptr};

@@ -84,6 +84,51 @@ double TimeToSurface(double d, double r, double b, double limit) {
   return r > 0 ? std::min(limit, -d / r) : limit;
 }
 
+// The Cholesky factor L of the SPD n x n matrix s, in place (its lower
+// triangle), each row from its first nonzero entry on (first; its envelope,
+// which L keeps): the rows of points of bodies that share no chain are zero
+// against each other. False when s is not positive definite.
+bool EnvelopeCholesky(double* s, int n, std::vector<int>* first) {
+  first->resize(n);
+  for (int i = 0; i < n; ++i) {
+    int f = 0;
+    while (f < i && s[i * n + f] == 0) ++f;
+    (*first)[i] = f;
+  }
+  for (int i = 0; i < n; ++i) {
+    double* li = s + static_cast<size_t>(i) * n;
+    for (int j = (*first)[i]; j <= i; ++j) {
+      const double* lj = s + static_cast<size_t>(j) * n;
+      double sum = li[j];
+      for (int k = std::max((*first)[i], (*first)[j]); k < j; ++k) sum -= li[k] * lj[k];
+      if (j < i) {
+        li[j] = sum / lj[j];
+      } else if (sum > 0) {
+        li[i] = std::sqrt(sum);
+      } else {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// x with L L^T x = b (L from EnvelopeCholesky).
+void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const double* b,
+                   double* x) {
+  for (int i = 0; i < n; ++i) {
+    const double* li = l + static_cast<size_t>(i) * n;
+    double sum = b[i];
+    for (int k = first[i]; k < i; ++k) sum -= li[k] * x[k];
+    x[i] = sum / li[i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    const double* li = l + static_cast<size_t>(i) * n;
+    x[i] /= li[i];
+    for (int k = first[i]; k < i; ++k) x[k] -= li[k] * x[i];
+  }
+}
+
 }  // namespace
 
 ContactStepper::ContactStepper(const ContactModel& model) : model_(model) {}
@@ -165,13 +210,35 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   a_free_.resize(nv);
   mj_solveM(m, d, a_free_.data(), force.data(), 1);
 
+  // each row's span of nonzero entries in J and in M^-1 J^T: a row moves the
+  // degrees of freedom of its two bodies' chains only, and A_ij is the dot
+  // over where the spans of J_i and M^-1 J_j^T overlap (zero where they do
+  // not: points of bodies that share no chain); A symmetric, its upper half
+  // taken and mirrored
+  span_.resize(static_cast<size_t>(4) * rows);
+  for (int i = 0; i < rows; ++i) {
+    for (int which = 0; which < 2; ++which) {
+      const double* row = (which ? minv_jt_ : j_).data() + static_cast<size_t>(i) * nv;
+      int lo = 0, hi = nv;
+      while (lo < hi && row[lo] == 0) ++lo;
+      while (hi > lo && row[hi - 1] == 0) --hi;
+      span_[4 * i + 2 * which] = lo;
+      span_[4 * i + 2 * which + 1] = hi;
+    }
+  }
   a_.assign(static_cast<size_t>(rows) * rows, 0.0);
   b_.assign(rows, 0.0);
   mass_.assign(n, std::numeric_limits<double>::infinity());
   for (int i = 0; i < rows; ++i) {
     const double* ji = j_.data() + static_cast<size_t>(i) * nv;
-    for (int j = 0; j < rows; ++j) {
-      a_[i * rows + j] = mju_dot(ji, minv_jt_.data() + static_cast<size_t>(j) * nv, nv);
+    for (int j = i; j < rows; ++j) {
+      const int lo = std::max(span_[4 * i], span_[4 * j + 2]);
+      const int hi = std::min(span_[4 * i + 1], span_[4 * j + 3]);
+      if (hi <= lo) continue;
+      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
+      double dot = 0;
+      for (int k = lo; k < hi; ++k) dot += ji[k] * mj[k];
+      a_[i * rows + j] = a_[j * rows + i] = dot;
     }
     b_[i] = mju_dot(ji, a_free_.data(), nv);
     if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
@@ -459,7 +526,8 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // classical RK4 on (x, x'), the points in contact at the sub-step's
     // start the ones with a force (a touch ends a sub-step), each at its v0
     // of the sample; exact in the free acceleration b
-    std::vector<char> acting(n);
+    std::vector<char>& acting = acting_;
+    acting.resize(n);
     for (int i = 0; i < n; ++i) acting[i] = x[i] > 0;
     x_start_ = x;
     rate_start_ = rate;
@@ -521,9 +589,12 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
   // resting point's: linear from the sub-step's start), and its change delta
   // over the held f0
   std::vector<int>& held = implicit_rows_;
-  std::vector<int> solve;          // rows solved for: a group's rows together
-  std::vector<double> gain;        // per solved row: k step^2 + c step
-  std::vector<double> cap;         // per solved row: its group's cap (N; < 0: normal)
+  std::vector<int>& solve = solve_;     // rows solved for: a group's rows together
+  std::vector<double>& gain = gain_;    // per solved row: k step^2 + c step
+  std::vector<double>& cap = cap_;      // per solved row: its group's cap (N; < 0: normal)
+  solve.clear();
+  gain.clear();
+  cap.clear();
   held.clear();
   delta_.assign(rows, 0.0);
   g_.assign(rows, 0.0);
@@ -594,13 +665,17 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
   // A normal force below 0 is put at 0, a friction force beyond its cap at
   // the cap, and the others are solved again (once).
-  std::vector<char> solved(rows, 0);
+  std::vector<char>& solved = solved_;
+  solved.assign(rows, 0);
   for (int pass = 0; pass < 2 && !solve.empty(); ++pass) {
     const int m = static_cast<int>(solve.size());
     std::fill(solved.begin(), solved.end(), 0);
     for (const int r : solve) solved[r] = 1;
     system_.assign(static_cast<size_t>(m) * m, 0.0);
-    std::vector<double> rhs(m), f(m);
+    std::vector<double>& rhs = rhs_;
+    std::vector<double>& f = solution_;
+    rhs.assign(m, 0.0);
+    f.assign(m, 0.0);
     for (int a = 0; a < m; ++a) {
       const int r = solve[a];
       const double* row = a_.data() + static_cast<size_t>(r) * rows;
@@ -612,10 +687,14 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
         if (!solved[l]) rhs[a] -= row[l] * delta_[l];
       }
     }
-    if (mju_cholFactor(system_.data(), m, 0) != m) break;
-    mju_cholSolve(f.data(), system_.data(), rhs.data(), m);
-    std::vector<int> still;
-    std::vector<double> still_gain, still_cap;
+    if (!EnvelopeCholesky(system_.data(), m, &envelope_)) break;
+    EnvelopeSolve(system_.data(), m, envelope_, rhs.data(), f.data());
+    std::vector<int>& still = still_;
+    std::vector<double>& still_gain = still_gain_;
+    std::vector<double>& still_cap = still_cap_;
+    still.clear();
+    still_gain.clear();
+    still_cap.clear();
     for (int a = 0; a < m;) {
       // a group: a normal row (cap < 0), or a point's two tangential rows
       const int size = cap[a] < 0 ? 1 : 2;
@@ -708,12 +787,15 @@ void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_fo
         f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       }
     }
-    for (int i = 0; i < rows; ++i) {
-      double pushed = 0;  // (A f)_i
-      const double* a = a_.data() + static_cast<size_t>(i) * rows;
-      for (int j = 0; j < rows; ++j) pushed += a[j] * f[s][j];
-      acc[s][i] = b_[i] - pushed;
+    // (A f), A symmetric, over the rows with a force, summed in acc[s]
+    double* pushed = acc[s];
+    for (int i = 0; i < rows; ++i) pushed[i] = 0;
+    for (int j = 0; j < rows; ++j) {
+      if (f[s][j] == 0) continue;
+      const double* a = a_.data() + static_cast<size_t>(j) * rows;
+      for (int i = 0; i < rows; ++i) pushed[i] += a[i] * f[s][j];
     }
+    for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed[i];
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose

@@ -146,6 +146,7 @@ class ContactStepper {
   std::vector<double> mass_;       // per point: 1 / A_ii of its normal row, kg
   std::vector<double> j_;          // rows x nv: x' = J_r qvel (+ drives)
   std::vector<double> minv_jt_;    // rows x nv: M^-1 J_r^T
+  std::vector<int> span_;          // per row: [lo, hi) of its J row, then of M^-1 J^T's
   std::vector<double> a_;          // rows x rows
   std::vector<double> b_;          // per row, m/s^2
   std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
@@ -160,6 +161,13 @@ class ContactStepper {
   std::vector<double> delta_;      // ImplicitRows' change of force, per row
   std::vector<double> g_;          // ImplicitRows' explicit change, g - f0
   std::vector<double> system_;     // ImplicitRows' matrix
+  // ImplicitRows' rows solved for, their gains and caps, the system's
+  // right-hand side and solution, the rows solved again
+  std::vector<int> solve_, still_;
+  std::vector<double> gain_, cap_, still_gain_, still_cap_, rhs_, solution_;
+  std::vector<char> solved_;
+  std::vector<int> envelope_;      // per row of ImplicitRows' matrix: its first nonzero
+  std::vector<char> acting_;       // per point: in contact at the sub-step's start
   std::vector<char> resting_;      // per point: at rest (kRestingFraction)
   std::vector<double> x_start_;    // per row: x at the sub-step's start
   std::vector<double> rate_start_; // per row: x' at the sub-step's start

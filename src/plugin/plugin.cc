@@ -2,6 +2,7 @@
 
 #include "plugin/plugin.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -95,6 +96,23 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
                                    kMaxAccuracy);
     } else {
       result.accuracy = *tol;
+    }
+  }
+  if (const char* text = std::getenv(kContactStepsVariable); text && !result.refusal) {
+    const std::optional<double> n = ParseNumber(text);
+    if (std::string_view(text) == "auto") {
+      result.contact_steps.substeps = kContactStepsAuto;
+    } else if (!n || !(*n >= 1) || *n != std::floor(*n) || *n > 1e6) {
+      result.refusal = fmt::format("{}={} must be auto or a whole number of sub-steps in [1, 1e6]",
+                                   kContactStepsVariable, text);
+      return result;
+    } else {
+      result.contact_steps.substeps = static_cast<int>(*n);
+    }
+    if (result.accuracy) {
+      result.refusal = fmt::format("{}={} goes with the program's fixed step, not with {}",
+                                   kContactStepsVariable, text, kAccuracyVariable);
+      return result;
     }
   }
   if (const char* text = std::getenv(kSettleVariable)) {
@@ -201,6 +219,9 @@ void Plugin::Made(const mjModel* m, mjData* d) {
     AutoTimestepOptions options;
     options.accuracy = *environment_->accuracy;
     managed->auto_step.emplace(managed->contacts, options);
+  }
+  if (environment_->contact_steps.enabled()) {
+    managed->contacts.SetContactSteps(environment_->contact_steps);
   }
   data_[d] = std::move(managed);
 }

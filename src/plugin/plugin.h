@@ -50,6 +50,11 @@ inline constexpr const char* kAccuracyVariable = "CONTACTLAWS_ACCURACY";
 // there (mj_makeData, mj_resetData). One line on stderr says what moved, or
 // why nothing could (the scene's positions are then kept).
 inline constexpr const char* kSettleVariable = "CONTACTLAWS_SETTLE";
+// `--contact-steps auto|N` of run: each managed mjData integrates its
+// contacts inside each of the program's steps (ContactData::SetContactSteps,
+// docs/timestep.md, "Contact steps"), at the program's own step and
+// integrator; with a fixed step only (refused with CONTACTLAWS_ACCURACY).
+inline constexpr const char* kContactStepsVariable = "CONTACTLAWS_CONTACT_STEPS";
 // 1: a model loaded from a file gets what it lacks of MuJoCo's samples' look
 // (render/scene_look.h), as render draws it (contactlaws simulate sets it
 // unless --plain)
@@ -67,6 +72,7 @@ struct EnvironmentOverrides {
   Overrides overrides;
   std::optional<double> accuracy;  // CONTACTLAWS_ACCURACY: step with AutoTimestep
   bool settle = false;             // CONTACTLAWS_SETTLE=1
+  ContactStepsOptions contact_steps;  // CONTACTLAWS_CONTACT_STEPS (off when unset)
   std::optional<std::string> refusal;
 };
 EnvironmentOverrides ReadEnvironmentOverrides();

@@ -209,6 +209,19 @@ TEST(ReliabilityTest, AContactTooSoftStopsTheRunAtDivergence) {
   EXPECT_GT(Lines(ReadFile(csv)).size(), 20u);
 }
 
+// Without the timestep's warnings (the auto timestep, contact steps), the
+// advice a divergence's message reads is taken when the run diverges, from
+// the start: the same likely cause as above.
+TEST(ReliabilityTest, ADivergenceWithoutTimestepWarningsNamesTheSameLikelyCause) {
+  const std::string scene = DropScene("soft_inner", 1e4, 5.0, "Euler", 2e-3);
+  for (const char* step : {"--timestep auto", "--contact-steps auto"}) {
+    const Result r = RunCli("run " + scene + " --duration 0.1 " + step);
+    EXPECT_EQ(r.status, 3) << step << "\n" << r.output;
+    EXPECT_NE(r.output.find("likely cause: a contact too soft for the impact"), std::string::npos)
+        << step << "\n" << r.output;
+  }
+}
+
 TEST(ReliabilityTest, MujocosResetOnAHugeAccelerationStopsTheRun) {
   // K = 1e15: the first step in contact gives qacc > 1e10, and MuJoCo resets
   // the state (to t = 0) instead of integrating it

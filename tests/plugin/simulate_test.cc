@@ -80,5 +80,20 @@ TEST(SimulateTest, RefusedAccuracyIsRunsLineBeforeAnyWindow) {
   EXPECT_EQ(r.err, run.err);
 }
 
+TEST(SimulateTest, RefusedContactStepsIsRunsLineBeforeAnyWindow) {
+  for (const char* options : {"--contact-steps 0", "--contact-steps auto --accuracy 1e-3"}) {
+    const ProgramResult r = RunProgram(
+        "PATH=/nonexistent", fmt::format("{} simulate {} {}", CONTACTLAWS_CLI, kBall, options));
+    const std::string run_options =
+        std::string(options).find("--accuracy") != std::string::npos
+            ? "--contact-steps auto --timestep auto" : options;
+    const ProgramResult run = RunProgram(
+        "", fmt::format("{} run {} {} --duration 1e-3", CONTACTLAWS_CLI, kBall, run_options));
+    EXPECT_EQ(r.status, 2) << options;
+    EXPECT_EQ(r.err, run.err) << options;
+    EXPECT_NE(r.err.find("contactlaws: --contact-steps="), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace contactlaws
