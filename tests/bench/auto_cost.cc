@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
 // auto_cost: issues 22's and 34's costs of the contact-aware step, as ratios of CPU
-// time from one run (scripts/bench.sh prints them; no timed test holds them).
+// time from one run (bench/bench.sh prints them; no timed test holds them).
 //
 //   auto_cost [--short] [ITEM...]   the goals below (ITEM: 1, 1b, 1c, 7; all
 //                                   by default), with the runs' energy drifts;

@@ -1,7 +1,7 @@
 /* Copyright contactlaws authors.
  *
  * The bare MuJoCo start-up that `contactlaws run SCENE --duration 1e-5` is
- * measured against (scripts/startup_bench.sh): load the scene with MuJoCo,
+ * measured against (bench/startup_bench.sh): load the scene with MuJoCo,
  * make its data with MuJoCo's defaults, free both. */
 
 #include <stdio.h>

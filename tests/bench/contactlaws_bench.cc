@@ -22,7 +22,7 @@
 //
 // Every stepping benchmark reports counters: `steps` per iteration and
 // `per_step` (time per step, s), so that stretches of different lengths
-// compare; scripts/bench.sh turns one run's JSON into ratios.
+// compare; bench/bench.sh turns one run's JSON into ratios.
 //
 // Own flag, before Google Benchmark's: --smoke shortens every stretch (ctest's
 // smoke check; the numbers then mean nothing).

@@ -1,7 +1,7 @@
 /* Copyright contactlaws authors.
 
    The plugin's cost per step: a plain MuJoCo program (libmujoco alone) that
-   steps a scene and prints the wall time per mj_step. scripts/plugin_bench.sh
+   steps a scene and prints the wall time per mj_step. bench/plugin_bench.sh
    runs it with and without libcontactlaws_plugin.so preloaded, beside
    linked_steps (the same loop through the linked library).
 

@@ -33,7 +33,7 @@ using testing::SweepFirstImpact;
 TEST(AutoTimestepTest, SweepAgreesWithTheReferenceAndTheFixedStepInATenthOfTheSteps) {
   // The goal: with auto, every e_post within 2e-3 of the fixed 1e-5 s
   // answer (Kelvin-Voigt 5e-3), in <= 0.10 of the work. Work is counted in
-  // steps here (the wall-time ratio is scripts/bench.sh's); both runs are
+  // steps here (the wall-time ratio is bench/bench.sh's); both runs are
   // also held to the independent reference with the fixed step's tolerance.
   // Measured: e_post within 1.6e-4 of the fixed step (Hertz family) and
   // 4.7e-4 (Kelvin-Voigt); steps 0.7% of the fixed step's.
@@ -151,7 +151,7 @@ TEST(AutoTimestepTest, APairInContactWithManyPointsDoesNotHideAnApproachingPair)
 // (hunt-crossley) from the fixed 1e-5 s step, spin or not.
 TEST(AutoTimestepTest, SpinCostsNoAccuracy) {
   // the no-spin sweep's largest auto-against-fixed difference of the Hertz
-  // family is 2.1e-5 (scripts/bench.sh); spin once made it 8e-4
+  // family is 2.1e-5 (bench/bench.sh); spin once made it 8e-4
   constexpr double kSpinTolerance = 5e-5;
   std::string xml = ReadFile(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
   xml.replace(xml.find("<custom>"), 8,

@@ -2,7 +2,7 @@
 //
 // Peer program: the bouncing ball of mjcf/bouncing_ball.xml in Simbody, with
 // Simbody's own HuntCrossleyForce, so that contactlaws' Hunt-Crossley ball can
-// be compared with an independent engine (scripts/peer_simbody.sh).
+// be compared with an independent engine (bench/peer_simbody.sh).
 //
 // Scene (mjcf/bouncing_ball.xml): a free ball, mass 1 kg, inertia 0.1 kg m^2,
 // radius R = 0.1 m, centre released from rest at z = 1 m above the plane z = 0,

@@ -2,7 +2,7 @@
 """Peer comparison: contactlaws' Hunt-Crossley bouncing ball against Simbody's
 HuntCrossleyForce on the same ball (tools/peer/README.md).
 
-    python3 scripts/peer_compare.py --simbody build-peer/simbody_ball
+    python3 bench/peer_compare.py --simbody build-peer/simbody_ball
         [--contactlaws build/contactlaws] [--runs N] [--restitution 0.8,0.5]
         [--accuracy 1e-6] [--duration 2]
 

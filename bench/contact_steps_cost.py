@@ -5,10 +5,10 @@ For each scene, alternately in the same minutes: `contactlaws run SCENE --timest
 --integrator euler --contact-steps auto` (tagged) and the same scene with its contactlaw tags
 removed (MuJoCo's own contact on every pair) at the same step and integrator; whole process,
 wall time, the median of --repeats runs each. Prints one line per scene: both medians and their
-ratio (issue 35's goal: <= 2). Friction can be overridden (--friction none): friction is not
+ratio (target: <= 2). Friction can be overridden (--friction none): friction is not
 integrated inside the step (docs/timestep.md, "Contact steps").
 
-  /usr/bin/python3 scripts/contact_steps_cost.py build/contactlaws [--repeats 5] [--duration 5]
+  /usr/bin/python3 bench/contact_steps_cost.py build/contactlaws [--repeats 5] [--duration 5]
       [--friction none] [--scenes mjcf/die_throw.xml ...]
 """
 import argparse

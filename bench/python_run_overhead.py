@@ -1,10 +1,10 @@
-"""The goal of issue 24: a 5 s run of mjcf/bouncing_ball.xml at a fixed 1e-5 s
+"""The Python module's overhead: a 5 s run of mjcf/bouncing_ball.xml at a fixed 1e-5 s
 through Python (its trajectory as a DataFrame) against the command line
 writing the same trajectory as CSV. Runs each REPEAT times (default 3),
 alternating, prints every wall time, and the ratio of the fastest of each:
 on a shared machine the fastest run is the one least slowed by the others.
 
-PYTHONPATH=build/python python3 scripts/python_goal_timing.py build/contactlaws mjcf/bouncing_ball.xml [REPEAT]
+PYTHONPATH=build/python python3 bench/python_run_overhead.py build/contactlaws mjcf/bouncing_ball.xml [REPEAT]
 """
 
 import os

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Ratios from one run of contactlaws_bench (Google Benchmark JSON).
 
-    python3 scripts/bench_report.py BENCH.json [--markdown] [--command TEXT]
+    python3 bench/bench_report.py BENCH.json [--markdown] [--command TEXT]
                                                [--update-doc FILE]
 
 Every ratio compares two benchmarks of the same run (the machine is shared and
@@ -22,11 +22,11 @@ import os
 import platform
 import sys
 
-# the goals of issue 5, as ratios
+# the targets of the hooks' cost, as ratios
 GOAL_BOUNCING = 0.80    # bouncing ball, 3 s: hooks / MuJoCo's own contact
 GOAL_BOX_64 = 1.00      # 64 balls: hooks / MuJoCo's own contact
 GOAL_SWEEP_AUTO = 0.10  # sweep: auto timestep / fixed 1e-5 s
-# the goals of issue 12: the cost of coulomb friction on the 64-ball box
+# the targets of friction's cost: the cost of coulomb friction on the 64-ball box
 GOAL_FRICTION_OVER_FRICTIONLESS = 1.30  # hooks with coulomb / hooks without friction
 GOAL_FRICTION_OVER_MUJOCO = 0.50        # hooks with coulomb / MuJoCo's own, condim 3
 
@@ -117,7 +117,7 @@ def tables(entries):
         ("64 balls, hooks / MuJoCo's own contact", box64, GOAL_BOX_64),
         ("restitution sweep, auto / fixed 1e-5 s", ratio(auto, fixed), GOAL_SWEEP_AUTO),
     ]
-    out.append(("Goals of issue 5 (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
+    out.append(("Targets: the hooks' cost (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
                 [[q, fmt_ratio(r), f"<= {g:.2f}", verdict(r, g)] for q, r, g in goals]))
 
     coulomb = per(entries, "BallBox/hooks/64", "steps")
@@ -128,7 +128,7 @@ def tables(entries):
         ("64 balls, hooks with coulomb friction / MuJoCo's own contact (condim 3)",
          box64, GOAL_FRICTION_OVER_MUJOCO),
     ]
-    out.append(("Goals of issue 12 (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
+    out.append(("Targets: friction's cost (ratios of CPU time)", ["quantity", "ratio", "goal", "status"],
                 [[q, fmt_ratio(r), f"<= {g:.2f}", verdict(r, g)] for q, r, g in friction_goals]))
 
     laws = [[name.split("/", 1)[1], f"{seconds(e) * 1e9:.1f} ns"]

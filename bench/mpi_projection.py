@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""Projects the parallel efficiency of one evaluation of a fit on N nodes (docs/performance.md,
-issue 23) from a replay's per-trajectory costs and a measured exchange time.
+"""Projects the parallel efficiency of one evaluation of a fit on N nodes (docs/performance.md)
+from a replay's per-trajectory costs and a measured exchange time.
 
-    scripts/mpi_projection.py REPLAY_CSV --seconds S --exchange E [--threads 16] [--copies 1]
+    bench/mpi_projection.py REPLAY_CSV --seconds S --exchange E [--threads 16] [--copies 1]
 
 REPLAY_CSV: `contactlaws replay ... --output DIR`'s DIR/replay.csv; a trajectory's cost is taken
 proportional to its `samples` (a fixed timestep: steps per sample are alike), scaled so that the

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Prints what one evaluation of a fit costs on the cube tosses, and the ratio of in-process
-rollouts (`contactlaws replay`) to spawning `contactlaws run` once per toss (issue 20's goals:
+rollouts (`contactlaws replay`) to spawning `contactlaws run` once per toss (targets:
 <= 1 s of wall time for the 300 tosses on 2 cores; >= 5x).
 
-    scripts/ident_bench.py [build/contactlaws] [--jobs 2] [--repeat 3]
+    bench/ident_bench.py [build/contactlaws] [--jobs 2] [--repeat 3]
 
 Both sides simulate the same 300 tosses from the same start states at the published 1/1480 s
 step and write their trajectories at 148 Hz; the spawned side writes one scene per toss (the

@@ -2,16 +2,16 @@
 """The command line's wall times as ratios: --jobs 2 against --jobs 1, and the
 paper's whole restitution sweep with --timestep auto against the fixed 1e-5 s.
 
-    python3 scripts/bench_jobs.py CONTACTLAWS_BINARY [--repeat N] [--sweep-only]
+    python3 bench/bench_jobs.py CONTACTLAWS_BINARY [--repeat N] [--sweep-only]
 
 1. Runs `restitution` and `compare` on mjcf/bouncing_ball.xml with --jobs 1
    and --jobs 2, alternating, N times each (default 3), and prints the median
-   wall times and their ratio (issue 5's goal: <= 0.65 on 2 cores). Fails
+   wall times and their ratio (target: <= 0.65 on 2 cores). Fails
    (exit 1) when the two write different bytes.
 2. Runs `restitution --laws all --dissipation 0.1 --restitution 0.1:1.0:0.1
    --jobs 1` with the scene's 1e-5 s and with --timestep auto (default
    accuracy), alternating, --sweep-repeat times each (default 1), and prints
-   the ratio of the median wall times (issue 15's goal: <= 0.02) and the
+   the ratio of the median wall times (target: <= 0.02) and the
    largest e_post difference (goal: 2e-3, Kelvin-Voigt 5e-3).
 --sweep-only runs part 2 alone.
 Wall time, not CPU time: elapsed time is what a user waits for. Standard
@@ -29,7 +29,7 @@ import tempfile
 import time
 
 GOAL = 0.65
-AUTO_GOAL = 0.02  # issue 15 (issue 5 asked for 0.10)
+AUTO_GOAL = 0.02
 SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "mjcf", "bouncing_ball.xml")
 
 

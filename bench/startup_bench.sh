@@ -10,7 +10,7 @@
 # process, both sides), and the floor is printed: an empty main linked to the
 # run's libraries (tests/bench/empty_start.cc), what no start-up of ours can
 # go below.
-#   scripts/startup_bench.sh [BUILD_DIR] [RUNS] [SCENE]
+#   bench/startup_bench.sh [BUILD_DIR] [RUNS] [SCENE]
 set -eu
 cd "$(dirname "$0")/.."
 build=${1:-build}

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""Measures issue 23's goal on this machine: `contactlaws replay` of the 300 cube tosses on
+"""Measures the MPI speedup of `contactlaws replay` on this machine: of the 300 cube tosses on
 2 ranks x 1 thread against the ideal half of 1 rank x 1 thread, for the whole `mpirun` job and for
 the command inside it (docs/performance.md).
 
-    scripts/mpi_goal.py [build/contactlaws] [--rounds 5]
+    bench/mpi_replay_speedup.py [build/contactlaws] [--rounds 5]
 
 Each round runs, one after another: the program alone, `mpirun -np 1` and `mpirun -np 2`, and the
 program alone with 2 threads ("threads2": 1 rank x 2 threads, the same split without MPI). Walls

@@ -2,7 +2,7 @@
 # The plugin's overhead per step against the linked library, and the cost of
 # one rendered frame, as ratios from one run (docs/performance.md).
 #
-#   scripts/plugin_bench.sh [BUILD_DIR]      (default: build, built Release)
+#   bench/plugin_bench.sh [BUILD_DIR]      (default: build, built Release)
 #
 # Steps: the paper's ball (mjcf/bouncing_ball.xml, RK4, 1e-5 s) for 200,000
 # steps (2 s: flight and five impacts), best of 3 runs each, by

@@ -1,22 +1,22 @@
 #!/usr/bin/env bash
-# The benchmarks of issue 5, as ratios from one run.
+# The cost of the hooks, friction and the timestep against MuJoCo's own contact, as ratios from one run.
 #
-#   scripts/bench.sh [--build-dir DIR] [--json FILE] [--markdown | --update-doc]
+#   bench/bench.sh [--build-dir DIR] [--json FILE] [--markdown | --update-doc]
 #                    [-- BENCHMARK ARGS...]
 #
 # Stages, in order:
 #   build   Release: scripts/build.sh (<repo>/build), or cmake into --build-dir DIR
 #   run     contactlaws_bench once, its JSON to --json FILE (default
 #           results/benchmark.json); its console table goes to stderr
-#   report  scripts/bench_report.py: the ratios (hooks / MuJoCo's own contact,
+#   report  bench/bench_report.py: the ratios (hooks / MuJoCo's own contact,
 #           hooks / free flight, ns per law call, cost per step against the
 #           number of balls, the sweep), as text; with --markdown as the
 #           tables of docs/performance.md; with --update-doc written into
 #           docs/performance.md (between its bench:begin/end markers)
-#   jobs    scripts/bench_jobs.py: --jobs 2 against --jobs 1 of the
+#   jobs    bench/bench_jobs.py: --jobs 2 against --jobs 1 of the
 #           restitution and compare commands, wall time as a ratio, and their
 #           outputs compared byte for byte (skipped with --markdown/--update-doc)
-#   auto    tests/bench/auto_cost: issue 22's costs of --timestep auto (untagged
+#   auto    tests/bench/auto_cost: the costs of --timestep auto (untagged
 #           pairs far apart, trajectory rows, a dense pile) as ratios of CPU
 #           time (skipped with --markdown/--update-doc)
 # Arguments after -- go to contactlaws_bench, e.g. -- --benchmark_repetitions=3
@@ -27,7 +27,7 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
 
-invocation="scripts/bench.sh${*:+ $*}"  # for the report
+invocation="bench/bench.sh${*:+ $*}"  # for the report
 build_dir=""
 json="$repo/results/benchmark.json"
 report_args=()
@@ -67,12 +67,12 @@ run() {
 report() {
   local revision
   revision="$(git -C "$repo" describe --always --dirty 2>/dev/null || echo "not a git checkout")"
-  python3 scripts/bench_report.py "$json" --command "$invocation" --revision "$revision" \
+  python3 bench/bench_report.py "$json" --command "$invocation" --revision "$revision" \
     "${report_args[@]}"
 }
 
 jobs() {
-  python3 scripts/bench_jobs.py "$build_dir/contactlaws"
+  python3 bench/bench_jobs.py "$build_dir/contactlaws"
 }
 
 auto_costs() {

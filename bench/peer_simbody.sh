@@ -3,7 +3,7 @@
 # Hunt-Crossley bouncing ball against Simbody's HuntCrossleyForce on the same
 # ball, e_post error and whole-process wall time, alternating runs, medians.
 #
-#   scripts/peer_simbody.sh [--contactlaws BIN] [--build-dir DIR] [--no-install]
+#   bench/peer_simbody.sh [--contactlaws BIN] [--build-dir DIR] [--no-install]
 #                           [-- PEER_COMPARE ARGS...]
 #
 # Stages, in order:
@@ -12,7 +12,7 @@
 #   build    tools/peer (standalone CMake project, find_package(Simbody)) into
 #            --build-dir DIR (default <repo>/build-peer); not part of
 #            scripts/build.sh or scripts/test.sh
-#   compare  scripts/peer_compare.py --contactlaws BIN (default
+#   compare  bench/peer_compare.py --contactlaws BIN (default
 #            <repo>/build/contactlaws) --simbody DIR/simbody_ball, which runs
 #            both processes --runs N times (default 11) at e = 0.8 and 0.5
 # Arguments after -- go to peer_compare.py, e.g. -- --runs 21 --accuracy 1e-7.
@@ -56,5 +56,5 @@ cmake -S "$repo/tools/peer" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/nul
 cmake --build "$build_dir" -j 1 >/dev/null
 
 echo "== compare" >&2
-exec python3 "$repo/scripts/peer_compare.py" --contactlaws "$contactlaws" \
+exec python3 "$repo/bench/peer_compare.py" --contactlaws "$contactlaws" \
   --simbody "$build_dir/simbody_ball" "${compare_args[@]}"
