@@ -125,10 +125,12 @@ objective=train_trimmed_mean
 awk "BEGIN {exit !($trim == 0)}" && objective=train_mean
 
 # The $refine combinations whose fits of stage A score best on the training set, "LAW FRICTION"
-# lines, best first, of $out/law-*/ranking.csv.
+# lines, best first, of $out/law-*/ranking.csv; of a law's models that score the same to the
+# bit (stribeck at its default Stribeck velocity is coulomb), the first only.
 best_combinations() {
   awk -F, -v objective="$objective" 'FNR == 1 {for (i = 1; i <= NF; ++i) if ($i == objective) c = i; next}
-           $c ~ /^[0-9.eE+-]+$/ {print $c, $1, $2}' "$out"/law-*/ranking.csv | sort -g | head -n "$refine" | cut -d" " -f2-
+           $c ~ /^[0-9.eE+-]+$/ {print $c, $1, $2}' "$out"/law-*/ranking.csv | sort -g |
+    awk '!seen[$1 " " $2]++' | head -n "$refine" | cut -d" " -f2-
 }
 
 # "LAW FRICTION OBJECTIVE" of the row of ranking.csv $1 whose friction is $2 (the first row
