@@ -6,6 +6,8 @@ from typing import List, Literal, Mapping, Optional, Sequence, Union
 import pandas as pd
 
 Scene = Union[str, PathLike]
+# measured trajectories: a CSV's path, or a DataFrame of its columns
+Data = Union[str, PathLike, pd.DataFrame]
 Number = Union[float, int, str]
 Names = Union[str, Sequence[str]]
 Restitutions = Union[Number, Sequence[float], None]
@@ -50,7 +52,7 @@ def restitution(scene: Scene, *, laws: Names = ..., restitution: Restitutions = 
                 integrator: Optional[str] = ..., settle: bool = ...,
                 jobs: Optional[int] = ...) -> pd.DataFrame: ...
 
-def replay(scene: Scene, data: Scene, *, start: Literal["first", "refit"] = ...,
+def replay(scene: Scene, data: Data, *, start: Literal["first", "refit"] = ...,
            refit_height: Optional[Number] = ..., refit_lead: int = ...,
            refit_min_samples: int = ..., metric: str = ..., weights: Optional[Names] = ...,
            length: Optional[Number] = ..., timestep: Union[Number, Literal["auto"], None] = ...,
@@ -60,10 +62,10 @@ def replay(scene: Scene, data: Scene, *, start: Literal["first", "refit"] = ...,
            friction: Optional[str] = ..., mu: Optional[Number] = ...,
            set: Optional[Names] = ..., jobs: Optional[int] = ...) -> ReplayResult: ...
 
-def fit(scene: Scene, data: Scene, params: Names, *,
+def fit(scene: Scene, data: Data, params: Names, *,
         initial: Union[Mapping[str, Number], Names, None] = ..., laws: Optional[Names] = ...,
         frictions: Optional[Names] = ..., validate: Optional[Scene] = ..., budget: int = ...,
-        seed: int = ..., start: Literal["first", "refit"] = ...,
+        folds: Optional[int] = ..., trim: Optional[Number] = ..., seed: int = ..., start: Literal["first", "refit"] = ...,
         refit_height: Optional[Number] = ..., refit_lead: int = ...,
         refit_min_samples: int = ..., metric: str = ..., weights: Optional[Names] = ...,
         length: Optional[Number] = ..., timestep: Union[Number, Literal["auto"], None] = ...,
