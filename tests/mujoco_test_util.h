@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -196,6 +197,26 @@ inline Episode FirstImpact(Simulation& sim, double max_time = 0.5) {
   }
   ADD_FAILURE() << "no closed contact episode within " << max_time << " s";
   return Episode{};
+}
+
+// Steps sim `steps` times and returns the largest rise of its mechanical
+// energy (kinetic, potential, the laws' springs) from one step to the next,
+// J; a divergence fails the test and returns infinity.
+inline double WorstMechanicalRise(Simulation& sim, int steps) {
+  double previous = 0, worst = -1;
+  for (int step = 0; step < steps; ++step) {
+    sim.Step();
+    if (sim.contacts().divergence()) {
+      ADD_FAILURE() << "diverged at step " << step;
+      return std::numeric_limits<double>::infinity();
+    }
+    mj_forward(sim.model(), sim.data());
+    const EnergyLedger e = sim.Energy();
+    const double mechanical = e.kinetic + e.potential + e.elastic;
+    if (step > 0) worst = std::max(worst, mechanical - previous);
+    previous = mechanical;
+  }
+  return worst;
 }
 
 }  // namespace contactlaws::testing

@@ -140,17 +140,7 @@ TEST_F(InnerContactTest, DiceComeToRestOnTheirFourCornersWithoutGainingEnergy) {
   for (const auto& die : dice) {
     SCOPED_TRACE(die.keys);
     Simulation& sim = MakeSimulation(DieXml(die.half, die.mass, die.keys), InnerSteps());
-    double previous = 0, worst_rise = -1;
-    for (int step = 0; step < 1500; ++step) {  // 3 s
-      sim.Step();
-      ASSERT_FALSE(sim.contacts().divergence()) << "step " << step;
-      mj_forward(sim.model(), sim.data());
-      const EnergyLedger e = sim.Energy();
-      const double mechanical = e.kinetic + e.potential + e.elastic;
-      if (step > 0) worst_rise = std::max(worst_rise, mechanical - previous);
-      previous = mechanical;
-    }
-    EXPECT_LT(worst_rise, kEnergyRiseTolerance);
+    EXPECT_LT(testing::WorstMechanicalRise(sim, 1500), kEnergyRiseTolerance);  // 3 s
     // at rest flat: each corner carries a quarter of the weight
     const LawParams& law = sim.contact_model().pairs()[0].params;
     const double depth = RestingDepth(law, die.mass * 9.81 / 4);
