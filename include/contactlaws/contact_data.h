@@ -49,6 +49,7 @@
 
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <mujoco/mujoco.h>
@@ -97,6 +98,13 @@ struct ContactStepsOptions {
   int max_substeps = 100000;
   bool enabled() const { return substeps != 0; }
 };
+
+// The sub-steps a user writes: "auto" (kContactStepsAuto) or a whole number
+// in [1, 1e6]; nullopt for anything else, which callers refuse with
+// kContactStepsRequirement.
+std::optional<int> ParseContactSteps(std::string_view text);
+inline constexpr const char* kContactStepsRequirement =
+    "must be auto or a whole number of sub-steps in [1, 1e6]";
 
 // A run with contact steps is warned when a body with points in or near
 // contact turns more than this (rad) within one step: its lever arms, and

@@ -154,7 +154,7 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
   if (args.contact_steps) {
     if (auto_timestep) Refuse("--contact-steps", *args.contact_steps, "goes with a fixed timestep");
-    options.simulation.contact_steps.substeps = ParseContactSteps(*args.contact_steps);
+    options.simulation.contact_steps.substeps = ParseContactStepsOption(*args.contact_steps);
   }
   options.simulation.settle = args.settle;
   if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
@@ -165,13 +165,10 @@ CommonOptions ParseCommon(const CommonArgs& args) {
   return options;
 }
 
-int ParseContactSteps(const std::string& text) {
-  if (text == "auto") return kContactStepsAuto;
-  const std::optional<double> value = ParseNumber(text);
-  if (!value || !(*value >= 1) || *value != std::floor(*value) || *value > 1e6) {
-    Refuse("--contact-steps", text, "must be auto or a whole number of sub-steps in [1, 1e6]");
-  }
-  return static_cast<int>(*value);
+int ParseContactStepsOption(const std::string& text) {
+  const std::optional<int> substeps = ParseContactSteps(text);
+  if (!substeps) Refuse("--contact-steps", text, kContactStepsRequirement);
+  return *substeps;
 }
 
 void ParseFrictionOverrides(const std::optional<std::string>& friction,

@@ -83,7 +83,7 @@ CommonOptions ParseCommon(const CommonArgs& args);
 
 // --contact-steps: "auto" (kContactStepsAuto) or a whole number >= 1 of
 // sub-steps, or Refuse.
-int ParseContactSteps(const std::string& text);
+int ParseContactStepsOption(const std::string& text);
 
 // "euler", "rk4", "implicit" -> mjtIntegrator.
 int ParseIntegrator(std::string_view name);

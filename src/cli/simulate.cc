@@ -41,7 +41,7 @@ int SimulateCommand(const SimulateArgs& args) {
   if (args.accuracy) ParseAccuracy(*args.accuracy, std::nullopt);
   if (args.contact_steps) {
     if (args.accuracy) Refuse("--contact-steps", *args.contact_steps, "goes with a fixed timestep");
-    ParseContactSteps(*args.contact_steps);
+    ParseContactStepsOption(*args.contact_steps);
   }
   options.settle = args.settle;
   Scene(args.scene).Make(options);  // refuses what run refuses, before any window

@@ -7,6 +7,7 @@
 #include "contactlaws/contact_data.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "mujoco/contact_stepper.h"
 #include "mujoco/kinematics.h"
@@ -15,6 +16,7 @@
 #include "mujoco/point_evaluator.h"
 #include "mujoco/step_committer.h"
 #include "mujoco/step_start.h"
+#include "scene/number.h"
 
 namespace contactlaws {
 
@@ -181,6 +183,13 @@ double ContactData::LawEnergy(const PointEvaluation& e) const {
 
 double ContactData::DissipatedEnergy() const {
   return committer_->ledger().Dissipated(evaluator_->latest_time(), evaluator_->latest());
+}
+
+std::optional<int> ParseContactSteps(std::string_view text) {
+  if (text == "auto") return kContactStepsAuto;
+  const std::optional<double> value = ParseNumber(text);
+  if (!value || !(*value >= 1) || *value != std::floor(*value) || *value > 1e6) return std::nullopt;
+  return static_cast<int>(*value);
 }
 
 }  // namespace contactlaws

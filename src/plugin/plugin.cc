@@ -2,7 +2,6 @@
 
 #include "plugin/plugin.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -99,16 +98,13 @@ EnvironmentOverrides ReadEnvironmentOverrides() {
     }
   }
   if (const char* text = std::getenv(kContactStepsVariable); text && !result.refusal) {
-    const std::optional<double> n = ParseNumber(text);
-    if (std::string_view(text) == "auto") {
-      result.contact_steps.substeps = kContactStepsAuto;
-    } else if (!n || !(*n >= 1) || *n != std::floor(*n) || *n > 1e6) {
-      result.refusal = fmt::format("{}={} must be auto or a whole number of sub-steps in [1, 1e6]",
-                                   kContactStepsVariable, text);
+    const std::optional<int> substeps = ParseContactSteps(text);
+    if (!substeps) {
+      result.refusal =
+          fmt::format("{}={} {}", kContactStepsVariable, text, kContactStepsRequirement);
       return result;
-    } else {
-      result.contact_steps.substeps = static_cast<int>(*n);
     }
+    result.contact_steps.substeps = *substeps;
     if (result.accuracy) {
       result.refusal = fmt::format("{}={} goes with the program's fixed step, not with {}",
                                    kContactStepsVariable, text, kAccuracyVariable);
