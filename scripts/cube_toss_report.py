@@ -234,13 +234,14 @@ def main():
             ax.plot([lo, hi], [k + 1.3, k + 1.3], color="tab:red", lw=1.5)
     ax.set_yticks(range(1, len(table) + 1), [f"{label(r)} ({s})" for s, r, _ in table], fontsize=7)
     ax.set_xscale("log")
-    ax.set_xlabel("e_q per held-out toss (boxes: quartiles, whiskers 5-95 %, triangle: mean, "
+    ax.set_xlabel("e_q per held-out toss (boxes: quartiles, whiskers 5-95 %, triangle: mean,\n"
                   "red: the mean's 95% bootstrap interval)")
     # each label on a line of its own above the first row, beside its score's line
     for k, (score, names) in enumerate(published_labels(PUBLISHED)):
         ax.axvline(score, ls=":", lw=1, color="grey")
         ax.text(score, -1.0 + 0.8 * k, f" {names}", fontsize=7, va="center", ha="left")
-    ax.set_title("The cube tosses: error on the 100 tosses no fit saw, per law and friction model")
+    ax.set_title("The cube tosses: error on tosses 200-299, held out from every fit, per law and "
+                 "friction model", fontsize=10)
     ax.set_ylim(len(table) + 0.5, -1.5)  # the first row at the top, room above it for the labels
     fig.tight_layout()
     fig.savefig(os.path.join(docs, "cube_toss_errors.png"), dpi=110)
