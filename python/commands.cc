@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
-#include "cli/arena.h"
+#include "app/arena.h"
 #include "cli/commands.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
@@ -60,7 +60,7 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   SimulationOptions options = common.simulation;
   cli::ParseLawOverrides(args.law, args.restitution, &options.overrides);
   // the arena sized as the command line sizes it (the same work per step)
-  const Scene scene(args.scene, cli::LoadSizedModel(args.scene, options.overrides));
+  const Scene scene(args.scene, app::LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   // a start deep in contact, whatever the step; a fixed step's own
   const std::vector<StartContact> starts = StartContacts(sim.get());

@@ -1,11 +1,14 @@
 // Copyright contactlaws authors.
 //
-// compare, restitution, replay, fit, laws and check as functions: the command
-// line's own commands (src/cli), given the keywords as their options, their
-// CSV files written into a folder the package reads back as DataFrames, and
-// their printed report kept as text. A command runs on a thread of its own
-// while the caller watches for Ctrl-C.
+// compare, restitution, replay, fit, laws and check as functions. replay:
+// the keywords parsed as the command line's options, the library's replay
+// job (app/replay_job.h), its result columns handed over as arrays. The
+// others: the command line's own commands (src/cli), given the keywords as
+// their options, their CSV files written into a folder the package reads
+// back as DataFrames, and their printed report kept as text. The work runs
+// on a thread of its own while the caller watches for Ctrl-C.
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -16,8 +19,10 @@
 #include <thread>
 #include <utility>
 
+#include "app/replay_job.h"
 #include "bindings.h"
 #include "cli/commands.h"
+#include "cli/identify.h"
 
 namespace contactlaws::python {
 namespace {
@@ -147,14 +152,15 @@ class Report {
   std::FILE* file_;
 };
 
-// Runs command on a thread of its own with the GIL released. The calling
-// thread checks for Ctrl-C meanwhile: on it, the commands' stop flag makes
-// the runs stop after their current step (what the command line does on
-// SIGINT), and KeyboardInterrupt is raised once the command has returned.
-// Returns the command's exit status; its Error propagates.
-int Interruptible(const std::function<int()>& command) {
-  std::packaged_task<int()> task(command);
-  std::future<int> done = task.get_future();
+// Runs work on a thread of its own with the GIL released. The calling
+// thread checks for Ctrl-C meanwhile: on it, *stop is set, which makes the
+// runs stop after their current step (what the command line does on
+// SIGINT), and KeyboardInterrupt is raised once work has returned. Work's
+// exceptions propagate.
+template <typename Work>
+auto Interruptible(const Work& work, std::atomic<bool>* stop) -> decltype(work()) {
+  std::packaged_task<decltype(work())()> task(work);
+  auto done = task.get_future();
   bool interrupted = false;
   {
     py::gil_scoped_release release;
@@ -165,14 +171,26 @@ int Interruptible(const std::function<int()>& command) {
       py::gil_scoped_acquire acquire;
       if (PyErr_CheckSignals() != 0) {
         interrupted = true;
-        cli::stop_signal = true;
+        *stop = true;
       }
     }
     worker.join();
   }
-  cli::stop_signal = false;
   if (interrupted) throw py::error_already_set();  // the KeyboardInterrupt raised
   return done.get();
+}
+
+// A command of the command line, stopped through its program-wide flag.
+int InterruptibleCommand(const std::function<int()>& command) {
+  struct Clear {
+    ~Clear() { cli::stop_signal = false; }
+  } clear;
+  return Interruptible(command, &cli::stop_signal);
+}
+
+template <typename T>
+py::array_t<T> Array(const std::vector<T>& values) {
+  return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
 // (exit status, printed report) of command given args with report.
@@ -180,7 +198,7 @@ template <typename Args>
 py::tuple Call(int (*command)(const Args&), Args args) {
   Report report;
   args.report = report.file();
-  const int status = Interruptible([&] { return command(args); });
+  const int status = InterruptibleCommand([&] { return command(args); });
   return py::make_tuple(status, report.Text());
 }
 
@@ -196,11 +214,54 @@ py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const st
   return Call(&cli::RestitutionCommand, std::move(args));
 }
 
-py::tuple Replay(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
+// replay's results as columns: {"scores": {column: array or names},
+// "simulated": {"columns": [...], "trajectory": index array, "time": array,
+// "values": rows x columns array}, "names": the trajectories', "report",
+// "diverged", "settled": text}. No file written, nothing printed.
+py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
   cli::ReplayArgs args;
-  TakeReplay(scene, kwargs, &args);
-  args.output = dir;
-  return Call(&cli::ReplayCommand, std::move(args));
+  TakeReplay(scene_path, kwargs, &args);
+  const Scene scene = app::LoadReplayScene(args.scene);
+  const MeasuredData data = cli::DataOf(args);
+  app::ReplayRequest request;
+  request.options = cli::ParseReplayOptions(args, scene, &request.metric);
+  request.seed = cli::ParseSeed(args.seed);
+  request.keep_trajectories = true;
+  std::atomic<bool> stop{false};
+  request.stop = app::StopToken(&stop);
+  const app::ReplayJob job(scene, data, std::move(request));
+  const app::ReplayResult result = Interruptible([&] { return job.Run(); }, &stop);
+
+  const app::ReplayScores& s = result.scores;
+  std::vector<std::string> status;
+  for (const ReplayedTrajectory::Status st : s.status) status.emplace_back(app::StatusName(st));
+  py::dict scores;
+  scores["trajectory"] = s.trajectory;
+  scores["samples"] = Array(std::vector<int64_t>(s.samples.begin(), s.samples.end()));
+  scores["start"] = Array(std::vector<int64_t>(s.start.begin(), s.start.end()));
+  scores["e_q"] = Array(s.e_q);
+  scores["position_rms"] = Array(s.position_rms);
+  scores["angle_rms"] = Array(s.angle_rms);
+  scores["joint_rms"] = Array(s.joint_rms);
+  scores["weighted"] = Array(s.weighted);
+  scores["status"] = status;
+
+  const app::SimulatedSamples& t = result.simulated;
+  const py::ssize_t width = static_cast<py::ssize_t>(t.columns.size());
+  const py::ssize_t rows = static_cast<py::ssize_t>(t.time.size());
+  py::dict simulated;
+  simulated["columns"] = t.columns;
+  simulated["trajectory"] = Array(std::vector<int64_t>(t.trajectory.begin(), t.trajectory.end()));
+  simulated["time"] = Array(t.time);
+  simulated["values"] = py::array_t<double>({rows, width}, t.values.data());
+
+  py::dict out;
+  out["scores"] = scores;
+  out["simulated"] = simulated;
+  out["report"] = result.report;
+  out["diverged"] = KeywordSpelling(result.diverged);
+  out["settled"] = result.settled;
+  return out;
 }
 
 py::tuple Fit(const std::string& scene, const py::dict& kwargs, const std::string& dir) {

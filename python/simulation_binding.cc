@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "cli/arena.h"
+#include "app/arena.h"
 #include "cli/impact_csv.h"
 #include "cli/options.h"
 
@@ -67,7 +67,7 @@ std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const py::d
     options.timestep = cli::ParsePositive("--timestep", *timestep, "s");
   }
   // the arena sized as the command line sizes it: reset() zeroes all of it
-  return Scene(scene, cli::LoadSizedModel(scene, options.overrides)).Make(options);
+  return Scene(scene, app::LoadSizedModel(scene, options.overrides)).Make(options);
 }
 
 void BindSimulation(py::module_& m) {

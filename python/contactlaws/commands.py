@@ -1,16 +1,19 @@
-"""compare, restitution, replay, fit, laws and check: the command line's own
-commands, their CSV files read back as DataFrames with the files' columns.
+"""compare, restitution, replay, fit, laws and check, as the command line's
+commands (the same options, the same checks and messages, the same numbers),
+their results as DataFrames with the columns of the command's CSV files.
 
-Each runs the command as `contactlaws COMMAND` does (the same options, the
-same checks and messages, the same numbers), writing its files into a
+replay is the library's replay job, its results columns of numbers; the
+others run the command line's command, which writes its files into a
 temporary folder that is removed once read. Ctrl-C stops the runs after
 their current step and raises KeyboardInterrupt.
 """
 
 import os as _os
+import sys as _sys
 import tempfile as _tempfile
 import warnings as _warnings
 
+import numpy as _np
 import pandas as _pd
 
 from . import _contactlaws
@@ -147,15 +150,31 @@ def _replay_options(data, start, refit_height, refit_lead, refit_min_samples, me
 
 
 class ReplayResult:
-    """replay's two files: .scores (replay.csv: one row per trajectory, its
-    scores: e_q, position_rms m, angle_rms rad, ...), .trajectories (the
-    simulated samples in the data's own columns and units); .report, the
-    printed distributions."""
+    """replay's results: .scores (one row per trajectory, as replay.csv:
+    trajectory (its name, text), samples, start, e_q, position_rms m,
+    angle_rms rad, joint_rms, weighted, status), .trajectories (the simulated
+    samples in the data's own columns and units, as trajectories.csv);
+    .report, the printed distributions."""
 
     def __init__(self, scores, trajectories, report):
         self.scores = scores
         self.trajectories = trajectories
         self.report = report
+
+
+def _replay_result(scene, result):
+    """ReplayResult of the library's columns (python/file_commands.cc)."""
+    scores = _pd.DataFrame(result["scores"])
+    simulated = result["simulated"]
+    names = _np.asarray(scores["trajectory"], dtype=object)
+    trajectories = _pd.DataFrame(simulated["values"], columns=simulated["columns"])
+    trajectories.insert(0, "time", simulated["time"])
+    trajectories.insert(0, "trajectory", names[simulated["trajectory"]])
+    if result["diverged"]:
+        _warnings.warn(f"{scene}: {result['diverged']}", stacklevel=3)
+    if result["settled"]:
+        print(f"contactlaws: {scene}: {result['settled']}", file=_sys.stderr)
+    return ReplayResult(scores, trajectories, result["report"])
 
 
 def replay(scene, data, *, start="first", refit_height=None, refit_lead=3, refit_min_samples=4,
@@ -167,20 +186,19 @@ def replay(scene, data, *, start="first", refit_height=None, refit_lead=3, refit
 
     data: the measured CSV's path, or a DataFrame of the same columns
     (trajectory, time s, positions m, quaternions, velocities m/s, rad/s),
-    checked as the file would be and never written. start: "first" or "refit" (refit_height m, refit_lead and
-    refit_min_samples samples). metric: "e_q", "position_rms" (m),
-    "angle_rms" (rad) or "weighted" (weights "P,A[,J]"); length: e_q's L, m.
-    timestep: s or "auto"; law, restitution, dissipation (s/m), friction, mu:
-    overrides of every tag; set: "KEY=VALUE" or a list of them, on every tag.
-    Returns a ReplayResult.
+    checked as the file would be and never written. start: "first" or
+    "refit" (refit_height m, refit_lead and refit_min_samples samples).
+    metric: "e_q", "position_rms" (m), "angle_rms" (rad) or "weighted"
+    (weights "P,A[,J]"); length: e_q's L, m. timestep: s or "auto"; law,
+    restitution, dissipation (s/m), friction, mu: overrides of every tag;
+    set: "KEY=VALUE" or a list of them, on every tag.
+    Returns a ReplayResult, computed in memory: no file written. Ctrl-C
+    stops the runs after their current step and raises KeyboardInterrupt.
     """
     options = _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric,
                               weights, length, timestep, max_timestep, accuracy, integrator,
                               law, restitution, dissipation, friction, mu, set, jobs)
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        _, report = _contactlaws._replay(str(scene), options, folder)
-        return ReplayResult(_read(_os.path.join(folder, "replay.csv")),
-                            _read(_os.path.join(folder, "trajectories.csv")), report)
+    return _replay_result(scene, _contactlaws._replay(str(scene), options))
 
 
 class FitResult:

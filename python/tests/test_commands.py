@@ -40,6 +40,16 @@ def assert_same(frame, path):
     pd.testing.assert_frame_equal(frame, read(path), check_exact=True)
 
 
+def assert_same_numbers(frame, path):
+    """frame, the library's columns, against the command line's CSV read
+    with frame's column types: its numbers (a score of 0 is written 0, read
+    back as an integer otherwise) and its names as text."""
+    types = {c: str if frame[c].dtype == object else frame[c].dtype for c in frame.columns}
+    expected = pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
+                           na_values=[""], dtype=types)
+    pd.testing.assert_frame_equal(frame, expected, check_exact=True)
+
+
 def test_compare_gives_the_command_lines_three_files(tmp_path):
     cli("compare", BALL, "--laws=hertz,flores,hunt-crossley", "--restitution=0.5,0.8",
         "--duration=0.6", "--sample-rate=200", "--quiet", "--output-dir", str(tmp_path))
@@ -92,8 +102,8 @@ def test_replay_gives_the_command_lines_files(tmp_path, measured):
     cli("replay", BALL, "--data", str(measured), "--law=flores", "--restitution=0.5",
         "--timestep=1e-4", "--quiet", "--output", str(tmp_path))
     result = contactlaws.replay(BALL, measured, law="flores", restitution=0.5, timestep=1e-4)
-    assert_same(result.scores, tmp_path / "replay.csv")
-    assert_same(result.trajectories, tmp_path / "trajectories.csv")
+    assert_same_numbers(result.scores, tmp_path / "replay.csv")
+    assert_same_numbers(result.trajectories, tmp_path / "trajectories.csv")
     assert len(result.scores) == 2
 
 
@@ -104,8 +114,8 @@ def test_replay_takes_a_dataframe_as_the_file(tmp_path, measured):
     cli("replay", BALL, "--data", str(measured), "--law=flores", "--restitution=0.5",
         "--timestep=1e-4", "--quiet", "--output", str(tmp_path))
     result = contactlaws.replay(BALL, frame, law="flores", restitution=0.5, timestep=1e-4)
-    assert_same(result.scores, tmp_path / "replay.csv")
-    assert_same(result.trajectories, tmp_path / "trajectories.csv")
+    assert_same_numbers(result.scores, tmp_path / "replay.csv")
+    assert_same_numbers(result.trajectories, tmp_path / "trajectories.csv")
     # refused as the file would be, the table's row named (from 0)
     backwards = frame.copy()
     backwards.loc[1, "time"] = backwards.loc[0, "time"]
@@ -114,6 +124,27 @@ def test_replay_takes_a_dataframe_as_the_file(tmp_path, measured):
         contactlaws.replay(BALL, backwards, law="flores", timestep=1e-4)
     with pytest.raises(ValueError, match="first columns must be trajectory, time"):
         contactlaws.replay(BALL, frame.drop(columns="trajectory"), timestep=1e-4)
+
+
+def test_replay_keeps_numbered_trajectories_names_and_writes_no_file(tmp_path, monkeypatch,
+                                                                    measured):
+    # names that read as numbers (the cube tosses' 0, 1, ...) stay names: text
+    numbered = pd.read_csv(measured, float_precision="round_trip")
+    numbered["trajectory"] = numbered["trajectory"].map({"a": 7, "b": 8})
+    numbered.to_csv(tmp_path / "numbered.csv", index=False)
+    cli("replay", BALL, "--data", str(tmp_path / "numbered.csv"), "--law=flores",
+        "--timestep=1e-4", "--quiet", "--output", str(tmp_path))
+
+    # the results come back as the library's columns: no folder, no CSV read back
+    def no_file(*args, **kwargs):
+        raise AssertionError("replay went through a file")
+    monkeypatch.setattr(contactlaws.commands._tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
+    result = contactlaws.replay(BALL, numbered, law="flores", timestep=1e-4)
+    monkeypatch.undo()
+    assert list(result.scores["trajectory"]) == ["7", "8"]
+    assert_same_numbers(result.scores, tmp_path / "replay.csv")
+    assert_same_numbers(result.trajectories, tmp_path / "trajectories.csv")
 
 
 def test_fit_gives_the_command_lines_files(tmp_path, measured):
@@ -229,6 +260,18 @@ def test_ctrl_c_interrupts_a_long_fit_and_the_next_call_runs(measured):
     # 1e-5 s takes ~0.3 s alone, allow 10 s on 2 loaded cores
     assert time.perf_counter() - start < 10
     assert len(contactlaws.restitution(BALL, laws="flores", restitution=0.5)) == 1
+
+
+def test_ctrl_c_interrupts_a_long_replay(measured):
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        # two 0.8 s runs at 1e-7 s: minutes, were it not stopped
+        contactlaws.replay(BALL, measured, law="flores", timestep=1e-7)
+    timer.join()
+    # stopped after the current step of each run: allow 10 s on 2 loaded cores
+    assert time.perf_counter() - start < 10
 
 
 def test_messages_name_the_keyword_arguments(capfd):

@@ -5,14 +5,15 @@
 
 #include <fmt/format.h>
 
+#include "app/arena.h"
+#include "app/score_text.h"
 #include "cli/cluster.h"
-#include "cli/arena.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
 #include "cli/fit_profile.h"
 #include "cli/fit_ranking.h"
 #include "cli/impact_csv.h"
-#include "cli/summary_text.h"
+#include "cli/rest_offsets.h"
 #include "cli/sweep.h"
 #include "scene/number.h"
 #include "scene/tags.h"
@@ -62,7 +63,7 @@ std::string TagLine(const Scene& scene, const Fitted& f, const ReplayOptions& op
 
 int FitCommand(const FitArgs& args) {
   // the arena sized to the scene: each trajectory's mj_resetData zeroes all of it
-  const Scene scene(args.scene, LoadSizedModel(args.scene, Overrides{}));
+  const Scene scene = app::LoadReplayScene(args.scene);
   const MeasuredData train_data = DataOf(args);
   const Replay train(scene, train_data);
   std::optional<MeasuredData> validate_data;
@@ -249,7 +250,8 @@ int FitCommand(const FitArgs& args) {
     best = WithParameters(best, winner.parameters, winner.fit.values);
     best.keep_trajectories = true;
     const Replay& scored = validate ? *validate : train;
-    WriteSimulated(scored.data(), scored.Run(best), &best_trajectories);
+    WriteSimulated(scored.data(), app::SimulatedOf(scored.data(), scored.Run(best)),
+                   &best_trajectories);
   }
   // the winner's profile on the training data, on every rank of a job (its
   // replays are spread over them); none after a fit that was stopped
@@ -284,12 +286,14 @@ int FitCommand(const FitArgs& args) {
   fmt::print(args.report, "best ({}):\n{}", winner.label, tag);
   // the winner read in units, and where its bodies rest against the data
   fmt::print(args.report, "{} on {} (95% bootstrap intervals):\n", winner.label, train_data.source);
-  PrintReadable(args.report, "  ", train_data, winner.train, metric, seed);
-  PrintRestingGaps(args.report, "  ", train_data, winner.train, seed);
+  std::fputs(app::ReadableText("  ", train_data, winner.train, metric, seed).c_str(), args.report);
+  std::fputs(app::RestingGapsText("  ", train_data, winner.train, seed).c_str(), args.report);
   if (validate_data) {
     fmt::print(args.report, "{} on {}:\n", winner.label, validate_data->source);
-    PrintReadable(args.report, "  ", *validate_data, winner.validate, metric, seed);
-    PrintRestingGaps(args.report, "  ", *validate_data, winner.validate, seed);
+    std::fputs(app::ReadableText("  ", *validate_data, winner.validate, metric, seed).c_str(),
+               args.report);
+    std::fputs(app::RestingGapsText("  ", *validate_data, winner.validate, seed).c_str(),
+               args.report);
   }
   if (profiled) {
     PrintProfile(winner, profile, parameters, *profile_request, train_data, args.report);

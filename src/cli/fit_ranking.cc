@@ -135,9 +135,10 @@ void WriteRanking(const std::vector<Fitted>& fitted, const std::vector<FitParame
     row.push_back(f.fit.interrupted ? "interrupted" : "complete");
     ranking->Fields(row);
     for (const Set& set : Sets(f, data)) {
+      const app::ReplayScores scores = app::ScoresOf(*set.data, *set.scored);
       for (size_t i = 0; i < set.scored->size(); ++i) {
         std::vector<std::string> fields = {LawOf(f), FrictionOf(f), set.name};
-        for (std::string& field : ReplayFields(set.data->trajectories[i], (*set.scored)[i])) {
+        for (std::string& field : ScoreFields(scores, i)) {
           fields.push_back(std::move(field));
         }
         errors->Fields(fields);

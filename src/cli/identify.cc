@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "app/replay_job.h"
+
 #include "cli/cluster.h"
 #include "cli/impact_csv.h"
 #include "cli/sweep.h"
@@ -102,49 +104,36 @@ std::vector<std::string> ReplayColumns() {
           "weighted", "status"};
 }
 
-std::vector<std::string> ReplayFields(const MeasuredTrajectory& t, const ReplayedTrajectory& r) {
-  const char* status = r.status == ReplayedTrajectory::Status::kComplete   ? "complete"
-                       : r.status == ReplayedTrajectory::Status::kDiverged ? "diverged"
-                                                                           : "interrupted";
-  const Score& s = r.score;
-  return {t.name,
-          fmt::format("{}", s.samples),
-          fmt::format("{}", r.start),
-          Field(s.e_q),
-          Field(s.position_rms),
-          Field(s.angle_rms),
-          Field(s.joint_rms),
-          Field(s.weighted),
-          status};
+std::vector<std::string> ScoreFields(const app::ReplayScores& scores, size_t i) {
+  return {scores.trajectory[i],
+          fmt::format("{}", scores.samples[i]),
+          fmt::format("{}", scores.start[i]),
+          Field(scores.e_q[i]),
+          Field(scores.position_rms[i]),
+          Field(scores.angle_rms[i]),
+          Field(scores.joint_rms[i]),
+          Field(scores.weighted[i]),
+          app::StatusName(scores.status[i])};
 }
 
-void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed,
+void WriteScores(const app::ReplayScores& scores, CsvFile* file) {
+  file->Header(ReplayColumns());
+  for (size_t i = 0; i < scores.trajectory.size(); ++i) file->Fields(ScoreFields(scores, i));
+}
+
+void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,
                     CsvFile* file) {
   std::vector<std::string> header = {"trajectory", "time"};
-  header.insert(header.end(), data.columns.begin(), data.columns.end());
+  header.insert(header.end(), simulated.columns.begin(), simulated.columns.end());
   file->Header(header);
-  const size_t width = data.columns.size();
+  const size_t width = simulated.columns.size();
   std::vector<double> row;
-  for (size_t i = 0; i < replayed.size(); ++i) {
-    const MeasuredTrajectory& t = data.trajectories[i];
-    const ReplayedTrajectory& r = replayed[i];
-    const size_t samples = r.simulated.size() / width;
-    for (size_t k = 0; k < samples; ++k) {
-      row.assign(1, t.time[r.start + k]);
-      row.insert(row.end(), r.simulated.begin() + k * width, r.simulated.begin() + (k + 1) * width);
-      file->Row({t.name}, row);
-    }
+  for (size_t k = 0; k < simulated.time.size(); ++k) {
+    row.assign(1, simulated.time[k]);
+    row.insert(row.end(), simulated.values.begin() + k * width,
+               simulated.values.begin() + (k + 1) * width);
+    file->Row({data.trajectories[simulated.trajectory[k]].name}, row);
   }
-}
-
-std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed) {
-  int diverged = 0;
-  for (const ReplayedTrajectory& r : replayed) {
-    diverged += r.status == ReplayedTrajectory::Status::kDiverged;
-  }
-  if (diverged == 0) return "";
-  return fmt::format("{} of {} diverged (scored with their last finite state)", diverged,
-                     replayed.size());
 }
 
 }  // namespace contactlaws::cli

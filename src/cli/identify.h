@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/replay_job.h"
 #include "cli/csv_file.h"
 #include "cli/options.h"
 
@@ -68,16 +69,15 @@ MeasuredData ReadData(const std::string& option, const std::string& path);
 // args.measured, else ReadData("--data", args.data).
 MeasuredData DataOf(const ReplayArgs& args);
 
-// replay.csv's columns and one trajectory's fields.
+// replay.csv's columns, one trajectory's fields, and the file of every
+// trajectory's.
 std::vector<std::string> ReplayColumns();
-std::vector<std::string> ReplayFields(const MeasuredTrajectory& t, const ReplayedTrajectory& r);
+std::vector<std::string> ScoreFields(const app::ReplayScores& scores, size_t i);
+void WriteScores(const app::ReplayScores& scores, CsvFile* file);
 
-// The simulated samples of every trajectory in the data's own columns.
-void WriteSimulated(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed,
+// The simulated samples in the data's own columns (trajectories.csv).
+void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,
                     CsvFile* file);
-
-// "3 of 300 diverged" or "".
-std::string DivergedText(const std::vector<ReplayedTrajectory>& replayed);
 
 }  // namespace contactlaws::cli
 

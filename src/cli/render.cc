@@ -18,7 +18,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/arena.h"
+#include "app/arena.h"
 #include "cli/commands.h"
 #include "cli/programs.h"
 #include "cli/report.h"
@@ -95,7 +95,7 @@ int RenderCommand(const RenderArgs& args) {
                                  ? ""
                                  : RequireProgram("render --output " + args.output, "ffmpeg",
                                                   "ffmpeg");
-  UniqueModel model = LoadSizedModel(args.scene, plan.common.simulation.overrides);
+  UniqueModel model = app::LoadSizedModel(args.scene, plan.common.simulation.overrides);
   if (plan.frame.named()) render::FindCamera(model.get(), args.scene, plan.frame.camera);
   const render::LookPlan look = args.plain ? render::LookPlan{} : render::PlanLook(model.get());
   if (!look.empty()) model = render::Dressed(model.get(), args.scene, look);

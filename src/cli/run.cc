@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/arena.h"
+#include "app/arena.h"
 #include "cli/csv_file.h"
 #include "cli/impact_csv.h"
 #include "cli/report.h"
@@ -53,7 +53,7 @@ int RunCommand(const RunArgs& args) {
   SimulationOptions options = common.simulation;
   const std::optional<AutoTimestepOptions>& auto_timestep = common.auto_timestep;
   ParseLawOverrides(args.law, args.restitution, &options.overrides);
-  const Scene scene(args.scene, LoadSizedModel(args.scene, options.overrides));
+  const Scene scene(args.scene, app::LoadSizedModel(args.scene, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   ReportSettle(*sim);
   std::set<std::string> warned;

@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/arena.h"
+#include "app/arena.h"
 #include "cli/cluster.h"
 #include "cli/commands.h"
 #include "cli/csv_file.h"
@@ -255,7 +255,7 @@ SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restituti
         ParseRestitutionList("--restitution", args.restitution.value_or(default_restitutions));
   }
   in.scene = std::make_unique<Scene>(args.scene,
-                                     LoadSizedModel(args.scene, in.common.simulation.overrides));
+                                     app::LoadSizedModel(args.scene, in.common.simulation.overrides));
   if (args.laws == "all") LeaveOutLawsMissingADissipation(&in);
   return in;
 }

@@ -1,11 +1,11 @@
 // Copyright contactlaws authors.
 //
-// The program's arena sizing (cli/arena.h): a scene whose every collidable
+// The program's arena sizing (app/arena.h): a scene whose every collidable
 // pair is tagged gets the constraint rows it can make and the stack they and
 // the passive hook need; a scene with an untagged contact, or with sizes of
 // its own, keeps MuJoCo's; CONTACTLAWS_ARENA=mujoco keeps MuJoCo's always.
 
-#include "cli/arena.h"
+#include "app/arena.h"
 
 #include <cstdlib>
 #include <string>
@@ -15,7 +15,7 @@
 
 #include "mujoco_test_util.h"
 
-namespace contactlaws::cli {
+namespace contactlaws::app {
 namespace {
 
 // MuJoCo 2.2.2's defaults when a scene gives no <size>
@@ -60,4 +60,4 @@ TEST_F(ArenaTest, TagsTheOverridesRefuseLeaveTheSceneAsMujocoMadeIt) {
 }
 
 }  // namespace
-}  // namespace contactlaws::cli
+}  // namespace contactlaws::app

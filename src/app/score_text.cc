@@ -1,15 +1,13 @@
 // Copyright contactlaws authors.
 
-#include "cli/summary_text.h"
+#include "app/score_text.h"
 
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
-#include "cli/impact_csv.h"
-#include "scene/number.h"
-
-namespace contactlaws::cli {
+namespace contactlaws::app {
 
 namespace {
 constexpr double kMm = 1e3;                // per m
@@ -24,35 +22,40 @@ std::string SummaryText(const std::string& name, const Summary& s) {
                      s.median.hi, s.value.p90);
 }
 
-void PrintReadable(std::FILE* out, const std::string& indent, const MeasuredData& data,
-                   const std::vector<ReplayedTrajectory>& replayed, Metric metric,
-                   uint64_t seed) {
+std::string ReadableText(const std::string& indent, const MeasuredData& data,
+                         const std::vector<ReplayedTrajectory>& replayed, Metric metric,
+                         uint64_t seed) {
+  std::string text;
   for (const ScoreArray& a : ReadableScores(data, replayed, metric)) {
     const Summary s = Summarize(a.values, seed);
     if (a.share) {
       const double n = std::round(s.value.mean * s.count);
-      fmt::print(out,
+      fmt::format_to(std::back_inserter(text),
                  "{}another face: {:.1f}% [{:.1f}, {:.1f}] ({:.0f} of {}: the last tilt above "
                  "{:.0f} degrees)\n",
                  indent, 100 * s.value.mean, 100 * s.mean.lo, 100 * s.mean.hi, n, s.count,
                  kAnotherFaceTilt * kDegrees);
     } else {
-      fmt::print(out, "{}{}\n", indent, SummaryText(a.name.empty() ? MetricName(metric) : a.name, s));
+      const std::string name = a.name.empty() ? MetricName(metric) : a.name;
+      fmt::format_to(std::back_inserter(text), "{}{}\n", indent, SummaryText(name, s));
     }
   }
+  return text;
 }
 
-void PrintRestingGaps(std::FILE* out, const std::string& indent, const MeasuredData& data,
-                      const std::vector<ReplayedTrajectory>& replayed, uint64_t seed) {
+std::string RestingGapsText(const std::string& indent, const MeasuredData& data,
+                            const std::vector<ReplayedTrajectory>& replayed, uint64_t seed) {
+  std::string text;
   const RestRule rule;
   for (const RestingGaps& g : SummarizeRestingGaps(data, replayed, rule, seed)) {
     if (g.at_rest == 0) {
-      fmt::print(out, "{}rest: {}: none of {} trajectories ends at rest (slower than {} m/s over "
-                 "its last {} samples)\n", indent, g.body, g.trajectories, rule.speed,
-                 rule.samples);
+      fmt::format_to(std::back_inserter(text),
+                     "{}rest: {}: none of {} trajectories ends at rest (slower than {} m/s "
+                     "over its last {} samples)\n",
+                     indent, g.body, g.trajectories, rule.speed, rule.samples);
       continue;
     }
-    fmt::print(out,
+    fmt::format_to(std::back_inserter(text),
                "{}rest: {}: {} of {} trajectories end at rest (slower than {} m/s over their last "
                "{} samples): height measured {:.2f} mm [{:.2f}, {:.2f}], simulated {:.2f} mm "
                "[{:.2f}, {:.2f}], gap {:+.2f} mm [{:+.2f}, {:+.2f}] (quartiles {:+.2f}, {:+.2f}); "
@@ -65,13 +68,16 @@ void PrintRestingGaps(std::FILE* out, const std::string& indent, const MeasuredD
                g.gap_z_p25 * kMm, g.gap_z_p75 * kMm, g.horizontal.median * kMm,
                g.horizontal.p90 * kMm, g.angle.median * kDegrees);
   }
+  return text;
 }
 
 OffsetEstimate EstimateOffset(const Scene& scene, const std::string& geom,
                               const MeasuredData& data, uint64_t seed) {
   const mjModel* m = scene.model();
   const int g = mj_name2id(m, mjOBJ_GEOM, geom.c_str());
-  if (g < 0) throw Error(fmt::format("{}: no geom '{}' to estimate the offset of", scene.path(), geom));
+  if (g < 0) {
+    throw Error(fmt::format("{}: no geom '{}' to estimate the offset of", scene.path(), geom));
+  }
   UniqueData d(mj_makeData(m));
   mj_kinematics(m, d.get());
   // a plane's normal is its z axis: the third column of its frame
@@ -102,43 +108,4 @@ std::string OffsetText(const std::string& geom, const OffsetEstimate& e) {
       e.interval.lo * kMm, e.interval.hi * kMm, e.geom_z * kMm);
 }
 
-RestOffsets WithRestOffsets(const std::string& params, const Scene& scene,
-                            const MeasuredData& data, uint64_t seed,
-                            std::vector<std::string>* lines) {
-  constexpr std::string_view kSuffix = ".offset=rest";
-  RestOffsets out;
-  size_t start = 0;
-  while (start <= params.size()) {
-    const size_t comma = params.find(',', start);
-    std::string item = params.substr(start, comma - start);
-    if (item.size() > kSuffix.size() &&
-        item.compare(item.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0) {
-      const std::string geom = item.substr(0, item.size() - kSuffix.size());
-      try {
-        const OffsetEstimate e = EstimateOffset(scene, geom, data, seed);
-        if (!(e.interval.lo < e.interval.hi)) {
-          throw Error(fmt::format("the interval [{}, {}] m is empty: nothing to fit within",
-                                  e.interval.lo, e.interval.hi));
-        }
-        lines->push_back(OffsetText(geom, e) + ": fitted within that interval");
-        out.bounds.emplace_back(geom + ".offset", e.interval);
-        item = geom + ".offset=0:1";
-      } catch (const Error& error) {
-        throw Error(fmt::format("--params: {}: {}", item, error.what()));
-      }
-    }
-    out.text += (out.text.empty() ? "" : ",") + item;
-    start = comma == std::string::npos ? params.size() + 1 : comma + 1;
-  }
-  return out;
-}
-
-void SetRestBounds(const RestOffsets& offsets, std::vector<FitParameter>* parameters) {
-  for (const auto& [key, interval] : offsets.bounds) {
-    for (FitParameter& p : *parameters) {
-      if (p.key == key) p.lo = interval.lo, p.hi = interval.hi;
-    }
-  }
-}
-
-}  // namespace contactlaws::cli
+}  // namespace contactlaws::app

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "cli/arena.h"
+#include "app/arena.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,7 +9,7 @@
 #include "contactlaws/error.h"
 #include "mujoco/hooks.h"
 
-namespace contactlaws::cli {
+namespace contactlaws::app {
 namespace {
 
 // MuJoCo 2.2.2's compiler (user_model.cc): njmax when the scene gives none.
@@ -67,4 +67,4 @@ UniqueModel LoadSizedModel(const std::string& path, const Overrides& overrides) 
   return model;
 }
 
-}  // namespace contactlaws::cli
+}  // namespace contactlaws::app

@@ -8,8 +8,8 @@
 // constraints, friction losses and limits. What it buys: a run's
 // mj_makeData, once per run of a sweep (docs/performance.md).
 
-#ifndef CONTACTLAWS_CLI_ARENA_H_
-#define CONTACTLAWS_CLI_ARENA_H_
+#ifndef CONTACTLAWS_APP_ARENA_H_
+#define CONTACTLAWS_APP_ARENA_H_
 
 #include <string>
 
@@ -18,7 +18,7 @@
 #include "contactlaws/contact_model.h"
 #include "contactlaws/model_io.h"
 
-namespace contactlaws::cli {
+namespace contactlaws::app {
 
 // Sizes m's arena to the scene before mj_makeData: njmax to the rows it can
 // need, nstack by MuJoCo's own heuristic for that njmax plus what the
@@ -33,6 +33,6 @@ void SizeArena(mjModel* m, const ContactModel& cm);
 // With CONTACTLAWS_ARENA=mujoco in the environment, MuJoCo's sizes stay.
 UniqueModel LoadSizedModel(const std::string& path, const Overrides& overrides);
 
-}  // namespace contactlaws::cli
+}  // namespace contactlaws::app
 
-#endif  // CONTACTLAWS_CLI_ARENA_H_
+#endif  // CONTACTLAWS_APP_ARENA_H_
