@@ -77,15 +77,10 @@ cli::SweepArgs SweepArgsOf(const std::string& scene, const py::dict& kwargs) {
   return args;
 }
 
-// data: a path, or a table's columns as the Python side hands them over:
-// {"source": str, "trajectory": [str], "time": float64 array, "columns":
-// [str], "values": [float64 array]} (contactlaws._measured_columns).
-void TakeData(const py::dict& kwargs, cli::ReplayArgs* args) {
-  if (!kwargs.contains("data") || !py::isinstance<py::dict>(kwargs["data"])) {
-    Take(kwargs, "data", &args->data);
-    return;
-  }
-  const py::dict table = kwargs["data"].cast<py::dict>();
+// A table's columns as the Python side hands them over: {"source": str,
+// "trajectory": [str], "time": float64 array, "columns": [str], "values":
+// [float64 array]} (contactlaws._data), checked as a file is.
+MeasuredData MeasuredOf(const py::dict& table) {
   const auto doubles = [](const py::handle& h) {
     const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(h);
     if (!a || a.ndim() != 1) throw py::type_error("data: a column is not a 1-D array of numbers");
@@ -93,12 +88,21 @@ void TakeData(const py::dict& kwargs, cli::ReplayArgs* args) {
   };
   std::vector<std::vector<double>> values;
   for (const py::handle column : table["values"]) values.push_back(doubles(column));
-  const std::string source = table["source"].cast<std::string>();
-  args->data = source;
-  args->measured = MeasuredFromColumns(table["trajectory"].cast<std::vector<std::string>>(),
-                                       doubles(table["time"]),
-                                       table["columns"].cast<std::vector<std::string>>(), values,
-                                       source);
+  return MeasuredFromColumns(table["trajectory"].cast<std::vector<std::string>>(),
+                             doubles(table["time"]),
+                             table["columns"].cast<std::vector<std::string>>(), values,
+                             table["source"].cast<std::string>());
+}
+
+// data: a path, or a table (MeasuredOf).
+void TakeData(const py::dict& kwargs, cli::ReplayArgs* args) {
+  if (!kwargs.contains("data") || !py::isinstance<py::dict>(kwargs["data"])) {
+    Take(kwargs, "data", &args->data);
+    return;
+  }
+  const py::dict table = kwargs["data"].cast<py::dict>();
+  args->data = table["source"].cast<std::string>();
+  args->measured = MeasuredOf(table);
 }
 
 void TakeReplay(const std::string& scene, const py::dict& kwargs, cli::ReplayArgs* args) {
@@ -193,6 +197,40 @@ py::array_t<T> Array(const std::vector<T>& values) {
   return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
+// A result table as {name: column}: a float64 array (NaN: not known), an
+// int64 array (a count) or a list of str, in the table's order.
+py::dict TableColumns(const app::Table& table) {
+  py::dict columns;
+  for (const app::Column& c : table.columns()) {
+    switch (c.kind) {
+      case app::Column::Kind::kText: columns[py::str(c.name)] = c.text; break;
+      case app::Column::Kind::kCount:
+        columns[py::str(c.name)] = Array(std::vector<int64_t>(c.numbers.begin(), c.numbers.end()));
+        break;
+      case app::Column::Kind::kNumber: columns[py::str(c.name)] = Array(c.numbers); break;
+    }
+  }
+  return columns;
+}
+
+// Simulated samples of data's trajectories: {"names": every trajectory's
+// name, "trajectory": each row's index into names, "time": s, "columns":
+// the data's, "values": a rows x columns array}.
+py::dict SimulatedColumns(const MeasuredData& data, const app::SimulatedSamples& samples) {
+  std::vector<std::string> names;
+  for (const MeasuredTrajectory& t : data.trajectories) names.push_back(t.name);
+  const auto width = static_cast<py::ssize_t>(samples.columns.size());
+  const auto rows = static_cast<py::ssize_t>(samples.time.size());
+  py::dict out;
+  out["names"] = names;
+  out["trajectory"] =
+      Array(std::vector<int64_t>(samples.trajectory.begin(), samples.trajectory.end()));
+  out["time"] = Array(samples.time);
+  out["columns"] = samples.columns;
+  out["values"] = py::array_t<double>({rows, width}, samples.values.data());
+  return out;
+}
+
 // (exit status, printed report) of command given args with report.
 template <typename Args>
 py::tuple Call(int (*command)(const Args&), Args args) {
@@ -214,10 +252,9 @@ py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const st
   return Call(&cli::RestitutionCommand, std::move(args));
 }
 
-// replay's results as columns: {"scores": {column: array or names},
-// "simulated": {"columns": [...], "trajectory": index array, "time": array,
-// "values": rows x columns array}, "names": the trajectories', "report",
-// "diverged", "settled": text}. No file written, nothing printed.
+// replay's results as columns: {"scores": TableColumns, "simulated":
+// SimulatedColumns, "report", "diverged", "settled": text}. No file
+// written, nothing printed.
 py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
   cli::ReplayArgs args;
   TakeReplay(scene_path, kwargs, &args);
@@ -232,52 +269,62 @@ py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
   const app::ReplayJob job(scene, data, std::move(request));
   const app::ReplayResult result = Interruptible([&] { return job.Run(); }, &stop);
 
-  const app::ReplayScores& s = result.scores;
-  std::vector<std::string> status;
-  for (const ReplayedTrajectory::Status st : s.status) status.emplace_back(app::StatusName(st));
-  py::dict scores;
-  scores["trajectory"] = s.trajectory;
-  scores["samples"] = Array(std::vector<int64_t>(s.samples.begin(), s.samples.end()));
-  scores["start"] = Array(std::vector<int64_t>(s.start.begin(), s.start.end()));
-  scores["e_q"] = Array(s.e_q);
-  scores["position_rms"] = Array(s.position_rms);
-  scores["angle_rms"] = Array(s.angle_rms);
-  scores["joint_rms"] = Array(s.joint_rms);
-  scores["weighted"] = Array(s.weighted);
-  scores["status"] = status;
-
-  const app::SimulatedSamples& t = result.simulated;
-  const py::ssize_t width = static_cast<py::ssize_t>(t.columns.size());
-  const py::ssize_t rows = static_cast<py::ssize_t>(t.time.size());
-  py::dict simulated;
-  simulated["columns"] = t.columns;
-  simulated["trajectory"] = Array(std::vector<int64_t>(t.trajectory.begin(), t.trajectory.end()));
-  simulated["time"] = Array(t.time);
-  simulated["values"] = py::array_t<double>({rows, width}, t.values.data());
-
   py::dict out;
-  out["scores"] = scores;
-  out["simulated"] = simulated;
+  out["scores"] = TableColumns(app::ScoresTable(result.scores));
+  out["simulated"] = SimulatedColumns(data, result.simulated);
   out["report"] = result.report;
   out["diverged"] = KeywordSpelling(result.diverged);
   out["settled"] = result.settled;
   return out;
 }
 
-py::tuple Fit(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
+// fit's results as columns: {"ranking", "errors", "folds", "profile":
+// tables (TableColumns; folds and profile None when not asked),
+// "best_trajectories": SimulatedColumns, "best_tag", "report": text}. No
+// file written, nothing printed; Ctrl-C raises KeyboardInterrupt.
+py::dict Fit(const std::string& scene_path, const py::dict& kwargs) {
   cli::FitArgs args;
-  TakeReplay(scene, kwargs, &args);
+  TakeReplay(scene_path, kwargs, &args);
   Take(kwargs, "params", &args.params);
   Take(kwargs, "initial", &args.initial);
   Take(kwargs, "laws", &args.laws);
   Take(kwargs, "frictions", &args.frictions);
-  Take(kwargs, "validate", &args.validate);
   Take(kwargs, "budget", &args.budget);
   Take(kwargs, "folds", &args.folds);
   Take(kwargs, "trim", &args.trim);
   Take(kwargs, "seed", &args.seed);
-  args.output = dir;
-  return Call(&cli::FitCommand, std::move(args));
+  Take(kwargs, "profile", &args.profile);
+  Take(kwargs, "profile_points", &args.profile_points);
+  Take(kwargs, "profile_budget", &args.profile_budget);
+  const Scene scene = app::LoadReplayScene(args.scene);
+  const MeasuredData train = cli::DataOf(args);
+  std::optional<MeasuredData> validate;
+  if (kwargs.contains("validate") && py::isinstance<py::dict>(kwargs["validate"])) {
+    validate = MeasuredOf(kwargs["validate"].cast<py::dict>());
+  } else if (const auto path = OptionalText(kwargs, "validate")) {
+    validate = cli::ReadData("--validate", *path);
+  }
+  std::vector<std::string> offset_lines;
+  app::FitRequest request = cli::ParseFitRequest(args, scene, train, &offset_lines);
+  std::atomic<bool> stop{false};
+  request.stop = app::StopToken(&stop);
+  const app::FitJob job =
+      cli::CheckedFitJob(scene, train, validate ? &*validate : nullptr, std::move(request));
+  const app::FitOutcome outcome = Interruptible([&] { return job.Run(); }, &stop);
+  // stopped before a first evaluation: only by Ctrl-C, raised above
+  if (outcome.nothing) throw Error("fit: stopped before a first evaluation");
+  std::string report;
+  for (const std::string& line : offset_lines) report += line + "\n";
+  py::dict out;
+  out["ranking"] = TableColumns(outcome.ranking);
+  out["errors"] = TableColumns(outcome.errors);
+  out["folds"] = args.folds ? py::object(TableColumns(outcome.folds)) : py::none();
+  out["profile"] = outcome.profiled ? py::object(TableColumns(outcome.profile)) : py::none();
+  out["best_trajectories"] =
+      SimulatedColumns(validate ? *validate : train, outcome.best_trajectories);
+  out["best_tag"] = outcome.best_tag;
+  out["report"] = report + outcome.report;
+  return out;
 }
 
 py::tuple Check(const std::string& scene, const py::dict& kwargs) {

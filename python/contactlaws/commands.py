@@ -162,14 +162,20 @@ class ReplayResult:
         self.report = report
 
 
+def _simulated_frame(simulated):
+    """The library's simulated samples (python/file_commands.cc's
+    SimulatedColumns) as trajectories.csv's table."""
+    names = _np.asarray(simulated["names"], dtype=object)
+    frame = _pd.DataFrame(simulated["values"], columns=simulated["columns"])
+    frame.insert(0, "time", simulated["time"])
+    frame.insert(0, "trajectory", names[simulated["trajectory"]])
+    return frame
+
+
 def _replay_result(scene, result):
     """ReplayResult of the library's columns (python/file_commands.cc)."""
     scores = _pd.DataFrame(result["scores"])
-    simulated = result["simulated"]
-    names = _np.asarray(scores["trajectory"], dtype=object)
-    trajectories = _pd.DataFrame(simulated["values"], columns=simulated["columns"])
-    trajectories.insert(0, "time", simulated["time"])
-    trajectories.insert(0, "trajectory", names[simulated["trajectory"]])
+    trajectories = _simulated_frame(result["simulated"])
     if result["diverged"]:
         _warnings.warn(f"{scene}: {result['diverged']}", stacklevel=3)
     if result["settled"]:
@@ -202,57 +208,69 @@ def replay(scene, data, *, start="first", refit_height=None, refit_lead=3, refit
 
 
 class FitResult:
-    """fit's files: .ranking (one row per law/friction combination, best
-    first: the fitted parameters, train_ and validate_ mean, median, p90 of
-    the metric, evaluations, wall_seconds, status), .errors (each
-    trajectory's scores at the fitted values), .best_trajectories (the best
-    combination's simulated samples), .best_tag (the scene's tag line with
-    the fitted values); .report, the printed ranking."""
+    """fit's results, as its files: .ranking (one row per law/friction
+    combination, best first: the fitted parameters, train_, validate_ and
+    cv_ summaries of the metric with their intervals, evaluations,
+    wall_seconds, status), .errors (each trajectory's scores at the fitted
+    values), .best_trajectories (the best combination's simulated samples),
+    .best_tag (the scene's tag line with the fitted values), .folds (each
+    training trajectory's fold, with folds=), .profile (the winner's
+    profile, with profile=); .report, the printed ranking."""
 
-    def __init__(self, ranking, errors, best_trajectories, best_tag, report):
+    def __init__(self, ranking, errors, best_trajectories, best_tag, report, folds=None,
+                 profile=None):
         self.ranking = ranking
         self.errors = errors
         self.best_trajectories = best_trajectories
         self.best_tag = best_tag
         self.report = report
+        self.folds = folds
+        self.profile = profile
 
 
 def fit(scene, data, params, *, initial=None, laws=None, frictions=None, validate=None,
-        budget=200, folds=None, trim=None, seed=1, start="first", refit_height=None, refit_lead=3, refit_min_samples=4, metric="e_q",
-        weights=None, length=None, timestep=None, max_timestep=None, accuracy=None,
-        integrator=None, law=None, restitution=None, dissipation=None, friction=None, mu=None,
-        set=None, jobs=None):
+        budget=200, folds=None, trim=None, profile=None, profile_points=None,
+        profile_budget=None, seed=1, start="first", refit_height=None, refit_lead=3,
+        refit_min_samples=4, metric="e_q", weights=None, length=None, timestep=None,
+        max_timestep=None, accuracy=None, integrator=None, law=None, restitution=None,
+        dissipation=None, friction=None, mu=None, set=None, jobs=None):
     """Tag and model parameters identified from measured trajectories, as
     `contactlaws fit` (docs/identification.md).
 
     params: "KEY=LO:HI[:log],..." or a list of them (tag keys in their units,
     BODY.mass_scale, GEOM.offset m, mujoco.*). laws, frictions: the
     combinations to fit ("all", names, or lists). validate: trajectories not
-    fitted on. budget: evaluations per combination; seed: the search's seed.
+    fitted on (a path or a DataFrame, as data). budget: evaluations per
+    combination; seed: the search's seed.
     folds: K-fold cross-validation over the trajectories, the ranking by the
     held-out score (ranking's cv_* columns). trim: in [0, 0.5), the share of
     the worst trajectories each score leaves out (a trimmed mean).
     initial: where the search starts, {KEY: VALUE} (or "KEY=VALUE,...") of
     params' keys in their units, the others at their range's middle; every
     combination starts there, and its first evaluation is that point.
-    The other options as replay's. Returns a FitResult. Ctrl-C stops the
-    search after its current evaluation and raises KeyboardInterrupt.
+    profile: "all", a key of params or a list of them: the winner's profile
+    along each (profile_points per parameter, the others re-fitted over
+    profile_budget evaluations at each; FitResult.profile).
+    The other options as replay's. Returns a FitResult, computed in memory:
+    no file written. Ctrl-C stops the search after its current evaluation
+    and raises KeyboardInterrupt.
     """
     options = _replay_options(data, start, refit_height, refit_lead, refit_min_samples, metric,
                               weights, length, timestep, max_timestep, accuracy, integrator,
                               law, restitution, dissipation, friction, mu, set, jobs)
     options.update(params=_text_list(params), initial=_assignments(initial),
-                   laws=_text_list(laws),
-                   frictions=_text_list(frictions),
-                   validate=None if validate is None else str(validate), budget=budget,
-                   folds=folds, trim=trim, seed=seed)
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        _, report = _contactlaws._fit(str(scene), options, folder)
-        with open(_os.path.join(folder, "best_tag.txt")) as tag:
-            best_tag = tag.read()
-        return FitResult(*(_read(_os.path.join(folder, f"{name}.csv"))
-                           for name in ("ranking", "errors", "best_trajectories")),
-                         best_tag, report)
+                   laws=_text_list(laws), frictions=_text_list(frictions),
+                   validate=None if validate is None else _data(validate), budget=budget,
+                   folds=folds, trim=trim, profile=_text_list(profile),
+                   profile_points=profile_points, profile_budget=profile_budget, seed=seed)
+    result = _contactlaws._fit(str(scene), options)
+
+    def frame(name):
+        return None if result[name] is None else _pd.DataFrame(result[name])
+
+    return FitResult(frame("ranking"), frame("errors"),
+                     _simulated_frame(result["best_trajectories"]), result["best_tag"],
+                     result["report"], frame("folds"), frame("profile"))
 
 
 class LawTables:

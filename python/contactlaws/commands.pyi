@@ -29,6 +29,8 @@ class FitResult:
     best_trajectories: pd.DataFrame
     best_tag: str
     report: str
+    folds: Optional[pd.DataFrame]
+    profile: Optional[pd.DataFrame]
 
 class LawTables:
     laws: pd.DataFrame
@@ -64,8 +66,11 @@ def replay(scene: Scene, data: Data, *, start: Literal["first", "refit"] = ...,
 
 def fit(scene: Scene, data: Data, params: Names, *,
         initial: Union[Mapping[str, Number], Names, None] = ..., laws: Optional[Names] = ...,
-        frictions: Optional[Names] = ..., validate: Optional[Scene] = ..., budget: int = ...,
-        folds: Optional[int] = ..., trim: Optional[Number] = ..., seed: int = ..., start: Literal["first", "refit"] = ...,
+        frictions: Optional[Names] = ..., validate: Optional[Data] = ..., budget: int = ...,
+        folds: Optional[int] = ..., trim: Optional[Number] = ...,
+        profile: Optional[Names] = ..., profile_points: Optional[int] = ...,
+        profile_budget: Optional[int] = ..., seed: int = ...,
+        start: Literal["first", "refit"] = ...,
         refit_height: Optional[Number] = ..., refit_lead: int = ...,
         refit_min_samples: int = ..., metric: str = ..., weights: Optional[Names] = ...,
         length: Optional[Number] = ..., timestep: Union[Number, Literal["auto"], None] = ...,

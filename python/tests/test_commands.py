@@ -147,20 +147,35 @@ def test_replay_keeps_numbered_trajectories_names_and_writes_no_file(tmp_path, m
     assert_same_numbers(result.trajectories, tmp_path / "trajectories.csv")
 
 
-def test_fit_gives_the_command_lines_files(tmp_path, measured):
-    flags = ["--params=restitution=0.3:0.9", "--law=flores", "--timestep=1e-4", "--budget=6"]
+def assert_same_ranking(frame, path):
+    """wall_seconds is the one column that is not a result."""
+    frame = frame.drop(columns="wall_seconds")
+    types = {c: str if frame[c].dtype == object else frame[c].dtype for c in frame.columns}
+    expected = pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
+                           na_values=[""], dtype=types).drop(columns="wall_seconds")
+    pd.testing.assert_frame_equal(frame, expected, check_exact=True)
+
+
+def test_fit_gives_the_command_lines_files(tmp_path, measured, monkeypatch):
+    flags = ["--params=restitution=0.3:0.9", "--law=flores", "--timestep=1e-4", "--budget=6",
+             "--folds=2", "--profile=all", "--profile-points=3"]
     cli("fit", BALL, "--data", str(measured), *flags, "--quiet", "--output", str(tmp_path))
+
+    # the results come back as the library's columns: no folder, no CSV read back
+    def no_file(*args, **kwargs):
+        raise AssertionError("fit went through a file")
+    monkeypatch.setattr(contactlaws.commands._tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
     result = contactlaws.fit(BALL, measured, "restitution=0.3:0.9", law="flores",
-                             timestep=1e-4, budget=6)
-    for name in ("ranking", "errors", "best_trajectories"):
-        frame = getattr(result, name)
-        if name == "ranking":  # wall_seconds is the one column that is not a result
-            frame = frame.drop(columns="wall_seconds")
-            expected = read(tmp_path / "ranking.csv").drop(columns="wall_seconds")
-            pd.testing.assert_frame_equal(frame, expected, check_exact=True)
-        else:
-            assert_same(frame, tmp_path / f"{name}.csv")
+                             timestep=1e-4, budget=6, folds=2, profile="all", profile_points=3)
+    monkeypatch.undo()
+    assert_same_ranking(result.ranking, tmp_path / "ranking.csv")
+    for name in ("errors", "best_trajectories", "folds", "profile"):
+        assert_same_numbers(getattr(result, name), tmp_path / f"{name}.csv")
     assert result.best_tag == (tmp_path / "best_tag.txt").read_text()
+    assert list(result.profile["key"].unique()) == ["restitution"]
+    assert "\n  restitution: " in result.report  # the profile's line
+    assert result.report.startswith("law/friction")
 
 
 def test_fit_starts_where_it_is_told(tmp_path, measured):
@@ -170,11 +185,9 @@ def test_fit_starts_where_it_is_told(tmp_path, measured):
         "--output", str(tmp_path))
     result = contactlaws.fit(BALL, measured, "restitution=0.3:0.9", initial={"restitution": 0.45},
                              law="flores", timestep=1e-4, budget=1)
-    frame = result.ranking.drop(columns="wall_seconds")
-    expected = read(tmp_path / "ranking.csv").drop(columns="wall_seconds")
-    pd.testing.assert_frame_equal(frame, expected, check_exact=True)
-    assert list(frame["restitution"]) == [0.45]
-    assert list(frame["evaluations"]) == [1]
+    assert_same_ranking(result.ranking, tmp_path / "ranking.csv")
+    assert list(result.ranking["restitution"]) == [0.45]
+    assert list(result.ranking["evaluations"]) == [1]
     # outside its bounds: the command line's message
     refused = cli("fit", BALL, "--data", str(measured), *flags, "--initial=restitution=0.95",
                   check=False)

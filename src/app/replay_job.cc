@@ -91,6 +91,25 @@ SimulatedSamples SimulatedOf(const MeasuredData& data,
   return out;
 }
 
+Table ScoresTable(const ReplayScores& s) {
+  using Kind = Column::Kind;
+  Table table({{"trajectory", Kind::kText},
+               {"samples", Kind::kCount},
+               {"start", Kind::kCount},
+               {"e_q", Kind::kNumber},
+               {"position_rms", Kind::kNumber},
+               {"angle_rms", Kind::kNumber},
+               {"joint_rms", Kind::kNumber},
+               {"weighted", Kind::kNumber},
+               {"status", Kind::kText}});
+  for (size_t i = 0; i < s.trajectory.size(); ++i) {
+    table.AddRow({Text(s.trajectory[i]), Count(s.samples[i]), Count(s.start[i]), Number(s.e_q[i]),
+                  Number(s.position_rms[i]), Number(s.angle_rms[i]), Number(s.joint_rms[i]),
+                  Number(s.weighted[i]), Text(StatusName(s.status[i]))});
+  }
+  return table;
+}
+
 const char* StatusName(ReplayedTrajectory::Status status) {
   switch (status) {
     case ReplayedTrajectory::Status::kComplete: return "complete";

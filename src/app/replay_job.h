@@ -17,6 +17,7 @@
 
 #include "app/score_text.h"
 #include "app/stop.h"
+#include "app/table.h"
 #include "contactlaws/contactlaws.h"
 
 namespace contactlaws::app {
@@ -70,6 +71,10 @@ struct ReplayResult {
 ReplayScores ScoresOf(const MeasuredData& data, const std::vector<ReplayedTrajectory>& replayed);
 SimulatedSamples SimulatedOf(const MeasuredData& data,
                              const std::vector<ReplayedTrajectory>& replayed);
+
+// scores as a table (replay.csv's columns): trajectory, samples, start,
+// e_q, position_rms, angle_rms, joint_rms, weighted, status.
+Table ScoresTable(const ReplayScores& scores);
 
 // "complete", "diverged" or "interrupted".
 const char* StatusName(ReplayedTrajectory::Status status);

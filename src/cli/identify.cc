@@ -99,26 +99,17 @@ MeasuredData ReadData(const std::string& option, const std::string& path) {
   return ReadMeasuredData(path);
 }
 
-std::vector<std::string> ReplayColumns() {
-  return {"trajectory", "samples", "start", "e_q", "position_rms", "angle_rms", "joint_rms",
-          "weighted", "status"};
-}
-
-std::vector<std::string> ScoreFields(const app::ReplayScores& scores, size_t i) {
-  return {scores.trajectory[i],
-          fmt::format("{}", scores.samples[i]),
-          fmt::format("{}", scores.start[i]),
-          Field(scores.e_q[i]),
-          Field(scores.position_rms[i]),
-          Field(scores.angle_rms[i]),
-          Field(scores.joint_rms[i]),
-          Field(scores.weighted[i]),
-          app::StatusName(scores.status[i])};
-}
-
-void WriteScores(const app::ReplayScores& scores, CsvFile* file) {
-  file->Header(ReplayColumns());
-  for (size_t i = 0; i < scores.trajectory.size(); ++i) file->Fields(ScoreFields(scores, i));
+void WriteTable(const app::Table& table, CsvFile* file) {
+  std::vector<std::string> fields;
+  for (const app::Column& c : table.columns()) fields.push_back(c.name);
+  file->Header(fields);
+  for (size_t i = 0; i < table.rows(); ++i) {
+    fields.clear();
+    for (const app::Column& c : table.columns()) {
+      fields.push_back(c.kind == app::Column::Kind::kText ? c.text[i] : Field(c.numbers[i]));
+    }
+    file->Fields(fields);
+  }
 }
 
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/fit_job.h"
 #include "app/replay_job.h"
 #include "cli/csv_file.h"
 #include "cli/options.h"
@@ -69,11 +70,19 @@ MeasuredData ReadData(const std::string& option, const std::string& path);
 // args.measured, else ReadData("--data", args.data).
 MeasuredData DataOf(const ReplayArgs& args);
 
-// replay.csv's columns, one trajectory's fields, and the file of every
-// trajectory's.
-std::vector<std::string> ReplayColumns();
-std::vector<std::string> ScoreFields(const app::ReplayScores& scores, size_t i);
-void WriteScores(const app::ReplayScores& scores, CsvFile* file);
+// fit's request of args (every option but the stop and the progress): the
+// parameters (GEOM.offset=rest bounded by the data's estimate, whose lines
+// go to offset_lines), the combinations, the budget, folds, trim, profile.
+app::FitRequest ParseFitRequest(const FitArgs& args, const Scene& scene,
+                                const MeasuredData& train_data,
+                                std::vector<std::string>* offset_lines);
+// The job of request, its refusals under --params.
+app::FitJob CheckedFitJob(const Scene& scene, const MeasuredData& train,
+                          const MeasuredData* validate, app::FitRequest request);
+
+// A result table as CSV: its columns' names, then a row per row, numbers
+// in their shortest exact form and empty where not known.
+void WriteTable(const app::Table& table, CsvFile* file);
 
 // The simulated samples in the data's own columns (trajectories.csv).
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,

@@ -34,7 +34,7 @@ int ReplayCommand(const ReplayArgs& args) {
     return kExitInterrupted;
   }
   if (scores) {
-    WriteScores(result.scores, &*scores);
+    WriteTable(app::ScoresTable(result.scores), &*scores);
     WriteSimulated(data, result.simulated, &*simulated);
     scores->Commit();
     simulated->Commit();
