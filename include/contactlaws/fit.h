@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
 // Fit: the parameters of a scene identified from measured trajectories, by
-// minimising the mean score (score.h) of Replay over them with NLopt's
+// minimising the mean score (replay.h) of Replay over them with NLopt's
 // optimisers. A parameter is
 //   - a numeric key of the contactlaw tags (restitution, stiffness,
 //     exponent, dissipation, mu_static, mu_kinetic, tangential_stiffness,
@@ -34,8 +34,9 @@
 #include <string_view>
 #include <vector>
 
+#include <mujoco/mujoco.h>
+
 #include "contactlaws/replay.h"
-#include "contactlaws/statistics.h"
 
 namespace contactlaws {
 
@@ -113,7 +114,7 @@ struct FitOptions {
   std::vector<FitParameter> parameters;
   // The share of the trajectories, worst first, each evaluation's score
   // leaves out: 0 minimises the mean, 0.2 the mean of the best 80%
-  // (TrimmedMean, statistics.h). In [0, 0.5).
+  // (TrimmedMean, replay.h). In [0, 0.5).
   double trim = 0;
   int budget = 200;    // evaluations, each a replay of every trajectory
   uint64_t seed = 1;
@@ -141,7 +142,7 @@ FitResult Fit(const Replay& replay, const FitOptions& options);
 // The mean of metric over replayed trajectories (0 when empty), summed in order.
 double MeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric);
 
-// MeanScore at trim 0, else TrimmedMean (statistics.h) of metric.
+// MeanScore at trim 0, else TrimmedMean (replay.h) of metric.
 double TrimmedMeanScore(const std::vector<ReplayedTrajectory>& replayed, Metric metric,
                         double trim);
 // Profile: what the data determine about each parameter of a fitted point.
@@ -210,6 +211,129 @@ std::vector<ParameterProfile> Profile(const Replay& replay, const FitOptions& fi
                                       const std::vector<double>& fitted,
                                       const std::vector<size_t>& which,
                                       const ProfileOptions& options);
+
+// ---------------------------------------------------------------------------
+// Where measured bodies come to rest, and how far a replay's last state is
+// from the measured one (docs/identification.md, "Resting poses"):
+//
+//   at rest      a trajectory whose body moves slower than RestRule::speed
+//                between each of its last RestRule::samples samples;
+//   plane height a body at rest on a plane: its resting height (the mean
+//                over the samples found at rest) less its support distance
+//                (the depth of its lowest point below its origin on the
+//                face it rests on: a cube's half side), one estimate per
+//                trajectory at rest;
+//   end gaps     the last sample's simulated position less the measured
+//                (height and horizontal distance), the rotation between the
+//                two orientations, and the tilt: the angle between the
+//                vertical seen from the simulated body and from the measured
+//                one, which a turn about the vertical leaves at 0. A tilt
+//                above 45 degrees puts another side of a cube up: "another
+//                face".
+
+// The cube tosses' tracking (148 Hz) moves a resting cube by ~0.008 m/s
+// from sample to sample (the median over the last 5 intervals of the
+// training tosses); 0.02 m/s is 2.5 times that, 0.14 mm per sample.
+struct RestRule {
+  double speed = 0.02;  // m/s
+  int samples = 5;      // the last intervals checked
+};
+
+// A body of the data: its name and its x and qw columns (qw -1 when its
+// orientation is not measured).
+struct MeasuredBodyColumns {
+  std::string name;
+  int x = -1, qw = -1;
+};
+// Every NAME with NAME.x, NAME.y and NAME.z columns, in the data's order.
+std::vector<MeasuredBodyColumns> MeasuredBodies(const MeasuredData& data);
+
+// Whether body ends trajectory t at rest under rule (a trajectory shorter
+// than rule.samples + 1 samples does not).
+bool EndsAtRest(const MeasuredData& data, const MeasuredTrajectory& t,
+                const MeasuredBodyColumns& body, const RestRule& rule);
+
+// How far body's lowest point lies below its origin along the world's z,
+// at orientation q (w, x, y, z): the largest support distance of its
+// colliding geoms (box, sphere, capsule, cylinder, ellipsoid). resting: each
+// geom on its face, end or side nearest to facing down (the world's -z
+// snapped to the geom's nearest axis), as a body at rest lies; a tracked
+// orientation's error of a degree, which the support function's corner
+// turns into a bias (+0.7 mm on the tosses' resting cubes), then drops out.
+// Throws Error naming the body for another geom type or a body without
+// colliding geoms.
+double SupportDistance(const mjModel* m, int body, const double q[4], bool resting = false);
+
+// At least this many trajectories at rest for a plane's estimate: fewer
+// leave its bootstrap interval resampling one or two values.
+inline constexpr int kMinimumAtRest = 5;
+
+struct PlaneEstimate {
+  int trajectories = 0;  // of every measured body
+  int at_rest = 0;
+  Summary height;  // the plane's height, m: median and its interval, per trajectory at rest
+  Distribution support;  // the support distances, m
+};
+// The height of the plane the data's bodies rest on (bodies of m named as
+// in the data; orientations the model's own when not measured). Throws
+// Error, in one line naming the data, the rule and how many came to rest,
+// when fewer than kMinimumAtRest did.
+PlaneEstimate EstimatePlaneHeight(const mjModel* m, const MeasuredData& data,
+                                  const RestRule& rule, uint64_t seed);
+
+// One body's gaps at trajectory i's last sample.
+struct EndGap {
+  bool at_rest = false;       // the measured trajectory ends at rest
+  double measured_z = 0;      // m
+  double simulated_z = 0;     // m
+  double horizontal = 0;      // m
+  double angle = 0;           // rad, the whole rotation (0 unmeasured)
+  double tilt = 0;            // rad, the vertical's (0 unmeasured)
+};
+// Per trajectory, per body of MeasuredBodies (its order): replayed[i].last
+// against data's last sample.
+std::vector<std::vector<EndGap>> EndGaps(const MeasuredData& data,
+                                         const std::vector<ReplayedTrajectory>& replayed,
+                                         const RestRule& rule);
+
+// A cube's neighbouring faces are 90 degrees apart: half that.
+inline constexpr double kAnotherFaceTilt = 0.7853981633974483;  // pi / 4, rad
+
+// ---------------------------------------------------------------------------
+// Per-trajectory scores in units a person reads, beside the fit's metric
+// (docs/identification.md, "Scores a person reads"), and the resting gaps
+// summarised per body. Each array is one value per replayed trajectory, in
+// the data's order: Summarize (replay.h) summarises them.
+
+struct ScoreArray {
+  // "" for the metric itself (ranking.csv's train_mean ...), else the
+  // column's stem: "e_q", "position_mm", "angle_deg", "final_angle_deg",
+  // "another_face"
+  std::string name;
+  std::vector<double> values;
+  // a share (values 0 or 1): its mean alone is read, with its interval
+  bool share = false;
+};
+
+// metric's values; e_q's when metric is another; the position and angle
+// RMS in mm and degrees; the last sample's rotation (degrees, the largest
+// of the bodies'); another face: 1 where a body's last tilt (above)
+// exceeds kAnotherFaceTilt.
+std::vector<ScoreArray> ReadableScores(const MeasuredData& data,
+                                       const std::vector<ReplayedTrajectory>& replayed,
+                                       Metric metric);
+
+// One body's resting gaps over the trajectories that end at rest.
+struct RestingGaps {
+  std::string body;
+  int trajectories = 0, at_rest = 0;
+  Summary measured_z, simulated_z, gap_z;  // m; gap: simulated - measured
+  double gap_z_p25 = 0, gap_z_p75 = 0;     // m, its spread
+  Distribution horizontal, angle;          // m, rad
+};
+std::vector<RestingGaps> SummarizeRestingGaps(const MeasuredData& data,
+                                              const std::vector<ReplayedTrajectory>& replayed,
+                                              const RestRule& rule, uint64_t seed);
 
 }  // namespace contactlaws
 

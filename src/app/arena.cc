@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "mujoco/hooks.h"
 
 namespace contactlaws::app {

@@ -16,7 +16,6 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contact_model.h"
-#include "contactlaws/model_io.h"
 
 namespace contactlaws::app {
 

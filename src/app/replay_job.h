@@ -41,7 +41,7 @@ struct ReplayScores {
   std::vector<std::string> trajectory;
   std::vector<int> samples;  // compared
   std::vector<int> start;    // the sample the simulation started from
-  // the metrics (score.h), NaN where not known
+  // the metrics (replay.h), NaN where not known
   std::vector<double> e_q, position_rms, angle_rms, joint_rms, weighted;
   std::vector<ReplayedTrajectory::Status> status;
 };

@@ -1,9 +1,9 @@
 // Copyright contactlaws authors.
 //
-// What replay and fit say of the per-trajectory scores (readable.h) to a
+// What replay and fit say of the per-trajectory scores (fit.h's ReadableScores) to a
 // person: each mean and median with its 95% bootstrap interval, the share
 // ending on another face, the resting gaps per body; and the board's offset
-// estimated from where the data rest (rest.h). The numbers themselves are
+// estimated from where the data rest (fit.h). The numbers themselves are
 // the results' columns; these are their printed lines, the same for the
 // command line and Python.
 

@@ -33,7 +33,7 @@
 
 #include "cli/cluster.h"
 #include "cli/commands.h"
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/number.h"
 
 namespace contactlaws::cli {

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "cli/cluster.h"
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws::cli {
 

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws::cli {
 namespace {

@@ -22,7 +22,7 @@
 #include "cli/commands.h"
 #include "cli/programs.h"
 #include "cli/report.h"
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "render/frame_renderer.h"
 #include "render/frame_sink.h"
 #include "render/scene_look.h"

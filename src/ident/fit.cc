@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 #include <nlopt.h>
 
-#include "contactlaws/error.h"
-#include "contactlaws/statistics.h"
+#include "contactlaws/contact_model.h"
+#include "contactlaws/replay.h"
 #include "scene/parsed_tags.h"
 #include "scene/tag_keys.h"
 

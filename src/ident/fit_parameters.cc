@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/number.h"
 #include "scene/tag_keys.h"
 

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/measured.h"
+#include "contactlaws/replay.h"
 
 #include <cmath>
 #include <fstream>
@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/number.h"
 
 namespace contactlaws {

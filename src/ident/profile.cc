@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "contactlaws/fit.h"
 
 namespace contactlaws {

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/readable.h"
+#include "contactlaws/fit.h"
 
 #include <algorithm>
 #include <cmath>

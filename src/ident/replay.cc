@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "ident/binding.h"
 #include "ident/work_spread.h"
 #include "sim/settle.h"

@@ -1,13 +1,13 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/rest.h"
+#include "contactlaws/fit.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws {
 

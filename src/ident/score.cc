@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/score.h"
+#include "contactlaws/replay.h"
 
 #include <cmath>
 

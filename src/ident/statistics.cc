@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/statistics.h"
+#include "contactlaws/replay.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws {
 

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/hysteresis.h"
+#include "contactlaws/law.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,9 +6,6 @@
 #include <cmath>
 #include <limits>
 
-#include "contactlaws/hertz.h"
-#include "contactlaws/hysteresis.h"
-#include "contactlaws/kelvin_voigt.h"
 #include "laws/param_range.h"
 
 namespace contactlaws {

@@ -12,7 +12,6 @@
 
 #include <cmath>
 
-#include "contactlaws/hysteresis.h"
 #include "contactlaws/law.h"
 
 namespace contactlaws {
@@ -58,7 +57,7 @@ double GharibHurmuzlu(double e) { return (1.0 - e) / e; }
 
 // The law `exact`: a(e) is the root of a (1 + e) = ln((1 + a) / (1 - a e)),
 // first rebound e itself, neglecting gravity during the contact
-// (ExactCoefficient, hysteresis.h, docs/laws.md). Its bisection (about 60
+// (ExactCoefficient, law.h, docs/laws.md). Its bisection (about 60
 // halvings) runs once per pair, where the parameters are made
 // (ResolveLawParams), not at each evaluation.
 

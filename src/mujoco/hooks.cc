@@ -9,7 +9,6 @@
 
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
-#include "contactlaws/error.h"
 
 namespace contactlaws {
 namespace {

@@ -8,9 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "contactlaws/law.h"
-#include "contactlaws/model_io.h"
 #include "sim/settle.h"
 #include "contactlaws/simulation.h"
 #include "laws/param_range.h"

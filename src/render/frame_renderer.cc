@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "render/contact_marks.h"
 
 namespace contactlaws::render {

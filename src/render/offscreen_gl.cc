@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "render/render_libraries.h"
 
 namespace contactlaws::render {

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws::render {
 namespace {

@@ -28,7 +28,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws::render {
 

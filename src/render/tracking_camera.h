@@ -23,7 +23,6 @@
 
 #include <mujoco/mujoco.h>
 
-#include "contactlaws/advance.h"
 #include "contactlaws/simulation.h"
 #include "render/moving_bodies.h"
 

@@ -9,9 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
-#include "contactlaws/hertz.h"
-#include "contactlaws/model_io.h"
+#include "contactlaws/law.h"
 #include "scene/model_queries.h"
 #include "scene/number.h"
 #include "scene/pair_friction.h"

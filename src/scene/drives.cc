@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
 #include "scene/parsed_tags.h"
 
 namespace contactlaws {

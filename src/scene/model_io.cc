@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
 
 namespace contactlaws {
 

@@ -2,7 +2,7 @@
 
 #include "scene/parsed_tags.h"
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/model_queries.h"
 
 namespace contactlaws::internal {

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/tags.h"
 
 namespace contactlaws {

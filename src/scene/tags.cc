@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/number.h"
 #include "scene/tag_keys.h"
 
@@ -21,7 +21,7 @@ using internal::PairTagSpec;
 namespace {
 
 // key=value words of a tag's data, in order.
-struct KeyValue {
+struct TagWord {
   std::string_view key;
   std::string_view value;
 };
@@ -56,9 +56,9 @@ class TagContext {
 
   // Splits data into key=value words, refusing malformed and repeated keys
   // and keys not in allowed.
-  std::vector<KeyValue> Split(std::string_view data, const std::string_view* allowed,
+  std::vector<TagWord> Split(std::string_view data, const std::string_view* allowed,
                               size_t count) const {
-    std::vector<KeyValue> words;
+    std::vector<TagWord> words;
     size_t i = 0;
     while (i < data.size()) {
       while (i < data.size() && IsSpace(data[i])) ++i;
@@ -70,11 +70,11 @@ class TagContext {
       if (eq == std::string_view::npos || eq == 0) {
         Fail(fmt::format("'{}' is not of the form key=value", word));
       }
-      KeyValue kv{word.substr(0, eq), word.substr(eq + 1)};
+      TagWord kv{word.substr(0, eq), word.substr(eq + 1)};
       if (std::find(allowed, allowed + count, kv.key) == allowed + count) {
         FailUnknown(kv.key, allowed, count);
       }
-      for (const KeyValue& seen : words) {
+      for (const TagWord& seen : words) {
         if (seen.key == kv.key) Fail(fmt::format("key '{}' is given twice", kv.key));
       }
       if (kv.value.empty()) FailValue(kv.key, "", "has no value");
@@ -83,7 +83,7 @@ class TagContext {
     return words;
   }
 
-  double Number(const KeyValue& kv) const {
+  double Number(const TagWord& kv) const {
     std::optional<double> v = ParseNumber(kv.value);
     if (!v) FailValue(kv.key, kv.value, "is not a finite number");
     return *v;
@@ -121,7 +121,7 @@ void SetNumber(const TagContext& ctx, const TagKey& key, double v, std::string_v
 }
 
 // The value of one key of a contactlaw tag into spec, as its row says.
-void ParseKey(const TagContext& ctx, const TagKey& key, const KeyValue& kv, PairTagSpec* spec) {
+void ParseKey(const TagContext& ctx, const TagKey& key, const TagWord& kv, PairTagSpec* spec) {
   switch (key.value) {
     case TagValue::kGeom:
       spec->*key.text = std::string(kv.value);
@@ -229,7 +229,7 @@ PairTagSpec internal::ParsePairWords(std::string_view source, std::string_view n
   PairTagSpec spec;
   spec.label = std::string(Label(ctx, name, kPairTagPrefix));
   const std::vector<std::string_view>& names = TagKeyNames();
-  for (const KeyValue& kv : ctx.Split(data, names.data(), names.size())) {
+  for (const TagWord& kv : ctx.Split(data, names.data(), names.size())) {
     ParseKey(ctx, *FindTagKey(kv.key), kv, &spec);
   }
   return spec;
@@ -242,7 +242,7 @@ void internal::SetPairWord(std::string_view source, std::string_view name, std::
   const TagKey* row = FindTagKey(key);
   if (!row) ctx.FailUnknown(key, names.data(), names.size());
   if (value.empty()) ctx.FailValue(key, "", "has no value");
-  ParseKey(ctx, *row, KeyValue{key, value}, spec);
+  ParseKey(ctx, *row, TagWord{key, value}, spec);
 }
 
 void internal::SetPairNumber(std::string_view source, std::string_view name, std::string_view key,
@@ -296,7 +296,7 @@ DriveTagSpec ParseDriveTag(std::string_view source, std::string_view name,
   bool has_omega = false;
   bool has_speed = false;
 
-  for (const KeyValue& kv : ctx.Split(data, kDriveKeys.data(), kDriveKeys.size())) {
+  for (const TagWord& kv : ctx.Split(data, kDriveKeys.data(), kDriveKeys.size())) {
     const std::string_view k = kv.key;
     if (k == "body") {
       spec.body = std::string(kv.value);

@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/advance.h"
+#include "contactlaws/simulation.h"
 
 #include <algorithm>
 #include <atomic>

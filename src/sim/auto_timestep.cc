@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "sim/estimate.h"
 #include "mujoco/damper_rate.h"
 #include "sim/approach_steps.h"

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "memory/contact_memory.h"
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws {
 namespace {

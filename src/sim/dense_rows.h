@@ -38,7 +38,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {

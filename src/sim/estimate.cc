@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/hertz.h"
+#include "contactlaws/law.h"
 #include "mujoco/kinematics.h"
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 #include "mujoco/narrowphase.h"
 
 namespace contactlaws {

@@ -10,9 +10,8 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "sim/estimate.h"
-#include "contactlaws/model_io.h"
 #include "contactlaws/simulation.h"
 #include "mujoco/narrowphase.h"
 #include "sim/settle_directions.h"

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "mujoco/kinematics.h"
 #include "scene/parsed_tags.h"
 #include "sim/settle.h"

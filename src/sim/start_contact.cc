@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 #include "sim/contact_steps.h"
 #include "sim/settle.h"
 #include "sim/timestep_advice.h"

@@ -20,7 +20,7 @@
 #include <mujoco/mujoco.h>
 
 #include "cli_test_util.h"
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 #include "png_image.h"
 #include "render/scene_look.h"
 

@@ -1,12 +1,12 @@
 // Copyright contactlaws authors.
 
-#include "contactlaws/measured.h"
+#include "contactlaws/replay.h"
 
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 
 namespace contactlaws {
 namespace {

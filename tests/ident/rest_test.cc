@@ -4,13 +4,12 @@
 // recovered from tosses that rest on it, the end gaps of a replay with the
 // board moved by a known distance.
 
-#include "contactlaws/rest.h"
+#include "contactlaws/fit.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/readable.h"
 #include "ident_scenes.h"
 
 namespace contactlaws::testing {

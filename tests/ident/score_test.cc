@@ -2,7 +2,7 @@
 //
 // The scores on hand-made trajectories: a known offset, a known rotation.
 
-#include "contactlaws/score.h"
+#include "contactlaws/replay.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // ExactRebound against the closed form it solves, and ExactCoefficient (the
 // a(e) of the law `exact`) against ExactRebound.
 
-#include "contactlaws/hysteresis.h"
+#include "contactlaws/law.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/hertz.h"
-#include "contactlaws/hysteresis.h"
-#include "contactlaws/kelvin_voigt.h"
 
 namespace contactlaws {
 namespace {

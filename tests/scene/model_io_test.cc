@@ -2,13 +2,12 @@
 //
 // Loading MJCF scenes: the MuJoCo version, errors that name the file and line.
 
-#include "contactlaws/model_io.h"
+#include "contactlaws/contact_model.h"
 
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/error.h"
 
 namespace contactlaws {
 namespace {

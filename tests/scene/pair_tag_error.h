@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/tags.h"
 
 namespace contactlaws {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/error.h"
+#include "contactlaws/contact_model.h"
 #include "scene/pair_tag_error.h"
 
 namespace contactlaws {

@@ -3,7 +3,7 @@
 // Advance over the restitution sweep, held against the closed form and
 // against an independent high-accuracy integration of the same 1-D drop.
 
-#include "contactlaws/advance.h"
+#include "contactlaws/simulation.h"
 
 #include <algorithm>
 #include <atomic>

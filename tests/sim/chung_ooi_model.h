@@ -14,7 +14,6 @@
 #include <cmath>
 #include <optional>
 
-#include "contactlaws/hertz.h"
 #include "contactlaws/law.h"
 
 namespace contactlaws::chung_ooi {

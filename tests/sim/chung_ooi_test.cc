@@ -28,7 +28,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "contactlaws/hertz.h"
 #include "contactlaws/law.h"
 #include "contactlaws/simulation.h"
 #include "chung_ooi_model.h"

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/hysteresis.h"
+#include "contactlaws/law.h"
 #include "sim/run_report.h"
 #include "mujoco_test_util.h"
 

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/advance.h"
+#include "contactlaws/simulation.h"
 #include "mujoco_test_util.h"
 #include "sim/friction_scenes.h"
 

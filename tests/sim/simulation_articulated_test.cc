@@ -10,8 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/hysteresis.h"
-#include "contactlaws/kelvin_voigt.h"
+#include "contactlaws/law.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "contactlaws/hysteresis.h"
+#include "contactlaws/law.h"
 #include "mujoco_test_util.h"
 
 namespace contactlaws {
