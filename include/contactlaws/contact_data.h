@@ -56,7 +56,6 @@
 
 #include "contactlaws/contact_model.h"
 #include "contactlaws/impact.h"
-#include "contactlaws/point_evaluation.h"
 
 namespace contactlaws {
 

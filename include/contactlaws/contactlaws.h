@@ -18,7 +18,6 @@
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/impact.h"
-#include "contactlaws/point_evaluation.h"
 // identification
 #include "contactlaws/fit.h"
 #include "contactlaws/replay.h"

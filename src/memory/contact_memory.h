@@ -3,7 +3,7 @@
 // Per-contact memory, without MuJoCo types: the episodes of every contact
 // point (first touch to separation), the impacts of every pair, and the
 // energy the laws dissipated, built from the points the hooks evaluated
-// (point_evaluation.h) into the records of impact.h. ContactData (MuJoCo
+// (impact.h's PointEvaluation) into its records. ContactData (MuJoCo
 // side) fills these once per accepted step; nothing here reads a simulation.
 
 #ifndef CONTACTLAWS_CONTACT_MEMORY_H_
@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "contactlaws/impact.h"
-#include "contactlaws/point_evaluation.h"
 
 namespace contactlaws {
 

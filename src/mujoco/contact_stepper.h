@@ -31,7 +31,7 @@
 
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
-#include "contactlaws/point_evaluation.h"
+#include "contactlaws/impact.h"
 
 namespace contactlaws::internal {
 

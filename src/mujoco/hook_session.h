@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "contactlaws/contact_model.h"
-#include "contactlaws/point_evaluation.h"
+#include "contactlaws/impact.h"
 
 namespace contactlaws::internal {
 

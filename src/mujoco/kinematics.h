@@ -11,7 +11,7 @@
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contact_model.h"
-#include "contactlaws/point_evaluation.h"
+#include "contactlaws/impact.h"
 
 namespace contactlaws {
 

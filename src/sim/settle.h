@@ -31,7 +31,7 @@
 
 #include <vector>
 
-#include "contactlaws/point_evaluation.h"
+#include "contactlaws/impact.h"
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {
