@@ -176,9 +176,8 @@ struct Drive {
 class Simulation;
 
 namespace internal {
-struct PairTagSpec;  // src/scene/tags.h
-class TagResolver;   // src/scene/contact_model.cc
-class ParsedTags;    // src/scene/parsed_tags.h
+class ParsedTags;          // src/scene/parsed_tags.h
+class ContactModelReader;  // src/scene/contact_model_reader.h
 }  // namespace internal
 
 class ContactModel {
@@ -214,24 +213,10 @@ class ContactModel {
 
  private:
   friend class Simulation;  // makes a Scene's from the tags it read once
+  friend class internal::ContactModelReader;  // reads the tags into it
   // The tags already read (a Scene's: the same <text> entries as m's).
   ContactModel(const mjModel* m, std::string source, const Overrides& overrides,
                const internal::ParsedTags& tags);
-
-  void ReadDrives(const internal::ParsedTags& tags);
-  void ReadTags(const internal::ParsedTags& tags, const Overrides& overrides);
-  // The geom pairs of one tag (appended to pairs_ and tag->pairs).
-  void AddPairs(const internal::PairTagSpec& spec, const LawParams& base,
-                const internal::TagResolver& resolve, PairTag* tag);
-  // The pair's friction (scene/pair_friction.h); refuses bad values, warns
-  // of friction keys on a frictionless pair.
-  void AddFriction(int g1, int g2, const internal::PairTagSpec& spec,
-                   const std::string& pair_name, const internal::TagResolver& resolve,
-                   GeomPair* pair);
-  // Refuses the pair when MuJoCo's depth for its geom types is wrong; warns
-  // (once per tag and type, warned_types) when it has a known limit.
-  void CheckDepth(int g1, int g2, const std::string& pair_name,
-                  const internal::TagResolver& resolve, std::vector<int>* warned_types);
 
   const mjModel* model_;
   std::string source_;

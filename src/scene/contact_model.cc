@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "contactlaws/law.h"
+#include "scene/contact_model_reader.h"
 #include "scene/model_queries.h"
 #include "scene/number.h"
 #include "scene/pair_friction.h"
@@ -96,8 +97,9 @@ ContactModel::ContactModel(const mjModel* m, std::string source, const Overrides
   geom_tagged_.assign(m->ngeom, 0);
   overrides_ = overrides;
   if (!tags.prefix_error().empty()) throw Error(tags.prefix_error());
-  ReadDrives(tags);
-  ReadTags(tags, overrides);
+  internal::ContactModelReader reader(this);
+  reader.ReadDrives(tags);
+  reader.ReadTags(tags, overrides);
 }
 
 namespace {
@@ -224,8 +226,9 @@ void CheckFlags(const mjModel* m, const std::string& source, size_t tags) {
 
 }  // namespace
 
-void ContactModel::ReadTags(const internal::ParsedTags& tags, const Overrides& overrides) {
-  const mjModel* m = model_;
+void internal::ContactModelReader::ReadTags(const ParsedTags& tags,
+                                           const Overrides& overrides) {
+  const mjModel* m = cm_.model_;
   const bool set = !overrides.keys.empty() || !overrides.values.empty();
   for (const auto& written : tags.pairs()) {
     if (!written.error.empty()) throw Error(written.error);
@@ -234,14 +237,14 @@ void ContactModel::ReadTags(const internal::ParsedTags& tags, const Overrides& o
     // is then not refused as the tag's law's
     PairTagSpec spec = written.spec;
     for (const auto& [key, value] : overrides.keys) {
-      SetPairWord(source_, written.name, key, value, &spec);
+      SetPairWord(cm_.source_, written.name, key, value, &spec);
     }
     for (const KeyValue& v : overrides.values) {
-      SetPairNumber(source_, written.name, v.key, v.value, &spec);
+      SetPairNumber(cm_.source_, written.name, v.key, v.value, &spec);
     }
     if (set && overrides.law) spec.law = overrides.law;
-    CheckPairTag(source_, written.name, spec);
-    const TagResolver resolve(m, source_, spec.label);
+    CheckPairTag(cm_.source_, written.name, spec);
+    const TagResolver resolve(m, cm_.source_, spec.label);
     const LawParams base = ResolveLaw(spec, overrides, resolve);
 
     PairTag tag;
@@ -251,20 +254,20 @@ void ContactModel::ReadTags(const internal::ParsedTags& tags, const Overrides& o
     tag.law = base.law;
     tag.restitution = base.restitution;
     AddPairs(spec, base, resolve, &tag);
-    tags_.push_back(std::move(tag));
+    cm_.tags_.push_back(std::move(tag));
   }
-  CheckFlags(m, source_, tags_.size());
+  CheckFlags(m, cm_.source_, cm_.tags_.size());
 }
 
-void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
-                            const TagResolver& resolve, PairTag* tag) {
-  const mjModel* m = model_;
+void internal::ContactModelReader::AddPairs(const PairTagSpec& spec, const LawParams& base,
+                                           const TagResolver& resolve, PairTag* tag) {
+  const mjModel* m = cm_.model_;
   bool group1 = false;
   bool group2 = false;
   const std::vector<int> set1 = resolve.Geoms("geom1", spec.geom1, &group1);
   const std::vector<int> set2 = resolve.Geoms("geom2", spec.geom2, &group2);
   const bool explicit_pair = !group1 && !group2;
-  const int tag_index = static_cast<int>(tags_.size());
+  const int tag_index = static_cast<int>(cm_.tags_.size());
   std::vector<int> warned_types;
   for (const int g1 : set1) {
     for (const int g2 : set2) {
@@ -288,11 +291,11 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
             pair_name));
       }
       const uint64_t key = PairKey(g1, g2);
-      if (const auto found = pair_index_.find(key); found != pair_index_.end()) {
-        const int other = pairs_[found->second].tag;
+      if (const auto found = cm_.pair_index_.find(key); found != cm_.pair_index_.end()) {
+        const int other = cm_.pairs_[found->second].tag;
         if (other == tag_index) continue;  // group:N with group:N
         resolve.Fail(fmt::format("{} is already tagged by {}{}", pair_name, kPairTagPrefix,
-                                 tags_[other].label));
+                                 cm_.tags_[other].label));
       }
 
       GeomPair pair;
@@ -315,11 +318,11 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
       ResolveLawParams(&pair.params);
       AddFriction(g1, g2, spec, pair_name, resolve, &pair);
 
-      slot_count_ += pair.slots;
-      pair_index_.emplace(key, static_cast<int>(pairs_.size()));
-      geom_tagged_[g1] = geom_tagged_[g2] = 1;
-      tag->pairs.push_back(static_cast<int>(pairs_.size()));
-      pairs_.push_back(pair);
+      cm_.slot_count_ += pair.slots;
+      cm_.pair_index_.emplace(key, static_cast<int>(cm_.pairs_.size()));
+      cm_.geom_tagged_[g1] = cm_.geom_tagged_[g2] = 1;
+      tag->pairs.push_back(static_cast<int>(cm_.pairs_.size()));
+      cm_.pairs_.push_back(pair);
     }
   }
   if (tag->pairs.empty()) {
@@ -328,32 +331,34 @@ void ContactModel::AddPairs(const PairTagSpec& spec, const LawParams& base,
   }
 }
 
-void ContactModel::AddFriction(int g1, int g2, const PairTagSpec& spec,
-                               const std::string& pair_name, const TagResolver& resolve,
-                               GeomPair* pair) {
-  const PairFriction friction = ResolvePairFriction(model_, g1, g2, spec, overrides_);
+void internal::ContactModelReader::AddFriction(int g1, int g2, const PairTagSpec& spec,
+                                              const std::string& pair_name,
+                                              const TagResolver& resolve, GeomPair* pair) {
+  const PairFriction friction = ResolvePairFriction(cm_.model_, g1, g2, spec, cm_.overrides_);
   if (!friction.error.empty()) resolve.Fail(fmt::format("{}: {}", pair_name, friction.error));
   if (friction.ignored_key) {
-    warnings_.push_back(resolve.Message(fmt::format(
+    cm_.warnings_.push_back(resolve.Message(fmt::format(
         "{}: {} is not read: the pair is frictionless (condim 1, as in MuJoCo)", pair_name,
         *friction.ignored_key)));
   }
   if (friction.unread_cap) {
-    warnings_.push_back(resolve.Message(fmt::format("{}: {}", pair_name, *friction.unread_cap)));
+    cm_.warnings_.push_back(
+        resolve.Message(fmt::format("{}: {}", pair_name, *friction.unread_cap)));
   }
   pair->friction = friction.params;
   pair->condim = friction.condim;
-  pair->friction_mass = PairFrictionMass(model_, pair->body[0], pair->body[1]);
-  pair->friction_inertia = PairFrictionMass(model_, pair->body[0], pair->body[1], true);
+  pair->friction_mass = PairFrictionMass(cm_.model_, pair->body[0], pair->body[1]);
+  pair->friction_inertia = PairFrictionMass(cm_.model_, pair->body[0], pair->body[1], true);
 }
 
-void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,
-                              const TagResolver& resolve, std::vector<int>* warned_types) {
-  const int t1 = std::min(model_->geom_type[g1], model_->geom_type[g2]);
-  const int t2 = std::max(model_->geom_type[g1], model_->geom_type[g2]);
+void internal::ContactModelReader::CheckDepth(int g1, int g2, const std::string& pair_name,
+                                             const TagResolver& resolve,
+                                             std::vector<int>* warned_types) {
+  const int t1 = std::min(cm_.model_->geom_type[g1], cm_.model_->geom_type[g2]);
+  const int t2 = std::max(cm_.model_->geom_type[g1], cm_.model_->geom_type[g2]);
   DepthVerdict verdict = JudgeDepth(t1, t2);
   // box-mesh and mesh-mesh within the polytope caps are contactlaws' own
-  if (NarrowphaseOf(model_, g1, g2) == Narrowphase::kPolytope) {
+  if (NarrowphaseOf(cm_.model_, g1, g2) == Narrowphase::kPolytope) {
     verdict = {DepthTrust::kComputed, ""};
   }
   // refused in a group too: skipped, the pair would fall back to MuJoCo's
@@ -368,7 +373,7 @@ void ContactModel::CheckDepth(int g1, int g2, const std::string& pair_name,
     return;
   }
   warned_types->push_back(type);
-  warnings_.push_back(resolve.Message(fmt::format("{}: {}", pair_name, verdict.reason)));
+  cm_.warnings_.push_back(resolve.Message(fmt::format("{}: {}", pair_name, verdict.reason)));
 }
 
 int ContactModel::FindPair(int g1, int g2) const {

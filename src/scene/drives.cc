@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/contact_model_reader.h"
 #include "scene/parsed_tags.h"
 
 namespace contactlaws {
@@ -26,14 +27,16 @@ void Drive::Velocity(double t, double vel[3]) const {
   for (int i = 0; i < 3; ++i) vel[i] = axis[i] * c;
 }
 
-void ContactModel::ReadDrives(const internal::ParsedTags& tags) {
-  const mjModel* m = model_;
+namespace internal {
+
+void ContactModelReader::ReadDrives(const ParsedTags& tags) {
+  const mjModel* m = cm_.model_;
   for (const auto& tag : tags.drives()) {
     if (!tag.error.empty()) throw Error(tag.error);
     const std::string_view name = tag.name;
     const DriveTagSpec& spec = tag.spec;
     auto fail = [&](std::string_view what) {
-      throw Error(fmt::format("{}: {}: {}", source_, name, what));
+      throw Error(fmt::format("{}: {}: {}", cm_.source_, name, what));
     };
     Drive drive;
     drive.label = spec.label;
@@ -46,7 +49,7 @@ void ContactModel::ReadDrives(const internal::ParsedTags& tags) {
       fail(fmt::format("body={}: a driven body must be declared mocap=\"true\"",
                        spec.body));
     }
-    if (body_drive_[drive.body] >= 0) {
+    if (cm_.body_drive_[drive.body] >= 0) {
       fail(fmt::format("body={}: the body is driven twice", spec.body));
     }
     for (int k = 0; k < 3; ++k) drive.ref[k] = m->body_pos[3 * drive.body + k];
@@ -56,9 +59,11 @@ void ContactModel::ReadDrives(const internal::ParsedTags& tags) {
     drive.phase = spec.phase;
     drive.motion = spec.linear ? Drive::Motion::kLinear : Drive::Motion::kSine;
     drive.speed = spec.speed;
-    body_drive_[drive.body] = static_cast<int>(drives_.size());
-    drives_.push_back(drive);
+    cm_.body_drive_[drive.body] = static_cast<int>(cm_.drives_.size());
+    cm_.drives_.push_back(drive);
   }
 }
+
+}  // namespace internal
 
 }  // namespace contactlaws
