@@ -19,6 +19,7 @@
 #include <thread>
 #include <utility>
 
+#include "app/law_tables.h"
 #include "app/replay_job.h"
 #include "bindings.h"
 #include "cli/commands.h"
@@ -341,28 +342,18 @@ py::tuple Check(const std::string& scene, const py::dict& kwargs) {
   return Call(&cli::CheckCommand, std::move(args));
 }
 
-// laws --format csv into path.
-py::tuple LawsCsv(const py::dict& kwargs, const std::string& path) {
-  cli::LawsArgs args;
-  args.format = "csv";
-  Take(kwargs, "restitution", &args.restitution);
-  args.output = path;
-  return Call(&cli::LawsCommand, std::move(args));
-}
-
-// The law table and the friction table: the library's own rows.
-py::tuple Tables() {
-  py::list laws, frictions;
-  for (const LawInfo& law : contactlaws::Laws()) {
-    laws.append(py::make_tuple(std::string(law.name), std::string(law.formula),
-                               std::string(law.parameters), std::string(law.reference)));
-  }
-  for (const FrictionInfo& model : FrictionModels()) {
-    frictions.append(py::make_tuple(std::string(model.name), std::string(model.formula),
-                                    std::string(model.state), std::string(model.parameters),
-                                    std::string(model.reference)));
-  }
-  return py::make_tuple(laws, frictions);
+// The law and friction tables, and each law's a(e) and rebound per
+// restitution (`laws --format csv`): {"laws", "frictions", "effective"},
+// each a table's columns.
+py::dict LawTables(const py::dict& kwargs) {
+  const std::optional<std::string> text = OptionalText(kwargs, "restitution");
+  const std::vector<double> restitutions =
+      cli::ParseRestitutionList("--restitution", text.value_or(cli::kDefaultRestitutions));
+  py::dict out;
+  out["laws"] = TableColumns(app::LawTable());
+  out["frictions"] = TableColumns(app::FrictionTable());
+  out["effective"] = TableColumns(app::EffectiveRestitutionTable(restitutions));
+  return out;
 }
 
 }  // namespace
@@ -373,8 +364,7 @@ void BindFileCommands(py::module_& m) {
   m.def("_replay", &Replay);
   m.def("_fit", &Fit);
   m.def("_check", &Check);
-  m.def("_laws_csv", &LawsCsv);
-  m.def("_tables", &Tables);
+  m.def("_laws", &LawTables);
 }
 
 }  // namespace contactlaws::python

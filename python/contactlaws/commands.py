@@ -277,7 +277,7 @@ class LawTables:
     """The laws and friction models: .laws (name, formula, parameters,
     reference), .frictions (name, formula, state, parameters, reference),
     .restitution (`laws --format csv`: law, family, restitution,
-    hysteresis_coefficient a(e) in s/m, effective_restitution)."""
+    hysteresis_coefficient a(e), dimensionless, effective_restitution)."""
 
     def __init__(self, laws, frictions, restitution):
         self.laws = laws
@@ -292,16 +292,9 @@ def laws(*, restitution=None):
     restitution: "E1,E2", "start:stop:step" or a list (default
     0.9,0.7,0.5,0.3,0.1). Returns LawTables.
     """
-    law_rows, friction_rows = _contactlaws._tables()
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        path = _os.path.join(folder, "laws.csv")
-        _contactlaws._laws_csv(dict(restitution=_text_list(restitution)), path)
-        effective = _read(path)
-    return LawTables(
-        _pd.DataFrame(law_rows, columns=["name", "formula", "parameters", "reference"]),
-        _pd.DataFrame(friction_rows,
-                      columns=["name", "formula", "state", "parameters", "reference"]),
-        effective)
+    tables = _contactlaws._laws(dict(restitution=_text_list(restitution)))
+    return LawTables(*(_pd.DataFrame(tables[name])
+                       for name in ("laws", "frictions", "effective")))
 
 
 def check(scene, *, law=None, restitution=None, dissipation=None, friction=None, mu=None,

@@ -4,24 +4,13 @@
 
 #include <fmt/format.h>
 
+#include "app/law_tables.h"
 #include "cli/csv_file.h"
-#include "cli/impact_csv.h"
+#include "cli/identify.h"
 
 namespace contactlaws::cli {
 namespace {
 
-// The restitutions of `laws` (text), and of `laws --format csv` when none are
-// given.
-constexpr char kDefaultRestitutions[] = "0.9,0.7,0.5,0.3,0.1";
-
-std::string_view FamilyName(LawFamily family) {
-  switch (family) {
-    case LawFamily::kHysteresis: return "hysteresis";
-    case LawFamily::kConstantDissipation: return "constant-dissipation";
-    case LawFamily::kLinear: return "linear";
-  }
-  return "?";
-}
 
 // "e = 0.9: 0.9009, ...": the rebound of the law's a(e), or why it has none.
 std::string EffectiveLine(const LawInfo& law, const std::vector<double>& restitutions) {
@@ -67,21 +56,9 @@ void PrintText(std::FILE* out) {
   }
 }
 
-// One row per law and restitution: a(e) and the rebound it gives (empty
-// where the law has none, or e is outside its range; empty for the
-// constant-dissipation family too, whose rebound depends on the impact speed).
 void PrintCsv(const std::vector<double>& restitutions, const std::string& output) {
   CsvFile out(output);
-  out.Header({"law", "family", "restitution", "hysteresis_coefficient",
-              "effective_restitution"});
-  for (const LawInfo& law : Laws()) {
-    for (const double e : restitutions) {
-      const std::optional<double> effective = EffectiveRestitution(law.id, e);
-      out.Fields({std::string(law.name), std::string(FamilyName(law.family)), Field(e),
-                  effective ? Field(HysteresisCoefficient(law.id, e)) : std::string(),
-                  Field(effective)});
-    }
-  }
+  WriteTable(app::EffectiveRestitutionTable(restitutions), &out);
   out.Commit();
 }
 

@@ -116,6 +116,10 @@ double ParseRestitution(std::string_view option, std::string_view text);
 // exactly the doubles 0.1, 0.2, ..., 1. Each in [0, 1]; no repeats.
 std::vector<double> ParseRestitutionList(std::string_view option, std::string_view text);
 
+// The restitutions of `laws` (text), and of `laws --format csv` when none are
+// given.
+inline constexpr char kDefaultRestitutions[] = "0.9,0.7,0.5,0.3,0.1";
+
 // The shared options declared to the command line (CLI11), each into its
 // field of the *Args above as text; a command's own are in main.cc.
 
