@@ -8,6 +8,7 @@
 #define CONTACTLAWS_CLI_PARALLEL_H_
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <functional>
@@ -15,6 +16,8 @@
 #include <optional>
 #include <thread>
 #include <vector>
+
+#include "sim/parallel.h"
 
 namespace contactlaws::cli {
 
@@ -24,10 +27,11 @@ inline int DefaultJobs() {
   return cores > 0 ? static_cast<int>(cores) : 1;
 }
 
-// Calls work(k) for k = 0 .. count-1 on up to `jobs` threads (jobs <= 1: on
-// this thread, one after the other), and deliver(k, result) on this thread in
-// the order k = 0, 1, ... as soon as result k and every result before it are
-// ready, so that output written by deliver does not depend on jobs. Once
+// Calls work(k) for k = 0 .. count-1 on up to `jobs` threads of the pool
+// (internal::ParallelFor; jobs <= 1: on this thread, one after the other),
+// and deliver(k, result) on this thread in the order k = 0, 1, ... as soon
+// as result k and every result before it are ready, so that output written
+// by deliver does not depend on jobs. Once
 // should_stop() is true, the works not yet started are skipped: skipped(k)
 // stands for their result. An exception thrown by work(k) is rethrown here
 // when k's turn to be delivered comes, after the running works have finished.
@@ -51,22 +55,20 @@ void RunInOrder(int count, int jobs, const std::function<Result(int)>& work,
   std::vector<Slot> slots(count);
   std::mutex mutex;
   std::condition_variable ready;
-  int next = 0;  // the next work to start, under mutex
+  std::atomic<bool> abandoned{false};  // a delivery failed: start nothing more
 
-  auto worker = [&] {
-    while (true) {
-      int k;
-      {
-        std::lock_guard lock(mutex);
-        if (next >= count) return;
-        k = next++;
-      }
+  // the works on the one pool (internal::ParallelFor), run beside this
+  // thread, which delivers
+  std::thread pool([&] {
+    internal::ParallelFor(count, jobs, [&](int, int k) {
       std::optional<Result> r;
       std::exception_ptr error;
-      try {
-        r.emplace(should_stop() ? skipped(k) : work(k));
-      } catch (...) {
-        error = std::current_exception();
+      if (!abandoned) {
+        try {
+          r.emplace(should_stop() ? skipped(k) : work(k));
+        } catch (...) {
+          error = std::current_exception();
+        }
       }
       {
         std::lock_guard lock(mutex);
@@ -75,11 +77,8 @@ void RunInOrder(int count, int jobs, const std::function<Result(int)>& work,
         slots[k].done = true;
       }
       ready.notify_all();
-    }
-  };
-  std::vector<std::thread> threads;
-  const int n = std::min(jobs, count);
-  for (int i = 0; i < n; ++i) threads.emplace_back(worker);
+    });
+  });
 
   std::exception_ptr failure;
   for (int k = 0; k < count && !failure; ++k) {
@@ -93,11 +92,10 @@ void RunInOrder(int count, int jobs, const std::function<Result(int)>& work,
       slots[k].result.reset();  // a delivered run's buffers are freed at once
     } catch (...) {
       failure = std::current_exception();
-      std::lock_guard lock(mutex);
-      next = count;  // start nothing more
+      abandoned = true;
     }
   }
-  for (std::thread& t : threads) t.join();
+  pool.join();
   if (failure) std::rethrow_exception(failure);
 }
 

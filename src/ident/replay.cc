@@ -3,19 +3,18 @@
 #include "contactlaws/replay.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <numeric>
 #include <string_view>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "contactlaws/contact_model.h"
 #include "ident/binding.h"
 #include "ident/work_spread.h"
+#include "sim/parallel.h"
 #include "sim/settle.h"
 
 namespace contactlaws {
@@ -293,36 +292,21 @@ std::vector<ReplayedTrajectory> Replay::Run(const ReplayOptions& options) const 
   if (options.spread) options.spread->Expect(duration);
   // the first rollout on this thread: the tags are checked (and refused) here
   Rollout first(*this, options);
-  const int threads = std::max(1, std::min(options.jobs, count));
-  std::atomic<int> next{0};
-  std::vector<std::exception_ptr> errors(threads);
-  auto work = [&](int thread, Rollout* rollout) {
-    try {
-      std::unique_ptr<Rollout> own;
-      if (!rollout) rollout = (own = std::make_unique<Rollout>(*this, options)).get();
-      for (int k = next++; k < count; k = next++) {
-        const int i = order[k];
-        if (options.spread && !options.spread->Mine(i, count)) continue;
-        if (options.should_stop && options.should_stop()) {
-          results[i].status = ReplayedTrajectory::Status::kInterrupted;
-          continue;
-        }
-        const double start = ThreadSeconds();
-        results[i] = rollout->Run(i, first_sample[i]);
-        seconds[i] = ThreadSeconds() - start;
-      }
-    } catch (...) {
-      errors[thread] = std::current_exception();
-      next = count;
+  // a rollout per thread, made on it (the first thread's is made above)
+  std::vector<std::unique_ptr<Rollout>> rollouts(std::max(1, std::min(options.jobs, count)));
+  internal::ParallelFor(count, options.jobs, [&](int worker, int k) {
+    const int i = order[k];
+    if (options.spread && !options.spread->Mine(i, count)) return;
+    if (options.should_stop && options.should_stop()) {
+      results[i].status = ReplayedTrajectory::Status::kInterrupted;
+      return;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int thread = 1; thread < threads; ++thread) pool.emplace_back(work, thread, nullptr);
-  work(0, &first);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+    Rollout* rollout = worker == 0 ? &first : rollouts[worker].get();
+    if (!rollout) rollout = (rollouts[worker] = std::make_unique<Rollout>(*this, options)).get();
+    const double start = ThreadSeconds();
+    results[i] = rollout->Run(i, first_sample[i]);
+    seconds[i] = ThreadSeconds() - start;
+  });
   if (options.spread) Share(*options.spread, seconds, &results);
   return results;
 }
