@@ -96,28 +96,35 @@ std::string FrictionOf(const Fitted& f) {
   return f.combination ? std::string(FrictionName(f.combination->friction)) : "";
 }
 
+using Header = std::vector<std::pair<std::string, Column::Kind>>;
+
+// A value with its 95% interval: the columns NAME, NAME_lo, NAME_hi.
+void AddIntervalColumns(const std::string& name, Header* header) {
+  for (const char* suffix : {"", "_lo", "_hi"}) {
+    header->emplace_back(name + suffix, Column::Kind::kNumber);
+  }
+}
+void AddIntervalCells(double value, const Interval& interval, std::vector<Cell>* row) {
+  for (double v : {value, interval.lo, interval.hi}) row->push_back(Number(v));
+}
+
 // wall_seconds: to the millisecond, a time that differs run to run
 double Milliseconds(double seconds) { return std::round(seconds * 1e3) / 1e3; }
 
 Table RankingTable(const std::vector<Fitted>& fitted, const std::vector<FitParameter>& parameters,
                    Metric metric, const ScoredData& data, uint64_t seed) {
   using Kind = Column::Kind;
-  std::vector<std::pair<std::string, Kind>> header = {{"law", Kind::kText},
-                                                       {"friction", Kind::kText}};
+  Header header = {{"law", Kind::kText}, {"friction", Kind::kText}};
   for (const FitParameter& p : parameters) header.emplace_back(p.key, Kind::kNumber);
   for (const Set& set : Sets(fitted.front(), data)) {
     for (const ScoreArray& a : ReadableScores(*data.train, {}, metric)) {
       for (std::string& c : SummaryColumns(set.name, a)) header.emplace_back(c, Kind::kNumber);
     }
     if (data.trim > 0) {
-      for (const char* c : {"_trimmed_mean", "_trimmed_mean_lo", "_trimmed_mean_hi"}) {
-        header.emplace_back(set.name + std::string(c), Kind::kNumber);
-      }
+      AddIntervalColumns(set.name + std::string("_trimmed_mean"), &header);
     }
   }
-  for (const char* c : {"versus_winner", "versus_winner_lo", "versus_winner_hi"}) {
-    header.emplace_back(c, Kind::kNumber);
-  }
+  AddIntervalColumns("versus_winner", &header);
   header.emplace_back("distinguishable", Kind::kText);
   header.emplace_back("evaluations", Kind::kCount);
   header.emplace_back("wall_seconds", Kind::kNumber);
@@ -141,12 +148,12 @@ Table RankingTable(const std::vector<Fitted>& fitted, const std::vector<FitParam
           row.insert(row.end(), 3, Unknown());
         } else {
           const Estimate e = SummarizeTrimmed(Values(*set.scored, metric), data.trim, seed);
-          for (double v : {e.value, e.interval.lo, e.interval.hi}) row.push_back(Number(v));
+          AddIntervalCells(e.value, e.interval, &row);
         }
       }
     }
     const PairedDifference& d = f.versus_winner;
-    for (double v : {d.mean, d.interval.lo, d.interval.hi}) row.push_back(Number(v));
+    AddIntervalCells(d.mean, d.interval, &row);
     row.push_back(Text(&f == &fitted.front() ? "winner" : d.Distinguishable() ? "yes" : "no"));
     row.push_back(Count(f.fit.evaluations));
     row.push_back(Number(Milliseconds(f.fit.wall_seconds)));
@@ -308,14 +315,13 @@ WinnerProfile ProfileWinner(const Fitted& winner, const Replay& replay, const Fi
 // A row per point (with trim > 0, the trimmed mean beside the mean).
 Table ProfileTable(const Fitted& winner, const WinnerProfile& profile, double trim) {
   using Kind = Column::Kind;
-  std::vector<std::pair<std::string, Kind>> header = {
-      {"key", Kind::kText},     {"scale", Kind::kText},   {"value", Kind::kNumber},
-      {"fitted", Kind::kText},  {"mean", Kind::kNumber},  {"mean_lo", Kind::kNumber},
-      {"mean_hi", Kind::kNumber}};
+  Header header = {{"key", Kind::kText},
+                   {"scale", Kind::kText},
+                   {"value", Kind::kNumber},
+                   {"fitted", Kind::kText}};
+  AddIntervalColumns("mean", &header);
   if (trim > 0) header.emplace_back("trimmed_mean", Kind::kNumber);
-  for (const char* c : {"versus_best", "versus_best_lo", "versus_best_hi"}) {
-    header.emplace_back(c, Kind::kNumber);
-  }
+  AddIntervalColumns("versus_best", &header);
   header.emplace_back("indistinguishable", Kind::kText);
   header.emplace_back("span_lo", Kind::kNumber);
   header.emplace_back("span_hi", Kind::kNumber);
@@ -326,20 +332,15 @@ Table ProfileTable(const Fitted& winner, const WinnerProfile& profile, double tr
     for (size_t k = 0; k < pr.points.size(); ++k) {
       const ProfilePoint& point = pr.points[k];
       const PairedDifference& d = point.versus_best;
-      std::vector<Cell> row = {Text(p.key),
-                               Text(p.log ? "log" : "linear"),
-                               Number(point.value),
-                               Text(point.fitted ? "yes" : "no"),
-                               Number(point.score.value.mean),
-                               Number(point.score.mean.lo),
-                               Number(point.score.mean.hi)};
+      std::vector<Cell> row = {Text(p.key), Text(p.log ? "log" : "linear"), Number(point.value),
+                               Text(point.fitted ? "yes" : "no")};
+      AddIntervalCells(point.score.value.mean, point.score.mean, &row);
       if (trim > 0) row.push_back(Number(point.objective));
-      for (Cell& c : std::vector<Cell>{
-               Number(d.mean), Number(d.interval.lo), Number(d.interval.hi),
-               Text(k == pr.best ? "best" : point.Indistinguishable() ? "yes" : "no"),
-               Number(pr.span_lo()), Number(pr.span_hi()), Text(pr.determined ? "yes" : "no")}) {
-        row.push_back(std::move(c));
-      }
+      AddIntervalCells(d.mean, d.interval, &row);
+      row.push_back(Text(k == pr.best ? "best" : point.Indistinguishable() ? "yes" : "no"));
+      row.push_back(Number(pr.span_lo()));
+      row.push_back(Number(pr.span_hi()));
+      row.push_back(Text(pr.determined ? "yes" : "no"));
       table.AddRow(row);
     }
   }
@@ -560,7 +561,6 @@ FitOutcome FitJob::Run() const {
   outcome.ranking = RankingTable(fitted, r.parameters, r.metric, scored, r.seed);
   outcome.errors = ErrorsTable(fitted, scored);
   if (r.folds) {
-    outcome.fold_of = fold_of_;
     outcome.folds = Table({{"trajectory", Column::Kind::kText}, {"fold", Column::Kind::kCount}});
     for (int i = 0; i < count; ++i) {
       outcome.folds.AddRow({Text(train_data_.trajectories[i].name), Count(fold_of_[i])});

@@ -75,7 +75,6 @@ struct FitOutcome {
   bool nothing = false;
   bool interrupted = false;  // stopped: the best so far
   std::vector<Fitted> fitted;  // ranked, the winner first
-  std::vector<int> fold_of;    // with folds: each training trajectory's fold
   Table ranking, errors, folds, profile;  // folds, profile: when asked
   bool profiled = false;
   SimulatedSamples best_trajectories;  // the winner's, on the validation data if any

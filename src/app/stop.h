@@ -18,7 +18,6 @@ class StopToken {
   StopToken() = default;  // never asks to stop
   explicit StopToken(const std::atomic<bool>* flag) : flag_(flag) {}
 
-  bool stop_requested() const { return flag_ && flag_->load(std::memory_order_relaxed); }
   // As the library's should_stop callbacks take it (empty: never).
   std::function<bool()> Callback() const {
     if (!flag_) return {};

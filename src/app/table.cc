@@ -46,11 +46,4 @@ void Table::AddRow(const std::vector<Cell>& cells) {
   ++rows_;
 }
 
-const Column* Table::Find(const std::string& name) const {
-  for (const Column& c : columns_) {
-    if (c.name == name) return &c;
-  }
-  return nullptr;
-}
-
 }  // namespace contactlaws::app

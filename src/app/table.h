@@ -49,8 +49,6 @@ class Table {
 
   const std::vector<Column>& columns() const { return columns_; }
   size_t rows() const { return rows_; }
-  // The named column, or null.
-  const Column* Find(const std::string& name) const;
 
  private:
   std::vector<Column> columns_;
