@@ -45,6 +45,17 @@ class DamperRate {
               const mjtNum* pos, const mjtNum* normal, const double* damping,
               DamperDirection direction = DamperDirection::kTangential);
 
+  // Rate in two parts, for a caller that needs lambda_max only when it is
+  // large (AutoTimestep: a lag that binds the step): Bound forms the matrix
+  // of the same arguments and returns an upper bound of lambda_max (1/s, its
+  // Frobenius norm, by a margin at least what MaxEigenvalue returns: >=
+  // lambda_max, at most sqrt(rank) times it); MaxEigenvalue then returns
+  // exactly what Rate would, the eigenvalue solve being the costly part.
+  double Bound(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+               const mjtNum* pos, const mjtNum* normal, const double* damping,
+               DamperDirection direction);
+  double MaxEigenvalue();
+
  private:
   struct Workspace;
   std::unique_ptr<Workspace> w_;

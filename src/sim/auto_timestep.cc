@@ -152,32 +152,30 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
   return pair_steps_->steps().TangentialStep(duration);
 }
 
-double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
+double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end, double pace) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   if (pair.friction.kind == FrictionKind::kNone) return kInfinity;
-  const double rate = DampersRate(d, first, end, internal::DamperDirection::kTangential,
-                                  [&](const ContactData::Evaluation& e) {
+  return DampersLag(d, first, end, internal::DamperDirection::kTangential, kFrictionDamperLags,
+                    pace, [&](const ContactData::Evaluation& e) {
     const double k = e.friction_state.stiffness;
     const double c = TangentialDamping(pair.friction, pair.params, State(e), k, pair.friction_mass);
     return TangentialDynamics(pair.friction, k, c, pair.friction_mass, e.force).damping;
   });
-  return rate > 0 ? kFrictionDamperLags / rate : kInfinity;
 }
 
-double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end) {
+double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end, double pace) {
   const LawParams& law = contacts_.model().pairs()[contacts_.latest()[first].pair].params;
-  const double rate = DampersRate(d, first, end, internal::DamperDirection::kNormal,
-                                  [&](const ContactData::Evaluation& e) {
+  return DampersLag(d, first, end, internal::DamperDirection::kNormal, kNormalDamperLags, pace,
+                    [&](const ContactData::Evaluation& e) {
     return DampingCoefficient(law, State(e));
   });
-  return rate > 0 ? kNormalDamperLags / rate : kInfinity;
 }
 
 template <typename Damping>
-double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
-                                 internal::DamperDirection direction,
-                                 const Damping& damping) {
+double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
+                                internal::DamperDirection direction, double lags, double pace,
+                                const Damping& damping) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   point_pos_.clear();
@@ -189,9 +187,15 @@ double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
     point_normal_.insert(point_normal_.end(), e.normal, e.normal + 3);
     point_damping_.push_back(damping(e));
   }
-  return damper_rate_->Rate(contacts_.model().model(), d, pair, static_cast<int>(end - first),
-                            point_pos_.data(), point_normal_.data(), point_damping_.data(),
-                            direction);
+  const double bound = damper_rate_->Bound(contacts_.model().model(), d, pair,
+                                           static_cast<int>(end - first), point_pos_.data(),
+                                           point_normal_.data(), point_damping_.data(), direction);
+  if (!(bound > 0)) return kInfinity;  // nothing damped (the rate is 0)
+  // lags / rate >= lags / bound (rate <= bound): when that is no shorter
+  // than pace, the exact lag would not shorten the step either
+  if (lags / bound >= pace) return lags / bound;
+  const double rate = damper_rate_->MaxEigenvalue();
+  return rate > 0 ? lags / rate : kInfinity;
 }
 
 ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
@@ -259,8 +263,8 @@ double AutoTimestep::Next(mjData* d, double until) {
   const size_t points = contacts_.latest().size();
   for (size_t first = 0, end = 0; first < points; first = end) {
     while (end < points && contacts_.latest()[end].pair == contacts_.latest()[first].pair) ++end;
-    bound.Limit(FrictionLag(d, first, end));
-    if (end - first > 1) bound.Limit(NormalLag(d, first, end));
+    bound.Limit(FrictionLag(d, first, end, bound.pace));
+    if (end - first > 1) bound.Limit(NormalLag(d, first, end, bound.pace));
   }
 
   // the other pairs: the time to close a fraction of their gap, from the

@@ -6,6 +6,7 @@
 
 #include "mujoco/damper_rate.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,38 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data(),
                         DamperDirection::kNormal),
               6 * kDamping / kMass, 1e-9 * kDamping / kMass);
+}
+
+TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormAndTheSplitGivesRatesEigenvalue) {
+  // the cube's four bottom corners and their normal dampers: it rises at
+  // 4 c / m and rocks about x and y at 6 c / m, and nothing else moves
+  // against them; the bound is sqrt(4^2 + 6^2 + 6^2) c / m, within its
+  // margin (1e-9) and the roundings
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  for (const double x : {-kHalf, kHalf}) {
+    for (const double y : {-kHalf, kHalf}) {
+      pos.insert(pos.end(), {x, y, 1 - kHalf});
+      normal.insert(normal.end(), {0, 0, 1});
+    }
+  }
+  const std::vector<double> damping(4, kDamping);
+  DamperRate rate;
+  const double whole = rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(),
+                                 damping.data(), DamperDirection::kNormal);
+  const double bound = rate.Bound(model_.get(), d, pair_, 4, pos.data(), normal.data(),
+                                  damping.data(), DamperDirection::kNormal);
+  EXPECT_NEAR(bound, std::sqrt(88.0) * kDamping / kMass, 1e-8 * kDamping / kMass);
+  // the same eigenvalue, bit for bit: the auto step may take either path
+  EXPECT_EQ(rate.MaxEigenvalue(), whole);
+  EXPECT_GE(bound, whole);
+  // friction's dampers on them: a bound above the 12 c / m of the twist
+  // and within sqrt(6) of it (six dofs: the rank)
+  const double tangential = rate.Bound(model_.get(), d, pair_, 4, pos.data(), normal.data(),
+                                       damping.data(), DamperDirection::kTangential);
+  EXPECT_GE(tangential, rate.MaxEigenvalue());
+  EXPECT_LE(tangential, std::sqrt(6.0) * 12 * kDamping / kMass);
 }
 
 TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
