@@ -187,14 +187,16 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
     point_normal_.insert(point_normal_.end(), e.normal, e.normal + 3);
     point_damping_.push_back(damping(e));
   }
-  const double bound = damper_rate_->Bound(contacts_.model().model(), d, pair,
-                                           static_cast<int>(end - first), point_pos_.data(),
-                                           point_normal_.data(), point_damping_.data(), direction);
-  if (!(bound > 0)) return kInfinity;  // nothing damped (the rate is 0)
+  const int count = static_cast<int>(end - first);
   // lags / rate >= lags / bound (rate <= bound): when that is no shorter
   // than pace, the exact lag would not shorten the step either
+  const double bound =
+      damper_rate_->Bound(contacts_.model().model(), d, pair, count, point_pos_.data(),
+                          point_normal_.data(), point_damping_.data(), direction);
   if (lags / bound >= pace) return lags / bound;
-  const double rate = damper_rate_->MaxEigenvalue();
+  const double rate =
+      damper_rate_->Rate(contacts_.model().model(), d, pair, count, point_pos_.data(),
+                         point_normal_.data(), point_damping_.data(), direction);
   return rate > 0 ? lags / rate : kInfinity;
 }
 
