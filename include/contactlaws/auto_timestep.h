@@ -215,10 +215,11 @@ class AutoTimestep {
   // bind then, and its eigenvalue solve is left out.
   double FrictionLag(mjData* d, size_t first, size_t end, double pace);
   // The bound from the laws' normal dampers of those points on the
-  // inertia at them (kNormalDamperLags); infinite without damping. As
+  // inertia at them (kNormalDamperLags, their dampers law_damping_);
+  // infinite without damping. As
   // FrictionLag, a bound of it when that is no shorter than pace.
   double NormalLag(mjData* d, size_t first, size_t end, double pace);
-  // lags / the rate (1/s) of the dampers damping(e) (N s/m) at those points,
+  // lags / the rate (1/s) of the dampers damping(i) (N s/m) at those points,
   // resisting direction's part of their relative velocity; or lags / an
   // upper bound of that rate, when that is at least pace.
   template <typename Damping>
@@ -237,6 +238,7 @@ class AutoTimestep {
   std::unique_ptr<ApproachSteps> approach_;  // the steps the pairs apart allow
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
+  std::vector<double> law_damping_;       // per point of latest(), N s/m, within Next
   // DampersLag's: the points' positions, normals and dampers, and their rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
   std::unique_ptr<internal::DamperRate> damper_rate_;

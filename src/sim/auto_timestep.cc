@@ -157,7 +157,8 @@ double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end, double pac
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   if (pair.friction.kind == FrictionKind::kNone) return kInfinity;
   return DampersLag(d, first, end, internal::DamperDirection::kTangential, kFrictionDamperLags,
-                    pace, [&](const ContactData::Evaluation& e) {
+                    pace, [&](size_t i) {
+    const ContactData::Evaluation& e = points[i];
     const double k = e.friction_state.stiffness;
     const double c = TangentialDamping(pair.friction, pair.params, State(e), k, pair.friction_mass);
     return TangentialDynamics(pair.friction, k, c, pair.friction_mass, e.force).damping;
@@ -165,11 +166,8 @@ double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end, double pac
 }
 
 double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end, double pace) {
-  const LawParams& law = contacts_.model().pairs()[contacts_.latest()[first].pair].params;
   return DampersLag(d, first, end, internal::DamperDirection::kNormal, kNormalDamperLags, pace,
-                    [&](const ContactData::Evaluation& e) {
-    return DampingCoefficient(law, State(e));
-  });
+                    [&](size_t i) { return law_damping_[i]; });
 }
 
 template <typename Damping>
@@ -185,7 +183,7 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
     const ContactData::Evaluation& e = points[i];
     point_pos_.insert(point_pos_.end(), e.pos, e.pos + 3);
     point_normal_.insert(point_normal_.end(), e.normal, e.normal + 3);
-    point_damping_.push_back(damping(e));
+    point_damping_.push_back(damping(i));
   }
   const int count = static_cast<int>(end - first);
   // lags / rate >= lags / bound (rate <= bound): when that is no shorter
@@ -242,6 +240,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   // pairs in contact at the last evaluation (a pair may have several
   // points): their fine step
   int in_contact = 0;
+  law_damping_.clear();
   for (const ContactData::Evaluation& e : contacts_.latest()) {
     ContactStep(e, &bound);
     fine = true;
@@ -249,7 +248,8 @@ double AutoTimestep::Next(mjData* d, double until) {
       in_contact_[e.pair] = 1;
       ++in_contact;
     }
-    pair_damping_[e.pair] += DampingCoefficient(cm.pairs()[e.pair].params, State(e));
+    law_damping_.push_back(DampingCoefficient(cm.pairs()[e.pair].params, State(e)));
+    pair_damping_[e.pair] += law_damping_.back();
   }
   // the laws' damping as dampers, a pair's points in parallel: a step no
   // longer than its lag m / c (a contact settling at the v0 floor is stiff:
