@@ -239,6 +239,9 @@ class AutoTimestep {
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
   std::vector<double> law_damping_;       // per point of latest(), N s/m, within Next
+  // per pair and DamperDirection: its dampers' lag bound the step when last
+  // computed (DampersLag)
+  std::vector<uint8_t> binding_;
   // DampersLag's: the points' positions, normals and dampers, and their rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
   std::unique_ptr<internal::DamperRate> damper_rate_;

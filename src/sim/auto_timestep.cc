@@ -110,6 +110,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
       ContactSteps(options_.steps_per_contact, options_.kelvin_voigt_steps_per_contact));
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
+  binding_.assign(2 * cm.pairs().size(), 0);
   settled_rule_ = contacts.options().integrator == mjINT_RK4;
 }
 
@@ -187,15 +188,22 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
   }
   const int count = static_cast<int>(end - first);
   // lags / rate >= lags / bound (rate <= bound): when that is no shorter
-  // than pace, the exact lag would not shorten the step either
-  const double bound =
-      damper_rate_->Bound(contacts_.model().model(), d, pair, count, point_pos_.data(),
-                          point_normal_.data(), point_damping_.data(), direction);
-  if (lags / bound >= pace) return lags / bound;
+  // than pace, the exact lag would not shorten the step either. A pair
+  // whose lag bound the last step is likely to bind this one (a resting
+  // box's friction): its bound is not tried.
+  uint8_t& bound_last = binding_[2 * points[first].pair + static_cast<int>(direction)];
+  if (!bound_last) {
+    const double bound =
+        damper_rate_->Bound(contacts_.model().model(), d, pair, count, point_pos_.data(),
+                            point_normal_.data(), point_damping_.data(), direction);
+    if (lags / bound >= pace) return lags / bound;
+  }
   const double rate =
       damper_rate_->Rate(contacts_.model().model(), d, pair, count, point_pos_.data(),
                          point_normal_.data(), point_damping_.data(), direction);
-  return rate > 0 ? lags / rate : kInfinity;
+  const double lag = rate > 0 ? lags / rate : kInfinity;
+  bound_last = lag < pace;
+  return lag;
 }
 
 ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
