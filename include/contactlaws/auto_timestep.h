@@ -210,16 +210,21 @@ class AutoTimestep {
   // without friction.
   double TangentialStep(const ContactData::Evaluation& e) const;
   // The bound from the friction dampers of the points latest()[first, end)
-  // (one pair's) in d; infinite without friction.
-  double FrictionLag(mjData* d, size_t first, size_t end);
+  // (one pair's) in d; infinite without friction. A bound of it when that
+  // shows it no shorter than pace (s, the step's bound so far): it does not
+  // bind then, and its eigenvalue solve is left out.
+  double FrictionLag(mjData* d, size_t first, size_t end, double pace);
   // The bound from the laws' normal dampers of those points on the
-  // inertia at them (kNormalDamperLags); infinite without damping.
-  double NormalLag(mjData* d, size_t first, size_t end);
-  // The rate (1/s) of the dampers damping(e) (N s/m) at those points,
-  // resisting direction's part of their relative velocity.
+  // inertia at them (kNormalDamperLags, their dampers law_damping_);
+  // infinite without damping. As
+  // FrictionLag, a bound of it when that is no shorter than pace.
+  double NormalLag(mjData* d, size_t first, size_t end, double pace);
+  // lags / the rate (1/s) of the dampers damping(i) (N s/m) at those points,
+  // resisting direction's part of their relative velocity; or lags / an
+  // upper bound of that rate, when that is at least pace.
   template <typename Damping>
-  double DampersRate(mjData* d, size_t first, size_t end, internal::DamperDirection direction,
-                     const Damping& damping);
+  double DampersLag(mjData* d, size_t first, size_t end, internal::DamperDirection direction,
+                    double lags, double pace, const Damping& damping);
   // The bound of the flight step: the data's timestep (options()) when the
   // scene has dynamics of its own, the accuracy's under Euler or implicit.
   double FlightStep() const;
@@ -233,7 +238,11 @@ class AutoTimestep {
   std::unique_ptr<ApproachSteps> approach_;  // the steps the pairs apart allow
   std::vector<uint8_t> in_contact_;       // per pair, within Next (all 0 between calls)
   std::vector<double> pair_damping_;      // per pair, N s/m, within Next (all 0 between calls)
-  // DampersRate's: the points' positions, normals and dampers, and its rate
+  std::vector<double> law_damping_;       // per point of latest(), N s/m, within Next
+  // per pair and DamperDirection: its dampers' lag bound the step when last
+  // computed (DampersLag)
+  std::vector<uint8_t> binding_;
+  // DampersLag's: the points' positions, normals and dampers, and their rate
   std::vector<double> point_pos_, point_normal_, point_damping_;
   std::unique_ptr<internal::DamperRate> damper_rate_;
   bool settled_rule_ = false;             // the settled contact's step: RK4 only

@@ -124,11 +124,20 @@ bool ReadsEffectiveMass(const LawParams& p) {
   return Law(p.law).family == LawFamily::kLinear && !p.damping;
 }
 
-ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
-  ContactForce f;
-  if (s.depth <= 0.0) return f;
+namespace {
 
-  // spring and damper of the law
+// The spring K d^n of a Hertz-family law at depth d > 0 (pow is half the
+// law's cost: computed once per depth); 0 for the linear family, whose
+// spring LawForce makes.
+double HertzSpring(const LawParams& p, double depth) {
+  return Law(p.law).family == LawFamily::kLinear ? 0.0
+                                                 : HertzForce(p.stiffness, p.exponent, depth);
+}
+
+// The law at s (depth > 0), its Hertz spring given: the spring, then its
+// factor (HysteresisForce and DissipationForce, to the bit).
+ContactForce LawForce(const LawParams& p, const ContactState& s, double hertz_spring) {
+  ContactForce f;
   switch (Law(p.law).family) {
     case LawFamily::kLinear: {
       const double c = p.damping ? *p.damping
@@ -138,14 +147,12 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
       f.total = KelvinVoigtForce(p.linear_stiffness, c, s.depth, s.depth_rate);
       break;
     }
-    // the spring K d^n once (pow is half the law's cost), then its factor:
-    // HysteresisForce and DissipationForce, to the bit
     case LawFamily::kHysteresis:
-      f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
+      f.elastic = hertz_spring;
       f.total = f.elastic * HysteresisFactor(p.hysteresis, s.depth_rate, s.impact_velocity);
       break;
     case LawFamily::kConstantDissipation:
-      f.elastic = HertzForce(p.stiffness, p.exponent, s.depth);
+      f.elastic = hertz_spring;
       f.total = f.elastic * DissipationFactor(*p.dissipation, s.depth_rate);
       break;
   }
@@ -153,6 +160,13 @@ ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
   // a contact pushes, it does not pull
   if (!p.allow_tension) f.total = std::max(f.total, 0.0);
   return f;
+}
+
+}  // namespace
+
+ContactForce EvaluateLaw(const LawParams& p, const ContactState& s) {
+  if (s.depth <= 0.0) return ContactForce{};
+  return LawForce(p, s, HertzSpring(p, s.depth));
 }
 
 double ElasticEnergy(const LawParams& p, double depth) {
@@ -175,7 +189,10 @@ double DampingCoefficient(const LawParams& p, const ContactState& state) {
   const double delta =
       1e-3 * std::max({std::abs(state.depth_rate), state.impact_velocity, p.min_impact_velocity});
   faster.depth_rate += delta;
-  return std::max(0.0, (EvaluateLaw(p, faster).total - EvaluateLaw(p, state).total) / delta);
+  // the same depth: the same spring
+  const double spring = HertzSpring(p, state.depth);
+  return std::max(0.0,
+                  (LawForce(p, faster, spring).total - LawForce(p, state, spring).total) / delta);
 }
 
 double ElasticContactDuration(const LawParams& law, double mass, double speed) {

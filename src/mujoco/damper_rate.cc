@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include "mujoco/kinematics.h"
+
 namespace contactlaws::internal {
 
 using RowMatrix = Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -29,6 +31,27 @@ std::pair<int, int> TreeDofs(const mjModel* m, int body) {
   return first < end ? std::make_pair(first, end) : std::make_pair(0, 0);
 }
 
+// Bound's margin, a share of the matrix's trace (>= its Frobenius norm): the
+// eigenvalue Rate computes and the norm Bound computes, of two matrices equal
+// in exact arithmetic, are each within some hundreds of roundings (1e-16) of
+// that scale; the margin is thousands of times that.
+constexpr double kBoundMargin = 1e-9;
+
+// Two unit tangents t[0..2], t[3..5] orthogonal to the unit normal n and to
+// each other.
+void Tangents(const mjtNum n[3], mjtNum t[6]) {
+  // the axis least along n, its part across n
+  int axis = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (std::abs(n[i]) < std::abs(n[axis])) axis = i;
+  }
+  mjtNum e[3] = {0, 0, 0};
+  e[axis] = 1;
+  mju_cross(t, n, e);
+  mju_normalize3(t);
+  mju_cross(t + 3, n, t);
+}
+
 }  // namespace
 
 struct DamperRate::Workspace {
@@ -37,6 +60,9 @@ struct DamperRate::Workspace {
   RowMatrix jac[2];  // a point's Jacobian on each body
   Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic> product;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic>> solver;
+  // Bound's: sqrt(c) (J1 - J0)^T u per point and direction u, and their halves
+  // D^-1/2 L^-T of M^-1, row by row (vectors: their capacity stays)
+  std::vector<mjtNum> forces, halves;
 };
 
 DamperRate::DamperRate() : w_(std::make_unique<Workspace>()) {}
@@ -84,6 +110,52 @@ double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair,
   }
   w.solver.compute(w.product, Eigen::EigenvaluesOnly);
   return std::max(w.solver.eigenvalues().maxCoeff(), 0.0);
+}
+
+double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                         const mjtNum* pos, const mjtNum* normal, const double* damping,
+                         DamperDirection direction) {
+  const int nv = m->nv;
+  const int per_point = direction == DamperDirection::kNormal ? 1 : 2;
+  const int k = per_point * points;
+  if (nv == 0 || k == 0) return 0;
+  Workspace& w = *w_;
+  w.forces.resize(static_cast<size_t>(k) * nv);
+  w.halves.resize(static_cast<size_t>(k) * nv);
+  for (int j = 0; j < points; ++j) {
+    // the directions the dampers resist: the normal, or two tangents
+    mjtNum directions[6];
+    if (per_point == 1) {
+      mju_copy3(directions, normal + 3 * j);
+    } else {
+      Tangents(normal + 3 * j, directions);
+    }
+    const double scale = std::sqrt(std::max(damping[j], 0.0));
+    for (int a = 0; a < per_point; ++a) {
+      mjtNum* row = w.forces.data() + static_cast<size_t>(per_point * j + a) * nv;
+      NormalJacobian(m, d, pair, pos + 3 * j, directions + 3 * a, row);
+      for (int i = 0; i < nv; ++i) row[i] *= scale;
+    }
+  }
+  // the k x k matrix halves halves^T over the two bodies' trees' dofs (as
+  // Rate), its squared entries and its trace
+  mj_solveM2(m, d, w.halves.data(), w.forces.data(), k);
+  std::pair<int, int> trees[2] = {TreeDofs(m, pair.body[0]), TreeDofs(m, pair.body[1])};
+  if (trees[1] == trees[0]) trees[1] = {0, 0};
+  double squares = 0, trace = 0;
+  for (int a = 0; a < k; ++a) {
+    const mjtNum* row_a = w.halves.data() + static_cast<size_t>(a) * nv;
+    for (int b = a; b < k; ++b) {
+      const mjtNum* row_b = w.halves.data() + static_cast<size_t>(b) * nv;
+      double entry = 0;
+      for (const auto& [first, end] : trees) {
+        for (int i = first; i < end; ++i) entry += row_a[i] * row_b[i];
+      }
+      squares += (a == b ? 1 : 2) * entry * entry;
+      if (a == b) trace += entry;
+    }
+  }
+  return std::sqrt(squares) + kBoundMargin * trace;
 }
 
 }  // namespace contactlaws::internal

@@ -40,10 +40,22 @@ class DamperRate {
   // pos[3 j ..] with unit normals normal[3 j ..] of pair, j < points, at d's
   // state: its positions' Jacobians and its factorized mass matrix (qLD:
   // after mj_forward or a step). 0 when nothing can move. Allocates only
-  // when a pair has more points than any before.
+  // when a pair has more points than any before (so does Bound).
   double Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
               const mjtNum* pos, const mjtNum* normal, const double* damping,
               DamperDirection direction = DamperDirection::kTangential);
+
+  // An upper bound of Rate's lambda_max for the same arguments, at a
+  // fraction of its cost (no eigenvalue solve), for a caller that needs the
+  // rate only when it is large (AutoTimestep: a lag that binds the step).
+  // The Frobenius norm sqrt(sum lambda_i^2) of the same matrix formed with
+  // one row per point and direction, (J1 - J0)^T u for u the normal or two
+  // tangents (the same nonzero eigenvalues as the three rows of the
+  // projection), plus a margin of 1e-9 of its trace for the roundings: at
+  // least what Rate returns, at most sqrt(rank) times it and the margin.
+  double Bound(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+               const mjtNum* pos, const mjtNum* normal, const double* damping,
+               DamperDirection direction);
 
  private:
   struct Workspace;

@@ -21,16 +21,16 @@ void Project(const mjtNum n[3], mjtNum v[3]) {
 // The committed vector v rotated into the plane of the current normal n:
 // projected, and rescaled to its size (its size is what the spring stores).
 void ProjectKeepingSize(const mjtNum n[3], mjtNum v[3]) {
-  const mjtNum size = mju_norm3(v);
+  const mjtNum size = vec3::Norm(v);
   Project(n, v);
-  const mjtNum projected = mju_norm3(v);
-  if (projected > 0) mju_scl3(v, v, size / projected);
+  const mjtNum projected = vec3::Norm(v);
+  if (projected > 0) vec3::Scale(v, v, size / projected);
 }
 
 // World position of a point given in body's frame.
 void BodyPoint(const mjData* d, int body, const double local[3], mjtNum world[3]) {
-  mju_rotVecMat(world, local, d->xmat + 9 * body);
-  mju_addTo3(world, d->xpos + 3 * body);
+  vec3::Rotate(world, local, d->xmat + 9 * body);
+  vec3::AddTo(world, d->xpos + 3 * body);
 }
 
 // The rotation vector (world frame) of body since it had orientation q0.
@@ -114,6 +114,9 @@ void AddRollingResistance(const mjModel* m, mjData* d, const GeomPair& pair,
   }
 }
 
+// The memory of a point without an episode (its touch).
+constexpr FrictionState kNoMemory{};
+
 }  // namespace
 
 void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episodes,
@@ -134,19 +137,21 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
 
   // the committed state, turned into the current tangent plane, and the
   // stretch of the spring since: the anchors' relative displacement
+  // (read in place: a point's memory is large, and this runs at every stage)
+  const FrictionState& committed = e->episode >= 0 && (stick || rolling)
+                                       ? episodes.CommittedFriction(e->episode)
+                                       : kNoMemory;
   FrictionInput in;
-  FrictionState committed;
-  if (e->episode >= 0 && (stick || rolling)) committed = episodes.CommittedFriction(e->episode);
+  vec3::Copy(in.committed, committed.spring);
   if (e->episode >= 0 && stick) {
     const double(&anchors)[2][3] = episodes.Anchors(e->episode);
     mjtNum p0[3], p1[3];
     BodyPoint(d, b0, anchors[0], p0);
     BodyPoint(d, b1, anchors[1], p1);
-    mju_sub3(in.stretch, p1, p0);
+    vec3::Sub(in.stretch, p1, p0);
     Project(n, in.stretch);
-    ProjectKeepingSize(n, committed.spring);
+    ProjectKeepingSize(n, in.committed);
   }
-  vec3::Copy(in.committed, committed.spring);
   vec3::Copy(in.slip, e->slip);
   in.was_sliding = committed.sliding;
   in.normal_force = std::max(e->force, 0.0);

@@ -8,6 +8,8 @@
 #ifndef CONTACTLAWS_MUJOCO_VEC3_H_
 #define CONTACTLAWS_MUJOCO_VEC3_H_
 
+#include <cmath>
+
 #include <mujoco/mujoco.h>
 
 namespace contactlaws {
@@ -35,10 +37,29 @@ inline void Scale(mjtNum res[3], const mjtNum v[3], mjtNum s) {
   res[2] = v[2] * s;
 }
 
+inline void AddTo(mjtNum res[3], const mjtNum v[3]) {
+  res[0] += v[0];
+  res[1] += v[1];
+  res[2] += v[2];
+}
+
+// |v| (mju_norm3)
+inline mjtNum Norm(const mjtNum v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
 inline void Copy(mjtNum res[3], const mjtNum v[3]) {
   res[0] = v[0];
   res[1] = v[1];
   res[2] = v[2];
+}
+
+// res = mat v, mat 3x3 row-major (mju_rotVecMat)
+inline void Rotate(mjtNum res[3], const mjtNum v[3], const mjtNum mat[9]) {
+  const mjtNum r0 = mat[0] * v[0] + mat[1] * v[1] + mat[2] * v[2];
+  const mjtNum r1 = mat[3] * v[0] + mat[4] * v[1] + mat[5] * v[2];
+  const mjtNum r2 = mat[6] * v[0] + mat[7] * v[1] + mat[8] * v[2];
+  res[0] = r0;
+  res[1] = r1;
+  res[2] = r2;
 }
 
 // res = mat^T v, mat 3x3 row-major (mju_rotVecMatT)

@@ -110,6 +110,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
       ContactSteps(options_.steps_per_contact, options_.kelvin_voigt_steps_per_contact));
   in_contact_.assign(cm.pairs().size(), 0);
   pair_damping_.assign(cm.pairs().size(), 0.0);
+  binding_.assign(2 * cm.pairs().size(), 0);
   settled_rule_ = contacts.options().integrator == mjINT_RK4;
 }
 
@@ -152,32 +153,28 @@ double AutoTimestep::TangentialStep(const ContactData::Evaluation& e) const {
   return pair_steps_->steps().TangentialStep(duration);
 }
 
-double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end) {
+double AutoTimestep::FrictionLag(mjData* d, size_t first, size_t end, double pace) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   if (pair.friction.kind == FrictionKind::kNone) return kInfinity;
-  const double rate = DampersRate(d, first, end, internal::DamperDirection::kTangential,
-                                  [&](const ContactData::Evaluation& e) {
+  return DampersLag(d, first, end, internal::DamperDirection::kTangential, kFrictionDamperLags,
+                    pace, [&](size_t i) {
+    const ContactData::Evaluation& e = points[i];
     const double k = e.friction_state.stiffness;
     const double c = TangentialDamping(pair.friction, pair.params, State(e), k, pair.friction_mass);
     return TangentialDynamics(pair.friction, k, c, pair.friction_mass, e.force).damping;
   });
-  return rate > 0 ? kFrictionDamperLags / rate : kInfinity;
 }
 
-double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end) {
-  const LawParams& law = contacts_.model().pairs()[contacts_.latest()[first].pair].params;
-  const double rate = DampersRate(d, first, end, internal::DamperDirection::kNormal,
-                                  [&](const ContactData::Evaluation& e) {
-    return DampingCoefficient(law, State(e));
-  });
-  return rate > 0 ? kNormalDamperLags / rate : kInfinity;
+double AutoTimestep::NormalLag(mjData* d, size_t first, size_t end, double pace) {
+  return DampersLag(d, first, end, internal::DamperDirection::kNormal, kNormalDamperLags, pace,
+                    [&](size_t i) { return law_damping_[i]; });
 }
 
 template <typename Damping>
-double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
-                                 internal::DamperDirection direction,
-                                 const Damping& damping) {
+double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
+                                internal::DamperDirection direction, double lags, double pace,
+                                const Damping& damping) {
   const std::vector<ContactData::Evaluation>& points = contacts_.latest();
   const GeomPair& pair = contacts_.model().pairs()[points[first].pair];
   point_pos_.clear();
@@ -187,11 +184,26 @@ double AutoTimestep::DampersRate(mjData* d, size_t first, size_t end,
     const ContactData::Evaluation& e = points[i];
     point_pos_.insert(point_pos_.end(), e.pos, e.pos + 3);
     point_normal_.insert(point_normal_.end(), e.normal, e.normal + 3);
-    point_damping_.push_back(damping(e));
+    point_damping_.push_back(damping(i));
   }
-  return damper_rate_->Rate(contacts_.model().model(), d, pair, static_cast<int>(end - first),
-                            point_pos_.data(), point_normal_.data(), point_damping_.data(),
-                            direction);
+  const int count = static_cast<int>(end - first);
+  // lags / rate >= lags / bound (rate <= bound): when that is no shorter
+  // than pace, the exact lag would not shorten the step either. A pair
+  // whose lag bound the last step is likely to bind this one (a resting
+  // box's friction): its bound is not tried.
+  uint8_t& bound_last = binding_[2 * points[first].pair + static_cast<int>(direction)];
+  if (!bound_last) {
+    const double bound =
+        damper_rate_->Bound(contacts_.model().model(), d, pair, count, point_pos_.data(),
+                            point_normal_.data(), point_damping_.data(), direction);
+    if (lags / bound >= pace) return lags / bound;
+  }
+  const double rate =
+      damper_rate_->Rate(contacts_.model().model(), d, pair, count, point_pos_.data(),
+                         point_normal_.data(), point_damping_.data(), direction);
+  const double lag = rate > 0 ? lags / rate : kInfinity;
+  bound_last = lag < pace;
+  return lag;
 }
 
 ContactState AutoTimestep::State(const ContactData::Evaluation& e) const {
@@ -236,6 +248,7 @@ double AutoTimestep::Next(mjData* d, double until) {
   // pairs in contact at the last evaluation (a pair may have several
   // points): their fine step
   int in_contact = 0;
+  law_damping_.clear();
   for (const ContactData::Evaluation& e : contacts_.latest()) {
     ContactStep(e, &bound);
     fine = true;
@@ -243,7 +256,8 @@ double AutoTimestep::Next(mjData* d, double until) {
       in_contact_[e.pair] = 1;
       ++in_contact;
     }
-    pair_damping_[e.pair] += DampingCoefficient(cm.pairs()[e.pair].params, State(e));
+    law_damping_.push_back(DampingCoefficient(cm.pairs()[e.pair].params, State(e)));
+    pair_damping_[e.pair] += law_damping_.back();
   }
   // the laws' damping as dampers, a pair's points in parallel: a step no
   // longer than its lag m / c (a contact settling at the v0 floor is stiff:
@@ -259,8 +273,8 @@ double AutoTimestep::Next(mjData* d, double until) {
   const size_t points = contacts_.latest().size();
   for (size_t first = 0, end = 0; first < points; first = end) {
     while (end < points && contacts_.latest()[end].pair == contacts_.latest()[first].pair) ++end;
-    bound.Limit(FrictionLag(d, first, end));
-    if (end - first > 1) bound.Limit(NormalLag(d, first, end));
+    bound.Limit(FrictionLag(d, first, end, bound.pace));
+    if (end - first > 1) bound.Limit(NormalLag(d, first, end, bound.pace));
   }
 
   // the other pairs: the time to close a fraction of their gap, from the

@@ -49,6 +49,10 @@ PairSteps::PairSteps(const ContactModel& cm, const std::vector<double>& effectiv
     const double n = Law(law.law).family == LawFamily::kLinear ? 1.0 : law.exponent;
     duration_at_unit_speed_.push_back(ElasticContactDuration(law, effective_mass[p], 1.0));
     duration_speed_exponent_.push_back((1 - n) / (1 + n));
+    // at and below the floor speed: asked at every step of a resting contact
+    const int i = static_cast<int>(p);
+    fine_at_floor_.push_back(Duration(i, floor_[p]) / PerContact(i));
+    settled_.push_back(Duration(i, floor_[p]) / kSettledStepsPerContact);
   }
 }
 
@@ -57,11 +61,10 @@ double PairSteps::Duration(int pair, double v) const {
 }
 
 double PairSteps::Fine(int pair, double v) const {
-  return Duration(pair, std::max(v, floor_[pair])) / PerContact(pair);
+  if (v <= floor_[pair]) return fine_at_floor_[pair];  // (a NaN v stays NaN below)
+  return Duration(pair, v) / PerContact(pair);
 }
 
-double PairSteps::Settled(int pair) const {
-  return Duration(pair, floor_[pair]) / kSettledStepsPerContact;
-}
+double PairSteps::Settled(int pair) const { return settled_[pair]; }
 
 }  // namespace contactlaws

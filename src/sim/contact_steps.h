@@ -103,6 +103,8 @@ class PairSteps {
   // proportional to v^((1 - n) / (1 + n)) (Hertz family; Kelvin-Voigt: v^0)
   std::vector<double> duration_at_unit_speed_;
   std::vector<double> duration_speed_exponent_;
+  std::vector<double> fine_at_floor_;  // Fine at the floor speed, s
+  std::vector<double> settled_;        // Settled, s
 };
 
 }  // namespace contactlaws

@@ -6,6 +6,7 @@
 
 #include "mujoco/damper_rate.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,42 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data(),
                         DamperDirection::kNormal),
               6 * kDamping / kMass, 1e-9 * kDamping / kMass);
+}
+
+TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
+  // the cube's four bottom corners and their normal dampers: it rises at
+  // 4 c / m and rocks about x and y at 6 c / m, and nothing else moves
+  // against them; the bound is sqrt(4^2 + 6^2 + 6^2) c / m, and its margin,
+  // 1e-9 of the trace (4 + 6 + 6) c / m
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  for (const double x : {-kHalf, kHalf}) {
+    for (const double y : {-kHalf, kHalf}) {
+      pos.insert(pos.end(), {x, y, 1 - kHalf});
+      normal.insert(normal.end(), {0, 0, 1});
+    }
+  }
+  const std::vector<double> damping(4, kDamping);
+  DamperRate rate;
+  const double bound = rate.Bound(model_.get(), d, pair_, 4, pos.data(), normal.data(),
+                                  damping.data(), DamperDirection::kNormal);
+  EXPECT_NEAR(bound, (std::sqrt(88.0) + 16e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
+  EXPECT_GE(bound, rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(),
+                             damping.data(), DamperDirection::kNormal));
+  // friction's dampers there, along a tilted normal (a corner on a slope):
+  // above the exact rate, within sqrt(6) of it (six dofs: the rank) and the
+  // margin
+  const std::vector<mjtNum> tilted = {0.6, 0, 0.8, 0.6, 0, 0.8, 0.6, 0, 0.8, 0.6, 0, 0.8};
+  const std::vector<mjtNum>* normals[] = {&normal, &tilted};
+  for (const std::vector<mjtNum>* n : normals) {
+    const double exact =
+        rate.Rate(model_.get(), d, pair_, 4, pos.data(), n->data(), damping.data());
+    const double tangential = rate.Bound(model_.get(), d, pair_, 4, pos.data(), n->data(),
+                                         damping.data(), DamperDirection::kTangential);
+    EXPECT_GE(tangential, exact);
+    EXPECT_LE(tangential, std::sqrt(6.0) * exact * (1 + 1e-8));
+  }
 }
 
 TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
