@@ -12,11 +12,6 @@
 namespace contactlaws::internal {
 namespace {
 
-// The narrowphase margin is this many times how far a pair can close within
-// the step at its start's speeds and gravity: what pushes it from elsewhere
-// during the step (another contact, an actuator) is not in them.
-constexpr double kReachFactor = 2.0;
-
 // A point's sub-step is at most this many lags of the dampers acting on it
 // (its own and its coupled neighbours', Gershgorin's bound on the largest
 // rate of A diag(c)): the auto timestep's rule 5 (docs/timestep.md).
@@ -131,7 +126,7 @@ void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const 
 
 }  // namespace
 
-ContactStepper::ContactStepper(const ContactModel& model) : model_(model) {}
+ContactStepper::ContactStepper(const ContactModel& model) : model_(model), step_pairs_(model) {}
 
 double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) const {
   const mjModel* m = model_.model();
@@ -144,7 +139,7 @@ double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) co
   mjtNum relative[3];
   vec3::Sub(relative, v[1], v[0]);
   const double speed = mju_norm3(relative) + spin;
-  return kReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
+  return kStepReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
 }
 
 void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {

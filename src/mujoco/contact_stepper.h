@@ -32,6 +32,7 @@
 #include "contactlaws/contact_data.h"
 #include "contactlaws/contact_model.h"
 #include "contactlaws/point_evaluation.h"
+#include "mujoco/step_pairs.h"
 
 namespace contactlaws::internal {
 
@@ -52,8 +53,17 @@ class ContactStepper {
   bool enabled() const { return options_.enabled(); }
 
   // How far (m) pair's surfaces can close within a step of h s at d's state
-  // (cvel current): the narrowphase margin of the points kept as near.
+  // (cvel current): kStepReachFactor times its start's closing speed (and
+  // spins) and gravity over the step; the narrowphase margin of the points
+  // kept as near.
   double Reach(const mjData* d, const GeomPair& pair, double h) const;
+
+  // The tagged pairs the evaluations of a step of h s cover (StepPairs): at
+  // its start (start) those that can touch within it, found at d's state;
+  // the same list for its later evaluations (RK4's stages).
+  const std::vector<int>& Pairs(const mjData* d, double h, bool start) {
+    return start ? step_pairs_.Find(d, h) : step_pairs_.pairs();
+  }
 
   // Forgets the points of the previous evaluation.
   void Clear() { near_.clear(); }
@@ -133,6 +143,7 @@ class ContactStepper {
 
   const ContactModel& model_;
   ContactStepsOptions options_;
+  StepPairs step_pairs_;
   std::vector<PointEvaluation> near_;   // AddNear's points, as evaluations
   std::vector<PointEvaluation> points_; // this step's points: touching, then near
   // rows: points' normal rows 0..n-1 (x = depth, x' = d'), then two per
