@@ -238,58 +238,6 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
     b_[i] = mju_dot(ji, a_free_.data(), nv);
     if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
   }
-  BuildJacobianRates(m, d);
-}
-
-void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
-  const int nv = m->nv;
-  const int n = static_cast<int>(points_.size());
-  jdot_.assign(static_cast<size_t>(rows_) * nv, 0.0);
-  for (int i = 0; i < n; ++i) {
-    const PointEvaluation& e = points_[i];
-    const GeomPair& pair = model_.pairs()[e.pair];
-    // the normal row at the points that carry the depth: a sphere's centre
-    // (its contact point is no material point: it rolls; the normal force
-    // passes through the centre), else the contact point (a vertex, an
-    // edge's or a face's point); d' = -(J1 - J0) n
-    double* row = jdot_.data() + static_cast<size_t>(i) * nv;
-    bool spheres = true;
-    for (int b = 0; b < 2; ++b) {
-      const int g = pair.geom[b];
-      const bool sphere = m->geom_type[g] == mjGEOM_SPHERE;
-      spheres = spheres && sphere;
-      mjtNum direction[3];
-      mju_scl3(direction, e.normal, b == 0 ? 1.0 : -1.0);
-      AddPointJacobianRate(m, d, pair.body[b], sphere ? d->geom_xpos + 3 * g : e.pos, direction,
-                           row);
-    }
-    b_[i] += mju_dot(row, d->qvel, nv);
-    if (spheres) {
-      // two spheres: the normal is the line of their centres, which turns as
-      // they slide past each other: s'' = n . a + |v_t|^2 / s for their
-      // distance s and relative tangential velocity v_t
-      mjtNum between[3], slide[3], v[2][3];
-      for (int b = 0; b < 2; ++b) {
-        PointVelocity(model_, d, pair.body[b], d->geom_xpos + 3 * pair.geom[b], v[b]);
-      }
-      vec3::Sub(between, d->geom_xpos + 3 * pair.geom[1], d->geom_xpos + 3 * pair.geom[0]);
-      vec3::Sub(slide, v[1], v[0]);
-      const double along = vec3::Dot(slide, e.normal);
-      const double distance = mju_norm3(between);
-      if (distance > 0) b_[i] -= (vec3::Dot(slide, slide) - along * along) / distance;
-    }
-    // the tangential rows: body[1]'s material point relative to body[0]'s
-    const int r = tangent_row_[i];
-    for (int j = 0; r >= 0 && j < 2; ++j) {
-      double* tangential = jdot_.data() + static_cast<size_t>(r + j) * nv;
-      for (int b = 0; b < 2; ++b) {
-        mjtNum direction[3];
-        mju_scl3(direction, tangents_.data() + 6 * i + 3 * j, b == 0 ? -1.0 : 1.0);
-        AddPointJacobianRate(m, d, pair.body[b], e.pos, direction, tangential);
-      }
-      b_[r + j] += mju_dot(tangential, d->qvel, nv);
-    }
-  }
 }
 
 int ContactStepper::SubSteps(double h) const {
@@ -583,13 +531,9 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     t += step;
     ++substeps_;
   }
-  // the step's mean contact force: the rows' forces F(t) act along J(t) =
-  // J + J' t, -(J^T P + J'^T Q) / h with Q the impulse's first moment,
-  // int t F dt = h P - int P dt
+  // the step's mean contact force, -J^T P / h
   for (int r = 0; r < rows; ++r) {
-    const size_t at = static_cast<size_t>(r) * m->nv;
-    mju_addToScl(force_.data(), j_.data() + at, -impulse_[r] / h_, m->nv);
-    mju_addToScl(force_.data(), jdot_.data() + at, -(h_ * impulse_[r] - impulse_sum_[r]) / h_,
+    mju_addToScl(force_.data(), j_.data() + static_cast<size_t>(r) * m->nv, -impulse_[r] / h_,
                  m->nv);
   }
   ApplyForce(m, d);

@@ -140,13 +140,6 @@ class ContactStepper {
                     std::vector<double>* x, std::vector<double>* rate);
   // J rows, M^-1 J^T, A, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
-  // dJ/dt of every row (AddPointJacobianRate), and J' q' added to b: over
-  // the step J moves to J + J' t (a spinning body's centripetal
-  // accelerations, the turning normal of two spheres sliding past each
-  // other); the frozen J alone left the force's work and the depth's change
-  // apart by F J' q' h^2 / 2 a step, an error of order h (a tumbling box
-  // lost 2.4e-3 of its energy at 1e-4 s, 5.8% at 2 ms, unbooked).
-  void BuildJacobianRates(const mjModel* m, const mjData* d);
 
   const ContactModel& model_;
   ContactStepsOptions options_;
@@ -168,7 +161,6 @@ class ContactStepper {
   std::vector<double> a_;          // rows x rows
   std::vector<double> b_;          // per row, m/s^2
   std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
-  std::vector<double> jdot_;       // rows x nv: dJ/dt of each row
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
   // minus the friction force on body[1] along the tangent)
   std::vector<double> impulse_;    // per row: P at the step's end, N s
