@@ -198,8 +198,12 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
 
   // the free acceleration: every force of the step's start but the laws'
   // normal ones and the tangential friction (the rolling and torsional
-  // torques are in qfrc_passive); the actuators' and MuJoCo's constraints'
-  // as the previous step left them
+  // torques are in qfrc_passive); the actuators' at this state and ctrl
+  // (mj_fwdActuation, which MuJoCo runs after this hook: its qfrc_actuator
+  // is still the previous evaluation's, zero at a first step after a reset,
+  // which lost a pushed box 150 N for a step); MuJoCo's constraints' as the
+  // previous step left them
+  mj_fwdActuation(m, d);
   std::vector<double> force(nv);
   mj_rne(m, d, 0, force.data());
   for (int k = 0; k < nv; ++k) {
