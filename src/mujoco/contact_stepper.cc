@@ -377,7 +377,9 @@ void ContactStepper::AddMovingJacobian(double t, const double* f, const double* 
   double* minv_f = moved_.data();
   double* jdot_f = minv_f + nv;
   double* minv_p = jdot_f + nv;
+  bool pushed_back = false;  // J'^T f is not zero
   for (int j = 0; j < rows; ++j) {
+    if (f[j] == 0 && impulse[j] == 0) continue;
     const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
     const double* dj = jdot_.data() + static_cast<size_t>(j) * nv;
     for (int k = span_[4 * j + 2]; k < span_[4 * j + 3]; ++k) {
@@ -386,16 +388,19 @@ void ContactStepper::AddMovingJacobian(double t, const double* f, const double* 
     }
     if (f[j] == 0) continue;
     for (int k = jdot_span_[2 * j]; k < jdot_span_[2 * j + 1]; ++k) jdot_f[k] += dj[k] * f[j];
+    pushed_back = pushed_back || jdot_span_[2 * j + 1] > jdot_span_[2 * j];
   }
   for (int i = 0; i < rows; ++i) {
     const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
-    const double* mi = minv_jt_.data() + static_cast<size_t>(i) * nv;
     double along = 0, back = 0, pushed = 0;
     for (int k = jdot_span_[2 * i]; k < jdot_span_[2 * i + 1]; ++k) {
       along += di[k] * minv_f[k];
       pushed += di[k] * minv_p[k];
     }
-    for (int k = span_[4 * i + 2]; k < span_[4 * i + 3]; ++k) back += mi[k] * jdot_f[k];
+    if (pushed_back) {
+      const double* mi = minv_jt_.data() + static_cast<size_t>(i) * nv;
+      for (int k = span_[4 * i + 2]; k < span_[4 * i + 3]; ++k) back += mi[k] * jdot_f[k];
+    }
     acc[i] += t * b1_[i] - t * (along + back) - pushed;
   }
 }
