@@ -99,7 +99,14 @@ void ContactData::ApplyForces() {
   const bool start = capture_->armed();
   ContactStepper* inner = stepper_->enabled() && (start || capture_->held()) ? stepper_.get()
                                                                             : nullptr;
-  evaluator_->Evaluate(d_, proposals_->Use(), committer_->episodes(), *step_start_, inner,
+  // the pairs: MuJoCo's broadphase's (or every pair, ours), or, with the
+  // contacts integrated inside the step, those that can touch within it
+  // (MuJoCo's proposes only those near now)
+  const std::vector<int>& proposed = proposals_->Use();
+  const std::vector<int>& pairs = inner && !proposals_->own_broadphase()
+                                      ? inner->Pairs(d_, view_.opt.timestep, start)
+                                      : proposed;
+  evaluator_->Evaluate(d_, pairs, committer_->episodes(), *step_start_, inner,
                        view_.opt.timestep);
   if (inner && start) {
     inner->Integrate(&view_, d_, evaluator_->latest());

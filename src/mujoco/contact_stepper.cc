@@ -12,11 +12,6 @@
 namespace contactlaws::internal {
 namespace {
 
-// The narrowphase margin is this many times how far a pair can close within
-// the step at its start's speeds and gravity: what pushes it from elsewhere
-// during the step (another contact, an actuator) is not in them.
-constexpr double kReachFactor = 2.0;
-
 // A point's sub-step is at most this many lags of the dampers acting on it
 // (its own and its coupled neighbours', Gershgorin's bound on the largest
 // rate of A diag(c)): the auto timestep's rule 5 (docs/timestep.md).
@@ -44,6 +39,26 @@ bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
 // of the contact's elastic energy at rest; backward Euler damps it
 // (unbooked). At an impact's peak (d' = 0 too) the amplitude is the depth.
 constexpr double kRestingFraction = 1e-2;
+
+// The held rows of a sub-step (ImplicitRows) are taken by the trapezoid rule
+// when they are all stick springs it resolves: each row's rate
+// sqrt(k_t A_rr) and damper's c_t A_rr times the sub-step at most this.
+// The trapezoid keeps a spring's energy (backward Euler takes
+// (w step)^2 / 2 of it a sub-step, unbooked: 8e-5 of a tangential
+// rebound's kinetic energy at t_c / 500), but does not damp a spring it
+// does not resolve (it rings at the sub-step): resting points and stiff
+// springs stay with backward Euler.
+constexpr double kTrapezoidRate = 1.0;
+
+// The largest turn (rad) of a point's rows within a step (its bodies' spin,
+// two spheres' centres' line) for which the rows take J + J' t
+// (BuildJacobianRates); beyond it the frozen J. At 3e-3 rad a step (a box
+// landing on a corner at 1e-4 s) J' t took the ledger's error from 4.5e-3
+// to 9e-5 of the energy; at 0.04 to 0.1 rad (a spinning die at 2 ms) the
+// linear J(t) missed by (w h)^2 and the die gained 1.4e-4 J in a step,
+// where the frozen J loses energy instead (unbooked; run warns beyond the
+// same turn: kFrozenTurnWarning).
+constexpr double kMovingJacobianTurn = kFrozenTurnWarning;
 
 // An orthonormal tangent pair (t1, t2) of the unit normal n.
 void TangentBasis(const double n[3], double t[6]) {
@@ -131,7 +146,7 @@ void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const 
 
 }  // namespace
 
-ContactStepper::ContactStepper(const ContactModel& model) : model_(model) {}
+ContactStepper::ContactStepper(const ContactModel& model) : model_(model), step_pairs_(model) {}
 
 double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) const {
   const mjModel* m = model_.model();
@@ -144,7 +159,7 @@ double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) co
   mjtNum relative[3];
   vec3::Sub(relative, v[1], v[0]);
   const double speed = mju_norm3(relative) + spin;
-  return kReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
+  return kStepReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
 }
 
 void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {
@@ -193,8 +208,12 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
 
   // the free acceleration: every force of the step's start but the laws'
   // normal ones and the tangential friction (the rolling and torsional
-  // torques are in qfrc_passive); the actuators' and MuJoCo's constraints'
-  // as the previous step left them
+  // torques are in qfrc_passive); the actuators' at this state and ctrl
+  // (mj_fwdActuation, which MuJoCo runs after this hook: its qfrc_actuator
+  // is still the previous evaluation's, zero at a first step after a reset,
+  // which lost a pushed box 150 N for a step); MuJoCo's constraints' as the
+  // previous step left them
+  mj_fwdActuation(m, d);
   std::vector<double> force(nv);
   mj_rne(m, d, 0, force.data());
   for (int k = 0; k < nv; ++k) {
@@ -242,6 +261,149 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
     }
     b_[i] = mju_dot(ji, a_free_.data(), nv);
     if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
+  }
+}
+
+void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
+  const int nv = m->nv;
+  const int n = static_cast<int>(points_.size());
+  const int rows = rows_;
+  jdot_.assign(static_cast<size_t>(rows) * nv, 0.0);
+  for (int i = 0; i < n; ++i) {
+    const PointEvaluation& e = points_[i];
+    const GeomPair& pair = model_.pairs()[e.pair];
+    // a point whose rows turn by more than kMovingJacobianTurn within the
+    // step keeps the frozen J: the linear J + J' t is no better there; so
+    // does a resting one: its rows are backward Euler's (ImplicitRows), which
+    // take no J' (with it, the die of die_throw.xml at rest began to rock
+    // after 1.5 s and took 470 sub-steps a step)
+    if (resting_[i] || RowTurn(m, d, e) * h_ > kMovingJacobianTurn) continue;
+    // the normal row, d' = -(J1 - J0)^T n, at the points that carry the
+    // depth: a sphere's centre (its contact point rolls: no material point;
+    // the normal force passes through the centre), else the contact point
+    // (a vertex, an edge's or a face's point)
+    double* row = jdot_.data() + static_cast<size_t>(i) * nv;
+    bool spheres = true;
+    for (int b = 0; b < 2; ++b) {
+      const int g = pair.geom[b];
+      const bool sphere = m->geom_type[g] == mjGEOM_SPHERE;
+      spheres = spheres && sphere;
+      mjtNum direction[3];
+      mju_scl3(direction, e.normal, b == 0 ? 1.0 : -1.0);
+      AddPointJacobianRate(m, d, pair.body[b], sphere ? d->geom_xpos + 3 * g : e.pos, direction,
+                           row);
+    }
+    if (spheres) {
+      // two spheres: the normal is their centres' line, which turns at
+      // n' = v_t / s as they slide past each other (distance s, relative
+      // tangential velocity v_t): -(J1 - J0)^T n' at the centres
+      mjtNum between[3], turn[3], v[2][3];
+      for (int b = 0; b < 2; ++b) {
+        PointVelocity(model_, d, pair.body[b], d->geom_xpos + 3 * pair.geom[b], v[b]);
+      }
+      vec3::Sub(between, d->geom_xpos + 3 * pair.geom[1], d->geom_xpos + 3 * pair.geom[0]);
+      vec3::Sub(turn, v[1], v[0]);
+      const double along = vec3::Dot(turn, e.normal);
+      const double distance = mju_norm3(between);
+      for (int k = 0; k < 3 && distance > 0; ++k) {
+        turn[k] = -(turn[k] - along * e.normal[k]) / distance;
+      }
+      if (distance > 0) {
+        AddPointForce(m, d, pair.body[1], d->geom_xpos + 3 * pair.geom[1], turn, row);
+        mju_scl3(turn, turn, -1);
+        AddPointForce(m, d, pair.body[0], d->geom_xpos + 3 * pair.geom[0], turn, row);
+      }
+    }
+    // the tangential rows: body[1]'s material point relative to body[0]'s
+    const int r = tangent_row_[i];
+    for (int j = 0; r >= 0 && j < 2; ++j) {
+      double* tangential = jdot_.data() + static_cast<size_t>(r + j) * nv;
+      for (int b = 0; b < 2; ++b) {
+        mjtNum direction[3];
+        mju_scl3(direction, tangents_.data() + 6 * i + 3 * j, b == 0 ? -1.0 : 1.0);
+        AddPointJacobianRate(m, d, pair.body[b], e.pos, direction, tangential);
+      }
+    }
+  }
+  // x'' = J' v + J v' to first order in J' (contact_stepper.h, Rk4SubStep):
+  // b gains J' v0, and b1 = 2 J' a_free per second
+  moving_ = false;
+  b1_.assign(rows, 0.0);
+  jdot_span_.resize(static_cast<size_t>(2) * rows);
+  for (int r = 0; r < rows; ++r) {
+    const double* row = jdot_.data() + static_cast<size_t>(r) * nv;
+    int lo = 0, hi = nv;
+    while (lo < hi && row[lo] == 0) ++lo;
+    while (hi > lo && row[hi - 1] == 0) --hi;
+    jdot_span_[2 * r] = lo;
+    jdot_span_[2 * r + 1] = hi;
+    moving_ = moving_ || hi > lo;
+    double velocity = 0, free = 0;
+    for (int k = lo; k < hi; ++k) {
+      velocity += row[k] * d->qvel[k];
+      free += row[k] * a_free_[k];
+    }
+    b_[r] += velocity;
+    b1_[r] = 2 * free;
+  }
+}
+
+double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
+                               const PointEvaluation& e) const {
+  const GeomPair& pair = model_.pairs()[e.pair];
+  double rate = 0;
+  for (const int body : pair.body) rate = std::max(rate, mju_norm3(d->cvel + 6 * body));
+  if (m->geom_type[pair.geom[0]] == mjGEOM_SPHERE && m->geom_type[pair.geom[1]] == mjGEOM_SPHERE) {
+    // the centres' line turns at |v_t| / s
+    mjtNum v[2][3], slide[3], between[3];
+    for (int b = 0; b < 2; ++b) {
+      PointVelocity(model_, d, pair.body[b], d->geom_xpos + 3 * pair.geom[b], v[b]);
+    }
+    vec3::Sub(slide, v[1], v[0]);
+    vec3::Sub(between, d->geom_xpos + 3 * pair.geom[1], d->geom_xpos + 3 * pair.geom[0]);
+    const double along = vec3::Dot(slide, e.normal);
+    const double distance = mju_norm3(between);
+    const double tangential = std::sqrt(std::max(0.0, vec3::Dot(slide, slide) - along * along));
+    if (distance > 0) rate = std::max(rate, tangential / distance);
+  }
+  return rate;
+}
+
+void ContactStepper::AddMovingJacobian(double t, const double* f, const double* impulse,
+                                       double* acc) {
+  // - t C f - D P(t), C = D + D^T, D = J' M^-1 J^T: through three nv
+  // vectors, M^-1 J^T f, J'^T f and M^-1 J^T P
+  const int nv = static_cast<int>(a_free_.size());
+  const int rows = rows_;
+  moved_.assign(static_cast<size_t>(3) * nv, 0.0);
+  double* minv_f = moved_.data();
+  double* jdot_f = minv_f + nv;
+  double* minv_p = jdot_f + nv;
+  bool pushed_back = false;  // J'^T f is not zero
+  for (int j = 0; j < rows; ++j) {
+    if (f[j] == 0 && impulse[j] == 0) continue;
+    const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
+    const double* dj = jdot_.data() + static_cast<size_t>(j) * nv;
+    for (int k = span_[4 * j + 2]; k < span_[4 * j + 3]; ++k) {
+      minv_f[k] += mj[k] * f[j];
+      minv_p[k] += mj[k] * impulse[j];
+    }
+    if (f[j] == 0) continue;
+    for (int k = jdot_span_[2 * j]; k < jdot_span_[2 * j + 1]; ++k) jdot_f[k] += dj[k] * f[j];
+    pushed_back = pushed_back || jdot_span_[2 * j + 1] > jdot_span_[2 * j];
+  }
+  for (int i = 0; i < rows; ++i) {
+    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
+    double along = 0, back = 0, pushed = 0;
+    for (int k = jdot_span_[2 * i]; k < jdot_span_[2 * i + 1]; ++k) {
+      along += di[k] * minv_f[k];
+      pushed += di[k] * minv_p[k];
+    }
+    if (pushed_back) {
+      const double* mi = minv_jt_.data() + static_cast<size_t>(i) * nv;
+      for (int k = span_[4 * i + 2]; k < span_[4 * i + 3]; ++k) back += mi[k] * jdot_f[k];
+    }
+    acc[i] += t * b1_[i] - t * (along + back) - pushed;
   }
 }
 
@@ -380,6 +542,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
     resting_[i] = amplitude < kRestingFraction * e.depth;
   }
+  BuildJacobianRates(m, d);
   for (const PointEvaluation& e : points_) {
     for (const int body : model_.pairs()[e.pair].body) {
       const double turn = mju_norm3(d->cvel + 6 * body) * h_;
@@ -531,15 +694,21 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     for (int i = 0; i < n; ++i) acting[i] = x[i] > 0;
     x_start_ = x;
     rate_start_ = rate;
-    Rk4SubStep(step, force, contact_v0, &x, &rate);
+    Rk4SubStep(t, step, force, contact_v0, &x, &rate);
     ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
   }
-  // the step's mean contact force, -J^T P / h
+  // the step's mean contact force: the rows' forces f(t) act along J(t) =
+  // J + J' t, -(J^T P + J'^T Q) / h with Q the impulse's first moment,
+  // int t f dt = h P - int P dt
   for (int r = 0; r < rows; ++r) {
-    mju_addToScl(force_.data(), j_.data() + static_cast<size_t>(r) * m->nv, -impulse_[r] / h_,
-                 m->nv);
+    const size_t at = static_cast<size_t>(r) * m->nv;
+    mju_addToScl(force_.data(), j_.data() + at, -impulse_[r] / h_, m->nv);
+    if (moving_) {
+      mju_addToScl(force_.data(), jdot_.data() + at, -(h_ * impulse_[r] - impulse_sum_[r]) / h_,
+                   m->nv);
+    }
   }
   ApplyForce(m, d);
 }
@@ -590,7 +759,7 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
   // over the held f0
   std::vector<int>& held = implicit_rows_;
   std::vector<int>& solve = solve_;     // rows solved for: a group's rows together
-  std::vector<double>& gain = gain_;    // per solved row: k step^2 + c step
+  std::vector<double>& gain = gain_;    // per solved row: k step^2 w2 + c step w
   std::vector<double>& cap = cap_;      // per solved row: its group's cap (N; < 0: normal)
   solve.clear();
   gain.clear();
@@ -598,13 +767,26 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
   held.clear();
   delta_.assign(rows, 0.0);
   g_.assign(rows, 0.0);
+  // the rule: the trapezoid when every held row is a stick spring the
+  // sub-step resolves (kTrapezoidRate), else backward Euler; solved rows'
+  // k and c kept until the rule is known
+  bool trapezoid = true;
+  std::vector<double>& stiffness = still_gain_;
+  std::vector<double>& damping = still_cap_;
+  stiffness.clear();
+  damping.clear();
   auto hold = [&](int r, double g, double k, double c, double group_cap) {
     held.push_back(r);
     delta_[r] = g_[r] = g - start_force[r];
     if (k * step * step + c * step > 0) {
       solve.push_back(r);
-      gain.push_back(k * step * step + c * step);
+      stiffness.push_back(k);
+      damping.push_back(c);
       cap.push_back(group_cap);
+      const double inverse_mass = a_[static_cast<size_t>(r) * rows + r];
+      trapezoid = trapezoid && group_cap >= 0 &&
+                  k * inverse_mass * step * step <= kTrapezoidRate * kTrapezoidRate &&
+                  c * inverse_mass * step <= kTrapezoidRate;
     }
   };
   for (int i = 0; i < n; ++i) {
@@ -660,8 +842,17 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     }
   }
   if (held.empty()) return;
-  // backward Euler on the solved rows: f = g - K A delta (x and x' at the
-  // sub-step's end moved by -step^2 A delta and -step A delta), solved as
+  // the share of the change of force delta that acts over the sub-step: on
+  // the rate, w (backward Euler: the end force throughout, 1; the trapezoid:
+  // the mean of the start's and the end's, 1/2), on the position, w2 (1;
+  // 1/4, x' averaged)
+  const double w = trapezoid ? 0.5 : 1.0;
+  const double w2 = trapezoid ? 0.25 : 1.0;
+  for (size_t a = 0; a < solve.size(); ++a) {
+    gain.push_back(stiffness[a] * step * step * w2 + damping[a] * step * w);
+  }
+  // the solved rows: f = g - K A delta (x and x' at the sub-step's end
+  // moved by -w2 step^2 A delta and -w step A delta), solved as
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
   // A normal force below 0 is put at 0, a friction force beyond its cap at
   // the cap, and the others are solved again (once).
@@ -723,16 +914,16 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     const double* row = a_.data() + static_cast<size_t>(r) * rows;
     double pushed = 0;
     for (const int l : held) pushed += row[l] * delta_[l];
-    (*rate)[r] -= step * pushed;
-    (*x)[r] -= step * step * pushed;
+    (*rate)[r] -= w * step * pushed;
+    (*x)[r] -= w2 * step * step * pushed;
   }
   for (const int l : held) {
-    impulse_sum_[l] += step * step * delta_[l];
-    impulse_[l] += step * delta_[l];
+    impulse_sum_[l] += w2 * step * step * delta_[l];
+    impulse_[l] += w * step * delta_[l];
   }
 }
 
-void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_force,
+void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double>& start_force,
                                 const std::vector<double>& v0, std::vector<double>* x,
                                 std::vector<double>* rate) {
   const int n = static_cast<int>(points_.size());
@@ -796,6 +987,14 @@ void ContactStepper::Rk4SubStep(double step, const std::vector<double>& start_fo
       for (int i = 0; i < rows; ++i) pushed[i] += a[i] * f[s][j];
     }
     for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed[i];
+    if (moving_) {
+      // the impulse at the stage, as RK4 takes P' = f
+      stage_impulse_.resize(rows);
+      for (int i = 0; i < rows; ++i) {
+        stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
+      }
+      AddMovingJacobian(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
+    }
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose

@@ -59,6 +59,29 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
   for (int i = 0; i < 3; ++i) vel[i] = cvel[3 + i] + turn[i];
 }
 
+void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                          const mjtNum direction[3], mjtNum* row) {
+  int b = body;
+  while (b > 0 && m->body_dofnum[b] == 0) b = m->body_parentid[b];
+  if (b <= 0) return;  // welded to the world: no dofs
+  // the point's offset from the root's subtree com (where cdof and cvel
+  // are taken) and its velocity
+  const mjtNum* cvel = d->cvel + 6 * body;
+  mjtNum r[3], vel[3], turn[3];
+  Sub(r, point, d->subtree_com + 3 * m->body_rootid[body]);
+  Cross(turn, cvel, r);
+  for (int i = 0; i < 3; ++i) vel[i] = cvel[3 + i] + turn[i];
+  // direction . (lin' + rot' x r + rot x vel) = direction . lin'
+  //   + rot' . (r x direction) + rot . (vel x direction)
+  mjtNum r_dir[3], vel_dir[3];
+  Cross(r_dir, r, direction);
+  Cross(vel_dir, vel, direction);
+  for (int j = m->body_dofadr[b] + m->body_dofnum[b] - 1; j >= 0; j = m->dof_parentid[j]) {
+    const mjtNum* dot = d->cdof_dot + 6 * j;
+    row[j] += Dot(dot + 3, direction) + Dot(dot, r_dir) + Dot(d->cdof + 6 * j, vel_dir);
+  }
+}
+
 void ReadContactPoint(const ContactModel& model, const mjData* d, int p, const mjContact& con,
                       PointEvaluation* e, mjtNum v0[3], mjtNum v1[3]) {
   const GeomPair& pair = model.pairs()[p];

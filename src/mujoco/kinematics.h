@@ -31,6 +31,15 @@ void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
                    mjtNum vel[3]);
 
+// row += direction^T dJ/dt at point: the rate of change of the Jacobian of
+// the point fixed to body (world frame), projected on direction, walking only
+// the body's chain. Column k of dJ/dt is cdof_dot_k at the point plus
+// (cdof_k's rotation) x (the point's velocity); row . qvel is then the
+// point's acceleration at q'' = 0 along direction (mj_objectAcceleration's).
+// Needs cdof_dot (mj_comVel) and cvel; driven bodies and the world: nothing.
+void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
+                          const mjtNum direction[3], mjtNum* row);
+
 // A narrowphase contact of ContactModel pair p read into e: its pair, tag,
 // depth (-con.dist), place on each body (local) and depth rate along
 // con.frame; v0 and v1 get the two bodies' velocities at con.pos, for a

@@ -10,7 +10,7 @@
 #include "mujoco/kinematics.h"
 #include "mujoco/hooks.h"
 #include "scene/model_queries.h"
-#include "sim/reach_sweep.h"
+#include "mujoco/reach_sweep.h"
 
 namespace contactlaws {
 namespace {

@@ -20,7 +20,7 @@
 namespace contactlaws {
 
 namespace internal {
-class ReachSweep;  // sim/reach_sweep.h
+class ReachSweep;  // mujoco/reach_sweep.h
 }  // namespace internal
 
 // The time in which a gap g (m, > 0) closes at speed v and acceleration a

@@ -5,7 +5,9 @@
 
 #include "mujoco/kinematics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,53 @@ TEST_F(KinematicsTest, AddPointForceIsMujocosApplyFTAlongTheChain) {
     for (int j = 0; j < m->nv; ++j) {
       // the same sums in another order: rounding only
       EXPECT_NEAR(ours[j], theirs[j], 1e-12) << "body " << b << " dof " << j;
+    }
+  }
+}
+
+TEST_F(KinematicsTest, PointJacobianRateGivesMujocosAccelerationAtRestingJoints) {
+  // the oracle: MuJoCo's classical acceleration of a site
+  // (mj_objectAcceleration after mj_rnePostConstraint) with q'' = 0 and no
+  // gravity, at spinning joints of every kind along a tree
+  UniqueModel m = Load(R"(<mujoco>
+  <option gravity="0 0 0"/>
+  <worldbody>
+    <body name="base" pos="0 0 1" euler="10 20 30"><freejoint/>
+      <geom type="box" size="0.2 0.1 0.1" mass="2"/>
+      <site name="corner" pos="0.2 -0.1 0.1"/>
+      <body name="arm" pos="0.3 0 0"><joint type="hinge" axis="0 1 0"/>
+        <geom type="capsule" size="0.05 0.2" mass="1"/>
+        <body name="slider" pos="0 0 0.3"><joint type="slide" axis="1 0 0"/>
+          <geom type="sphere" size="0.05" mass="0.5"/>
+          <site name="tip" pos="0.05 0.02 -0.01"/>
+        </body>
+      </body>
+      <body name="wrist" pos="-0.3 0 0"><joint type="ball"/>
+        <geom type="sphere" size="0.05" mass="0.3"/>
+        <site name="rim" pos="0 0.05 0"/></body>
+    </body>
+  </worldbody>
+</mujoco>)");
+  mjData* d = MakeData(m.get());
+  const double qvel[] = {0.3, -0.2, 0.5, 7, -4, 9, 11, -0.8, 6, -5, 3};
+  ASSERT_EQ(m->nv, static_cast<int>(std::size(qvel)));
+  std::copy(std::begin(qvel), std::end(qvel), d->qvel);
+  mj_forward(m.get(), d);
+  mju_zero(d->qacc, m->nv);
+  mj_rnePostConstraint(m.get(), d);
+  for (const char* name : {"corner", "tip", "rim"}) {
+    const int site = mj_name2id(m.get(), mjOBJ_SITE, name);
+    mjtNum expected[6];
+    mj_objectAcceleration(m.get(), d, mjOBJ_SITE, site, expected, 0);
+    for (int i = 0; i < 3; ++i) {
+      mjtNum axis[3] = {0, 0, 0};
+      axis[i] = 1;
+      std::vector<mjtNum> row(m->nv, 0.0);
+      AddPointJacobianRate(m.get(), d, m->site_bodyid[site], d->site_xpos + 3 * site, axis,
+                           row.data());
+      // rounding of sums of terms up to |w|^2 r ~ 100 m/s^2
+      EXPECT_NEAR(mju_dot(row.data(), d->qvel, m->nv), expected[3 + i], 1e-12)
+          << name << " " << i;
     }
   }
 }

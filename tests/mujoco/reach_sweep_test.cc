@@ -4,7 +4,7 @@
 // spheres overlap (brute force over every pair), each once, plus every pair
 // with a plane, as the geoms move and the reaches change.
 
-#include "sim/reach_sweep.h"
+#include "mujoco/reach_sweep.h"
 
 #include <algorithm>
 #include <cmath>

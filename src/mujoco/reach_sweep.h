@@ -8,8 +8,8 @@
 // few hundred neighbours. Geoms without a bounding sphere (planes, height
 // fields: rbound 0) overlap every geom.
 
-#ifndef CONTACTLAWS_SIM_REACH_SWEEP_H_
-#define CONTACTLAWS_SIM_REACH_SWEEP_H_
+#ifndef CONTACTLAWS_MUJOCO_REACH_SWEEP_H_
+#define CONTACTLAWS_MUJOCO_REACH_SWEEP_H_
 
 #include <cmath>
 #include <vector>
@@ -67,4 +67,4 @@ void ReachSweep::Overlaps(const mjData* d, const std::vector<double>& reach, Vis
 
 }  // namespace contactlaws::internal
 
-#endif  // CONTACTLAWS_SIM_REACH_SWEEP_H_
+#endif  // CONTACTLAWS_MUJOCO_REACH_SWEEP_H_

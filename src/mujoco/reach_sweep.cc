@@ -1,6 +1,6 @@
 // Copyright contactlaws authors.
 
-#include "sim/reach_sweep.h"
+#include "mujoco/reach_sweep.h"
 
 namespace contactlaws::internal {
 
