@@ -8,11 +8,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "app/table.h"
 #include "contactlaws/contactlaws.h"
 
 namespace contactlaws::cli {
@@ -39,6 +41,16 @@ void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
 // A scene with the overrides the keywords give (law, restitution, friction,
 // mu, timestep).
 std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const pybind11::dict& kwargs);
+
+// values as a 1-D numpy array (a copy).
+template <typename T>
+pybind11::array_t<T> Array(const std::vector<T>& values) {
+  return pybind11::array_t<T>(static_cast<pybind11::ssize_t>(values.size()), values.data());
+}
+
+// A result table as {name: column}: a float64 array (NaN: not known), an
+// int64 array (a count) or a list of str, in the table's order.
+pybind11::dict TableDict(const app::Table& table);
 
 // A command line's message with the keyword arguments' names for its
 // flags (python/keywords.cc).

@@ -11,7 +11,8 @@
 #include "bindings.h"
 #include "app/arena.h"
 #include "cli/commands.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/report.h"
 #include "sim/start_contact.h"
 #include "sim/summary.h"
@@ -108,11 +109,8 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   py::capsule free_rows(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   py::array_t<double> trajectory({n, width}, owned->data(), free_rows);
 
-  py::list impact_rows;
-  for (const Episode& impact : cli::ImpactsOf(sim->contacts(), cli::ImpactRows::kImpacts)) {
-    impact_rows.append(cli::ImpactFields(*sim, impact));
-  }
-  return py::make_tuple(columns, trajectory, cli::ImpactColumns(), impact_rows,
+  const py::dict impacts = TableDict(app::ImpactTable(*sim, sim->contacts().impacts()));
+  return py::make_tuple(columns, trajectory, impacts,
                         SummaryRows(*sim, end_time), warnings, divergence);
 }
 

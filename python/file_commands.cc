@@ -24,6 +24,7 @@
 #include "bindings.h"
 #include "cli/commands.h"
 #include "cli/identify.h"
+#include "cli/sweep.h"
 
 namespace contactlaws::python {
 namespace {
@@ -193,26 +194,7 @@ int InterruptibleCommand(const std::function<int()>& command) {
   return Interruptible(command, &cli::stop_signal);
 }
 
-template <typename T>
-py::array_t<T> Array(const std::vector<T>& values) {
-  return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
-}
 
-// A result table as {name: column}: a float64 array (NaN: not known), an
-// int64 array (a count) or a list of str, in the table's order.
-py::dict TableColumns(const app::Table& table) {
-  py::dict columns;
-  for (const app::Column& c : table.columns()) {
-    switch (c.kind) {
-      case app::Column::Kind::kText: columns[py::str(c.name)] = c.text; break;
-      case app::Column::Kind::kCount:
-        columns[py::str(c.name)] = Array(std::vector<int64_t>(c.numbers.begin(), c.numbers.end()));
-        break;
-      case app::Column::Kind::kNumber: columns[py::str(c.name)] = Array(c.numbers); break;
-    }
-  }
-  return columns;
-}
 
 // Simulated samples of data's trajectories: {"names": every trajectory's
 // name, "trajectory": each row's index into names, "time": s, "columns":
@@ -241,10 +223,103 @@ py::tuple Call(int (*command)(const Args&), Args args) {
   return py::make_tuple(status, report.Text());
 }
 
-py::tuple Compare(const std::string& scene, const py::dict& kwargs, const std::string& dir) {
-  cli::SweepArgs args = SweepArgsOf(scene, kwargs);
-  args.output_dir = dir;
-  return Call(&cli::CompareCommand, std::move(args));
+// compare's results as columns: {"trajectories", "impacts", "summary":
+// tables (the columns of its three files), "report": the printed table,
+// "status": the command line's exit status}. No file written.
+py::dict Compare(const std::string& scene, const py::dict& kwargs) {
+  using Kind = app::Column::Kind;
+  const cli::SweepArgs args = SweepArgsOf(scene, kwargs);
+  cli::ComparePlan plan = cli::PlanCompare(args);
+  std::atomic<bool> stop{false};
+  plan.sweep.keep_numbers = true;
+  plan.sweep.advance.stop = &stop;
+  // each file's first columns: law, restitution, and friction when the runs
+  // compare friction models
+  std::vector<std::pair<std::string, Kind>> run = {{"law", Kind::kText},
+                                                   {"restitution", Kind::kNumber}};
+  if (plan.frictions) run.emplace_back("friction", Kind::kText);
+  const std::vector<std::string> columns = plan.first->Columns();
+  std::vector<std::pair<std::string, Kind>> header = run;
+  for (const std::string& c : columns) header.emplace_back(c, Kind::kNumber);
+  app::Table trajectories(header);
+  header = run;
+  for (const std::string& c : cli::SummaryColumns()) {
+    header.emplace_back(c, c == "status" || c == "reason" ? Kind::kText
+                           : c == "impacts"               ? Kind::kCount
+                                                          : Kind::kNumber);
+  }
+  app::Table summary(header);
+  header.clear();
+  const app::Table no_impacts = app::ImpactTable(*plan.first, {});
+  for (const app::Column& c : no_impacts.columns()) {
+    header.emplace_back(c.name, c.kind);
+  }
+  if (plan.frictions) header.emplace(header.begin() + 2, "friction", Kind::kText);
+  app::Table impacts(header);
+
+  std::vector<cli::CompareRow> rows;
+  auto deliver = [&](int k, cli::RunOutput& out) {
+    const cli::RunSpec& spec = plan.specs[k];
+      std::vector<app::Cell> prefix = {
+        app::Text(std::string(LawName(spec.law))),
+        out.restitution ? app::Number(*out.restitution) : app::Unknown()};
+    if (plan.frictions) prefix.push_back(app::Text(std::string(FrictionName(*spec.friction))));
+    const bool rows_valid = out.status == cli::RunOutput::Status::kOk ||
+                            out.status == cli::RunOutput::Status::kFailed;
+    if (rows_valid) {
+      // a failed run's rows up to its divergence are valid; an interrupted
+      // run's are not kept
+      for (size_t at = 0; at + columns.size() <= out.rows.size(); at += columns.size()) {
+        std::vector<app::Cell> cells = prefix;
+        for (size_t c = 0; c < columns.size(); ++c) cells.push_back(app::Number(out.rows[at + c]));
+        trajectories.AddRow(cells);
+      }
+      const app::Table& log = out.impact_table;
+      for (size_t i = 0; i < log.rows(); ++i) {
+        std::vector<app::Cell> cells;
+        for (const app::Column& c : log.columns()) {
+          cells.push_back(c.kind == Kind::kText ? app::Text(c.text[i])
+                                                : app::Cell{c.kind, c.numbers[i], {}});
+        }
+        if (plan.frictions) cells.emplace(cells.begin() + 2, prefix[2]);
+        impacts.AddRow(cells);
+      }
+    }
+    std::vector<app::Cell> cells = prefix;
+    const RunSummary& r = out.summary;
+    auto known = [](const std::optional<double>& v) {
+      return v ? app::Number(*v) : app::Unknown();
+    };
+    if (out.status == cli::RunOutput::Status::kOk) {
+      for (app::Cell c : {app::Count(r.impacts), known(r.restitution_post),
+                          app::Number(r.max_depth), app::Number(r.max_force),
+                          known(r.contact_duration), known(r.time_to_rest),
+                          app::Number(out.dissipated), app::Text("ok"), app::Text("")}) {
+        cells.push_back(std::move(c));
+      }
+    } else {
+      // a failed run's numbers are not to be trusted: only its status
+      for (int i = 0; i < 7; ++i) cells.push_back(app::Unknown());
+      cells.push_back(app::Text(cli::StatusName(out.status)));
+      cells.push_back(app::Text(out.reason));
+    }
+    summary.AddRow(cells);
+    rows.push_back({spec, out.status, out.restitution, out.summary, out.dissipated});
+    out.rows.clear();  // a delivered run's numbers are in the tables
+  };
+  const int status = Interruptible(
+      [&] {
+        return cli::Sweep(*plan.in.scene, plan.in.common.simulation, plan.specs, plan.advices,
+                          plan.sweep, deliver);
+      },
+      &stop);
+  py::dict out;
+  out["trajectories"] = TableDict(trajectories);
+  out["impacts"] = TableDict(impacts);
+  out["summary"] = TableDict(summary);
+  out["report"] = cli::CompareTableText(rows, plan.frictions);
+  out["status"] = status;
+  return out;
 }
 
 py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const std::string& path) {
@@ -271,7 +346,7 @@ py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
   const app::ReplayResult result = Interruptible([&] { return job.Run(); }, &stop);
 
   py::dict out;
-  out["scores"] = TableColumns(app::ScoresTable(result.scores));
+  out["scores"] = TableDict(app::ScoresTable(result.scores));
   out["simulated"] = SimulatedColumns(data, result.simulated);
   out["report"] = result.report;
   out["diverged"] = KeywordSpelling(result.diverged);
@@ -317,10 +392,10 @@ py::dict Fit(const std::string& scene_path, const py::dict& kwargs) {
   std::string report;
   for (const std::string& line : offset_lines) report += line + "\n";
   py::dict out;
-  out["ranking"] = TableColumns(outcome.ranking);
-  out["errors"] = TableColumns(outcome.errors);
-  out["folds"] = args.folds ? py::object(TableColumns(outcome.folds)) : py::none();
-  out["profile"] = outcome.profiled ? py::object(TableColumns(outcome.profile)) : py::none();
+  out["ranking"] = TableDict(outcome.ranking);
+  out["errors"] = TableDict(outcome.errors);
+  out["folds"] = args.folds ? py::object(TableDict(outcome.folds)) : py::none();
+  out["profile"] = outcome.profiled ? py::object(TableDict(outcome.profile)) : py::none();
   out["best_trajectories"] =
       SimulatedColumns(validate ? *validate : train, outcome.best_trajectories);
   out["best_tag"] = outcome.best_tag;
@@ -350,9 +425,9 @@ py::dict LawTables(const py::dict& kwargs) {
   const std::vector<double> restitutions =
       cli::ParseRestitutionList("--restitution", text.value_or(cli::kDefaultRestitutions));
   py::dict out;
-  out["laws"] = TableColumns(app::LawTable());
-  out["frictions"] = TableColumns(app::FrictionTable());
-  out["effective"] = TableColumns(app::EffectiveRestitutionTable(restitutions));
+  out["laws"] = TableDict(app::LawTable());
+  out["frictions"] = TableDict(app::FrictionTable());
+  out["effective"] = TableDict(app::EffectiveRestitutionTable(restitutions));
   return out;
 }
 

@@ -10,7 +10,8 @@
 #include <string>
 
 #include "app/arena.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/options.h"
 
 namespace contactlaws::python {
@@ -171,11 +172,7 @@ void BindSimulation(py::module_& m) {
              return columns;
            })
       .def("_impacts", [](const Simulation& sim) {
-             py::list rows;
-             for (const Episode& impact : sim.contacts().impacts()) {
-               rows.append(cli::ImpactFields(sim, impact));
-             }
-             return py::make_tuple(cli::ImpactColumns(), rows);
+             return TableDict(app::ImpactTable(sim, sim.contacts().impacts()));
            })
       .def("energy", [](Simulation& sim) {
              mj_forward(sim.model(), MutableData(&sim));

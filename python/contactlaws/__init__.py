@@ -31,13 +31,9 @@ class RunResult:
         self.divergence = divergence
 
 
-def _impact_frame(columns, rows):
-    frame = _pd.DataFrame(rows, columns=columns)
-    for column in columns:
-        if column not in ("law", "pair", "geom1", "geom2"):
-            # float() of the shortest exact text: the CSV's very doubles
-            frame[column] = [float(v) if v != "" else _np.nan for v in frame[column]]
-    return frame
+def _impact_frame(columns):
+    """The library's impact table (app/impact_table.h) as a DataFrame."""
+    return _pd.DataFrame(columns)
 
 
 def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipation=None,
@@ -59,8 +55,7 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
                    sample_rate=sample_rate, columns=columns, settle=settle)
-    names, rows, impact_columns, impact_rows, summary, messages, divergence = _run(
-        str(scene), options)
+    names, rows, impacts, summary, messages, divergence = _run(str(scene), options)
     for message in messages:
         _warnings.warn(f"{scene}: {message}", stacklevel=2)
     if divergence:
@@ -69,7 +64,7 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     # the printed table's header as printed: its "collisions" counts impacts
     summary_frame = _pd.DataFrame(summary, columns=[
         "pair", "law", "restitution", "collisions", "first e_post", "max force (N)"])
-    return RunResult(trajectory, _impact_frame(impact_columns, impact_rows), summary_frame,
+    return RunResult(trajectory, _impact_frame(impacts), summary_frame,
                      divergence or None)
 
 
@@ -127,4 +122,4 @@ class Simulation(_Simulation):
 
     def impacts(self):
         """The impact log so far, as run's --impacts CSV (one row per impact of a pair)."""
-        return _impact_frame(*self._impacts())
+        return _impact_frame(self._impacts())

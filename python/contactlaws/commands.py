@@ -85,12 +85,11 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
                    sample_rate=sample_rate, columns=columns, settle=settle, jobs=jobs,
                    impacts_per_point=impacts_per_point)
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        status, report = _contactlaws._compare(str(scene), options, folder)
-        result = CompareResult(*(_read(_os.path.join(folder, f"{name}.csv"))
-                                 for name in ("trajectories", "impacts", "summary")), report)
-    _warn_incomplete(status, scene, "a run failed: its summary row gives the reason")
-    return result
+    result = _contactlaws._compare(str(scene), options)
+    _warn_incomplete(result["status"], scene, "a run failed: its summary row gives the reason")
+    return CompareResult(*(_pd.DataFrame(result[name])
+                           for name in ("trajectories", "impacts", "summary")),
+                         result["report"])
 
 
 def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, mu=None,

@@ -8,7 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/report.h"
 #include "sim/contact_steps.h"
 #include "sim/estimate.h"

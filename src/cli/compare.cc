@@ -2,12 +2,15 @@
 
 #include "cli/commands.h"
 
+#include <cstdio>
+#include <iterator>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "cli/csv_file.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/report.h"
 #include "cli/sweep.h"
 #include "sim/summary.h"
@@ -59,22 +62,17 @@ class CompareFiles {
   // frictions: the runs compare friction models (a friction column after
   // restitution in each file)
   CompareFiles(const std::string& dir, const std::vector<std::string>& trajectory_columns,
-               bool frictions)
+               std::vector<std::string> impact_columns, bool frictions)
       : trajectories_(CreateDirectory(dir) + "/trajectories.csv"),
         impacts_(dir + "/impacts.csv"),
         summary_(dir + "/summary.csv") {
     std::vector<std::string> columns = RunColumns(frictions);
     columns.insert(columns.end(), trajectory_columns.begin(), trajectory_columns.end());
     trajectories_.Header(columns);
-    std::vector<std::string> impact_columns = ImpactColumns();
     if (frictions) impact_columns.insert(impact_columns.begin() + 2, "friction");
     impacts_.Header(impact_columns);
     columns = RunColumns(frictions);
-    for (const char* c : {"impacts", "restitution_post", "max_depth", "max_force",
-                          "contact_duration", "time_to_rest", "dissipated_energy", "status",
-                          "reason"}) {
-      columns.emplace_back(c);
-    }
+    for (std::string& c : SummaryColumns()) columns.push_back(std::move(c));
     summary_.Header(columns);
   }
 
@@ -122,15 +120,6 @@ bool HasFriction(const ContactModel& model) {
   return false;
 }
 
-// One run's line of the printed table.
-struct TableRow {
-  RunSpec spec;
-  RunOutput::Status status;
-  std::optional<double> restitution;
-  RunSummary s;
-  double dissipated;
-};
-
 // The run's first cells: law, restitution, and the friction model when the
 // runs compare them.
 std::string RunCells(const RunSpec& spec, const std::string& restitution, bool frictions) {
@@ -141,59 +130,76 @@ std::string RunCells(const RunSpec& spec, const std::string& restitution, bool f
   return cells;
 }
 
-void PrintTable(const std::vector<TableRow>& rows, bool frictions, std::FILE* out) {
-  fmt::print(out, "{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
-             "restitution", frictions ? fmt::format(" {:<11}", "friction") : "", "collisions",
-             "first e_post", "max depth (m)", "max force (N)", "duration (s)", "at rest (s)",
-             "dissipated (J)");
-  for (const TableRow& r : rows) {
-    const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
-    if (r.status != RunOutput::Status::kOk) {
-      fmt::print(out, "{} {}\n", cells, StatusName(r.status));
-      continue;
-    }
-    fmt::print(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
-               r.s.impacts, Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
-               Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
-               r.dissipated);
-  }
-}
-
 }  // namespace
 
-int CompareCommand(const SweepArgs& args) {
-  const SweepInputs in = ReadSweepInputs(args, nullptr);
-  const SimulationOptions& options = in.common.simulation;
-  const std::vector<RunSpec> specs = CompareSpecs(in.laws, in.restitutions, in.frictions);
-  const bool frictions = !in.frictions.empty();
-  const std::vector<std::vector<TimestepAdvice>> advices =
-      Prepare(*in.scene, options, specs, in.common.auto_timestep.has_value());
+std::string CompareTableText(const std::vector<CompareRow>& rows, bool frictions) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
+                 "restitution", frictions ? fmt::format(" {:<11}", "friction") : "", "collisions",
+                 "first e_post", "max depth (m)", "max force (N)", "duration (s)", "at rest (s)",
+                 "dissipated (J)");
+  for (const CompareRow& r : rows) {
+    const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
+    if (r.status != RunOutput::Status::kOk) {
+      fmt::format_to(out, "{} {}\n", cells, StatusName(r.status));
+      continue;
+    }
+    fmt::format_to(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
+                   r.s.impacts, Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
+                   Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
+                   r.dissipated);
+  }
+  return text;
+}
 
-  const std::unique_ptr<Simulation> first = in.scene->Make(OptionsFor(options, specs.front()));
-  ReportSettle(*first);
-  if (frictions && !HasFriction(first->contact_model())) {
+std::vector<std::string> SummaryColumns() {
+  return {"impacts",           "restitution_post", "max_depth", "max_force", "contact_duration",
+          "time_to_rest",      "dissipated_energy", "status",   "reason"};
+}
+
+ComparePlan PlanCompare(const SweepArgs& args) {
+  ComparePlan plan;
+  plan.in = ReadSweepInputs(args, nullptr);
+  const SweepInputs& in = plan.in;
+  const SimulationOptions& options = in.common.simulation;
+  plan.specs = CompareSpecs(in.laws, in.restitutions, in.frictions);
+  plan.frictions = !in.frictions.empty();
+  plan.advices = Prepare(*in.scene, options, plan.specs, in.common.auto_timestep.has_value());
+  plan.first = in.scene->Make(OptionsFor(options, plan.specs.front()));
+  ReportSettle(*plan.first);
+  if (plan.frictions && !HasFriction(plan.first->contact_model())) {
     Warn(in.scene->path(), "--frictions: every tagged pair is frictionless (condim 1, as in "
                            "MuJoCo): the friction models do not act");
   }
-  CompareFiles files(args.output_dir, first->Columns(), frictions);
-  SweepOptions sweep;
+  SweepOptions& sweep = plan.sweep;
   sweep.advance.duration = in.common.duration;
   sweep.advance.sample_rate = in.common.sample_rate;
   sweep.advance.auto_timestep = in.common.auto_timestep;
   sweep.advance.stop = &stop_signal;
   sweep.record = true;
-  sweep.impact_rows = args.impacts_per_point ? ImpactRows::kPointEpisodes : ImpactRows::kImpacts;
+  sweep.impact_rows =
+      args.impacts_per_point ? app::ImpactRows::kPointEpisodes : app::ImpactRows::kImpacts;
   sweep.jobs = in.jobs;
   sweep.quiet = args.quiet;
-  std::vector<TableRow> rows;
-  const int status = Sweep(*in.scene, options, specs, advices, sweep, [&](int k, RunOutput& out) {
-                             files.Write(specs[k], out);
-                             rows.push_back({specs[k], out.status, out.restitution, out.summary,
-                                             out.dissipated});
+  return plan;
+}
+
+int CompareCommand(const SweepArgs& args) {
+  const ComparePlan plan = PlanCompare(args);
+  const Scene& scene = *plan.in.scene;
+  CompareFiles files(args.output_dir, plan.first->Columns(),
+                     TableColumns(app::ImpactTable(*plan.first, {})), plan.frictions);
+  std::vector<CompareRow> rows;
+  const int status = Sweep(scene, plan.in.common.simulation, plan.specs, plan.advices, plan.sweep,
+                           [&](int k, RunOutput& out) {
+                             files.Write(plan.specs[k], out);
+                             rows.push_back({plan.specs[k], out.status, out.restitution,
+                                             out.summary, out.dissipated});
                            });
   files.Commit();
 
-  PrintTable(rows, frictions, args.report);
+  std::fputs(CompareTableText(rows, plan.frictions).c_str(), args.report);
   fmt::print(args.report, "wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n",
              args.output_dir);
   return status;

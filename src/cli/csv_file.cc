@@ -180,4 +180,34 @@ void CsvFile::Commit() {
   }
 }
 
+std::string Field(double value) {
+  // no -0, inf or nan in a CSV: -0 is 0, and what is not finite is not known
+  if (!std::isfinite(value)) return "";
+  std::string field;
+  AppendShortest(&field, value == 0 ? 0.0 : value);
+  return field;
+}
+
+std::string Field(const std::optional<double>& value) { return value ? Field(*value) : ""; }
+
+std::vector<std::string> TableFields(const app::Table& table, size_t i) {
+  std::vector<std::string> fields;
+  fields.reserve(table.columns().size());
+  for (const app::Column& c : table.columns()) {
+    fields.push_back(c.kind == app::Column::Kind::kText ? c.text[i] : Field(c.numbers[i]));
+  }
+  return fields;
+}
+
+std::vector<std::string> TableColumns(const app::Table& table) {
+  std::vector<std::string> names;
+  for (const app::Column& c : table.columns()) names.push_back(c.name);
+  return names;
+}
+
+void WriteTable(const app::Table& table, CsvFile* file) {
+  file->Header(TableColumns(table));
+  for (size_t i = 0; i < table.rows(); ++i) file->Fields(TableFields(table, i));
+}
+
 }  // namespace contactlaws::cli

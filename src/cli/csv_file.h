@@ -9,9 +9,12 @@
 #define CONTACTLAWS_CLI_CSV_FILE_H_
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "app/table.h"
 
 namespace contactlaws::cli {
 
@@ -32,9 +35,25 @@ void AppendFields(std::string* out, const std::vector<std::string>& fields);
 bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
                const std::vector<double>& values);
 
+// A number in its shortest exact form; an empty field for what is not known
+// (nullopt, NaN, an infinity), and 0 for -0.
+std::string Field(double value);
+std::string Field(const std::optional<double>& value);
+
+// Row i of table as CSV fields: text as it is, numbers as Field.
+std::vector<std::string> TableFields(const app::Table& table, size_t i);
+
+// The names of table's columns.
+std::vector<std::string> TableColumns(const app::Table& table);
+
 // Whether two output paths name one file ("-" is standard output; a file
 // that does not exist yet is compared by its absolute, normal path).
 bool SamePath(const std::string& a, const std::string& b);
+
+class CsvFile;
+
+// A result table as CSV: its columns' names, then a line per row.
+void WriteTable(const app::Table& table, CsvFile* file);
 
 class CsvFile {
  public:

@@ -7,7 +7,6 @@
 #include "app/replay_job.h"
 
 #include "cli/cluster.h"
-#include "cli/impact_csv.h"
 #include "cli/sweep.h"
 #include "scene/number.h"
 #include "scene/tags.h"
@@ -97,19 +96,6 @@ MeasuredData DataOf(const ReplayArgs& args) {
 MeasuredData ReadData(const std::string& option, const std::string& path) {
   if (path.empty()) Refuse(option, path, "must name a trajectory file");
   return ReadMeasuredData(path);
-}
-
-void WriteTable(const app::Table& table, CsvFile* file) {
-  std::vector<std::string> fields;
-  for (const app::Column& c : table.columns()) fields.push_back(c.name);
-  file->Header(fields);
-  for (size_t i = 0; i < table.rows(); ++i) {
-    fields.clear();
-    for (const app::Column& c : table.columns()) {
-      fields.push_back(c.kind == app::Column::Kind::kText ? c.text[i] : Field(c.numbers[i]));
-    }
-    file->Fields(fields);
-  }
 }
 
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,

@@ -80,10 +80,6 @@ app::FitRequest ParseFitRequest(const FitArgs& args, const Scene& scene,
 app::FitJob CheckedFitJob(const Scene& scene, const MeasuredData& train,
                           const MeasuredData* validate, app::FitRequest request);
 
-// A result table as CSV: its columns' names, then a row per row, numbers
-// in their shortest exact form and empty where not known.
-void WriteTable(const app::Table& table, CsvFile* file);
-
 // The simulated samples in the data's own columns (trajectories.csv).
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,
                     CsvFile* file);

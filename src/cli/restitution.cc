@@ -5,7 +5,8 @@
 #include <fmt/format.h>
 
 #include "cli/csv_file.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/report.h"
 #include "cli/sweep.h"
 #include "sim/timestep_advice.h"

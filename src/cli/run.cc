@@ -11,7 +11,8 @@
 
 #include "app/arena.h"
 #include "cli/csv_file.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/report.h"
 #include "sim/start_contact.h"
 #include "sim/summary.h"
@@ -34,11 +35,8 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
 }
 
 // The impact log of sim, in rows, committed.
-void WriteImpacts(const Simulation& sim, ImpactRows rows, CsvFile* impacts) {
-  impacts->Header(ImpactColumns());
-  for (const Episode& impact : ImpactsOf(sim.contacts(), rows)) {
-    impacts->Fields(ImpactFields(sim, impact));
-  }
+void WriteImpacts(const Simulation& sim, app::ImpactRows rows, CsvFile* impacts) {
+  WriteTable(app::ImpactTable(sim, app::ImpactsOf(sim.contacts(), rows)), impacts);
   impacts->Commit();
 }
 
@@ -97,7 +95,9 @@ int RunCommand(const RunArgs& args) {
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   if (trajectory) trajectory->Commit();
   if (impacts) {
-    WriteImpacts(*sim, args.impacts_per_point ? ImpactRows::kPointEpisodes : ImpactRows::kImpacts,
+    WriteImpacts(*sim,
+                 args.impacts_per_point ? app::ImpactRows::kPointEpisodes
+                                        : app::ImpactRows::kImpacts,
                  &*impacts);
   }
   PrintRunSummary(*sim, end_time, args.output && *args.output == "-" ? stderr : stdout);

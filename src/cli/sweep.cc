@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -17,7 +18,8 @@
 #include "cli/cluster.h"
 #include "cli/commands.h"
 #include "cli/csv_file.h"
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "cli/csv_file.h"
 #include "cli/parallel.h"
 #include "cli/report.h"
 #include "scene/number.h"
@@ -72,7 +74,17 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     std::vector<std::string> prefix = {std::string(LawName(spec.law)), Field(out.restitution)};
     if (spec.friction) prefix.emplace_back(FrictionName(*spec.friction));
     std::function<void(const std::vector<double>&)> on_row;
-    if (sweep.record) {
+    if (sweep.record && sweep.keep_numbers) {
+      on_row = [&](const std::vector<double>& row) {
+        for (const double v : row) {
+          if (!std::isfinite(v)) {
+            throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
+                                    sim->time()));
+          }
+        }
+        out.rows.insert(out.rows.end(), row.begin(), row.end());
+      };
+    } else if (sweep.record) {
       on_row = [&](const std::vector<double>& row) {
         if (!AppendRow(&out.trajectory, prefix, row)) {
           throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
@@ -92,9 +104,14 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
       return out;
     }
     out.warnings = RunWarnings(*sim, result);
-    if (sweep.record) {
-      for (const Episode& impact : ImpactsOf(sim->contacts(), sweep.impact_rows)) {
-        std::vector<std::string> fields = ImpactFields(*sim, impact);
+    if (sweep.record && sweep.keep_numbers) {
+      out.impact_table =
+          app::ImpactTable(*sim, app::ImpactsOf(sim->contacts(), sweep.impact_rows));
+    } else if (sweep.record) {
+      const app::Table impacts =
+          app::ImpactTable(*sim, app::ImpactsOf(sim->contacts(), sweep.impact_rows));
+      for (size_t i = 0; i < impacts.rows(); ++i) {
+        std::vector<std::string> fields = TableFields(impacts, i);
         // law, restitution, then the friction model as in the trajectories
         if (spec.friction) fields.emplace(fields.begin() + 2, FrictionName(*spec.friction));
         AppendFields(&out.impacts, fields);

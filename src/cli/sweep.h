@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/impact_csv.h"
+#include "app/impact_table.h"
+#include "app/table.h"
+#include "cli/csv_file.h"
 #include "cli/options.h"
 #include "contactlaws/contactlaws.h"
 #include "sim/summary.h"
@@ -84,6 +86,10 @@ struct RunOutput {
   std::optional<double> restitution;  // as reported (1 for Hertz, none when not read)
   std::string trajectory;             // CSV lines (compare)
   std::string impacts;                // CSV lines (compare)
+  // compare with SweepOptions::keep_numbers: the trajectory's rows (the
+  // run's columns, row by row) and its impact log, in place of the lines
+  std::vector<double> rows;
+  app::Table impact_table;
   RunSummary summary;
   double dissipated = 0;
   std::optional<Episode> first;        // the first episode of the first tag
@@ -98,7 +104,10 @@ struct SweepOptions {
   // compare keeps each run's trajectory and impact log, restitution only
   // its summary
   bool record = false;
-  ImpactRows impact_rows = ImpactRows::kImpacts;
+  // what is recorded kept as numbers (RunOutput::rows, impact_table), not
+  // as CSV lines: Python's, which is never a cluster job
+  bool keep_numbers = false;
+  app::ImpactRows impact_rows = app::ImpactRows::kImpacts;
   int jobs = 1;
   bool quiet = false;  // no progress line
 };
@@ -111,6 +120,32 @@ int Sweep(const Scene& scene, const SimulationOptions& options,
           const std::vector<RunSpec>& specs,
           const std::vector<std::vector<TimestepAdvice>>& advices, const SweepOptions& sweep,
           const std::function<void(int, RunOutput&)>& deliver);
+
+// compare's runs, read, validated and warned about before any runs: every
+// law x restitution x friction model (CompareSpecs), their timestep advice,
+// the first run's simulation (its columns), the sweep's options.
+struct ComparePlan {
+  SweepInputs in;
+  std::vector<RunSpec> specs;
+  bool frictions = false;  // the runs compare friction models
+  std::vector<std::vector<TimestepAdvice>> advices;
+  std::unique_ptr<Simulation> first;
+  SweepOptions sweep;
+};
+ComparePlan PlanCompare(const SweepArgs& args);
+
+// One run's line of compare's printed table.
+struct CompareRow {
+  RunSpec spec;
+  RunOutput::Status status;
+  std::optional<double> restitution;
+  RunSummary s;
+  double dissipated;
+};
+// The printed table: a header, a line per run.
+std::string CompareTableText(const std::vector<CompareRow>& rows, bool frictions);
+// summary.csv's columns after the run's (law, restitution[, friction]).
+std::vector<std::string> SummaryColumns();
 
 // Creates dir (and its parents); throws Error naming it when it cannot.
 std::string CreateDirectory(const std::string& dir);
