@@ -22,6 +22,17 @@ class DamperRateTest : public testing::MujocoTest {
  protected:
   // A free body of mass kMass (its geom given) on a static floor, at the
   // state qpos.
+  // The four bottom corners of a cube of half size a centred at z = 1 (as
+  // Body places it), each with the floor's normal.
+  static void BottomCorners(double a, std::vector<mjtNum>* pos, std::vector<mjtNum>* normal) {
+    for (const double x : {-a, a}) {
+      for (const double y : {-a, a}) {
+        pos->insert(pos->end(), {x, y, 1 - a});
+        normal->insert(normal->end(), {0, 0, 1});
+      }
+    }
+  }
+
   mjData* Body(const std::string& geom) {
     model_ = Load(fmt::format(R"(<mujoco>
   <worldbody>
@@ -61,12 +72,7 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
   constexpr double kHalf = 0.01;
   mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
   std::vector<mjtNum> pos, normal;
-  for (const double x : {-kHalf, kHalf}) {
-    for (const double y : {-kHalf, kHalf}) {
-      pos.insert(pos.end(), {x, y, 1 - kHalf});
-      normal.insert(normal.end(), {0, 0, 1});
-    }
-  }
+  BottomCorners(kHalf, &pos, &normal);
   const std::vector<double> damping(4, kDamping);
   DamperRate rate;
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data()),
@@ -92,12 +98,7 @@ TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
   constexpr double kHalf = 0.01;
   mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
   std::vector<mjtNum> pos, normal;
-  for (const double x : {-kHalf, kHalf}) {
-    for (const double y : {-kHalf, kHalf}) {
-      pos.insert(pos.end(), {x, y, 1 - kHalf});
-      normal.insert(normal.end(), {0, 0, 1});
-    }
-  }
+  BottomCorners(kHalf, &pos, &normal);
   const std::vector<double> damping(4, kDamping);
   DamperRate rate;
   const double bound = rate.Bound(model_.get(), d, pair_, 4, pos.data(), normal.data(),
