@@ -16,6 +16,7 @@ packages=(
   libcli11-dev
   libbenchmark-dev
   libnlopt-dev        # fit: NLopt's optimisers through its C API (docs/identification.md)
+  libcereal-dev       # the serialiser of what a cluster job's ranks exchange (src/ident/wire.h)
   clang               # the sanitizer builds and the fuzzer of scripts/test.sh
   libclang-rt-14-dev  # clang's sanitizer and libFuzzer runtimes
   python3-matplotlib

@@ -27,6 +27,12 @@ struct Column {
   std::vector<std::string> text;  // kText
 };
 
+// Its fields for the exchange between the ranks of a job (ident/wire.h).
+template <typename Archive>
+void serialize(Archive& archive, Column& column) {
+  archive(column.name, column.kind, column.numbers, column.text);
+}
+
 // A cell of a row being added: a number, a count or a text.
 struct Cell {
   Column::Kind kind;
@@ -49,6 +55,12 @@ class Table {
 
   const std::vector<Column>& columns() const { return columns_; }
   size_t rows() const { return rows_; }
+
+  // Its fields for the exchange between the ranks of a job (ident/wire.h).
+  template <typename Archive>
+  void serialize(Archive& archive) {
+    archive(columns_, rows_);
+  }
 
  private:
   std::vector<Column> columns_;

@@ -19,10 +19,9 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
-#include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numeric>
 #include <optional>
@@ -33,6 +32,7 @@
 
 #include "cli/cluster.h"
 #include "cli/commands.h"
+#include "ident/wire.h"
 #include "contactlaws/contact_model.h"
 #include "scene/number.h"
 
@@ -94,58 +94,73 @@ class MpiThread {
   int provided_ = 0;
 };
 
-MpiThread mpi_thread;
-bool joined = false;     // launched as a rank of a job
-bool mpi_ready = false;  // MPI_Init returned and was checked
-int rank = 0;            // from the launcher's environment
-int size = 0;            // from the launcher's environment; 0 until known
-const char* size_variable = nullptr;
-
-// This rank, and the ranks when the launcher's environment gives them
-// beside it (srun's PMIx gives only the rank), as MPI_Init will.
-void ReadLaunch(const char* rank_variable) {
-  rank = static_cast<int>(ParseWholeNumber(std::getenv(rank_variable), 0, 1 << 30).value_or(-1));
-  const char* sizes[][2] = {{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"},
-                            {"PMI_RANK", "PMI_SIZE"}};
-  for (const auto& [r, s] : sizes) {
-    if (std::string(r) != rank_variable || !std::getenv(s)) continue;
-    size_variable = s;
-    size = static_cast<int>(ParseWholeNumber(std::getenv(s), 1, 1 << 30).value_or(0));
+// This process's place in the job: its rank and the job's ranks, from the
+// launcher's environment until MPI's own are checked against them, and MPI's
+// thread. A process joins one job (MPI_Init runs once).
+class Launch {
+ public:
+  // This rank, and the ranks when the launcher's environment gives them
+  // beside it (srun's PMIx gives only the rank), as MPI_Init will; starts
+  // MPI_Init on its own thread.
+  explicit Launch(const char* rank_variable) : rank_variable_(rank_variable) {
+    rank_ = static_cast<int>(
+        ParseWholeNumber(std::getenv(rank_variable), 0, 1 << 30).value_or(-1));
+    const char* sizes[][2] = {{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"},
+                              {"PMI_RANK", "PMI_SIZE"}};
+    for (const auto& [r, s] : sizes) {
+      if (std::string(r) != rank_variable || !std::getenv(s)) continue;
+      size_variable_ = s;
+      size_ = static_cast<int>(ParseWholeNumber(std::getenv(s), 1, 1 << 30).value_or(0));
+    }
+    thread_.Start();
   }
-}
 
-// Waits for MPI_Init (on the main thread, before any other MPI call), and
-// ends the job in one line if MPI's world is not the launcher's. False when
-// the job was stopped before MPI_Init returned (MpiThread::AwaitInit).
-bool AwaitMpi() {
-  if (mpi_ready) return true;
-  const std::optional<int> provided = mpi_thread.AwaitInit();
-  if (!provided) return false;
-  mpi_ready = true;
-  int mpi_rank = 0, mpi_size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &mpi_rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &mpi_size);
-  std::string wrong;
-  if (*provided < MPI_THREAD_SERIALIZED) {
-    wrong = fmt::format("MPI provides thread level {}, below MPI_THREAD_SERIALIZED (MPI_Init "
-                        "runs on a thread of its own)", *provided);
-  } else if (mpi_rank != rank || (size_variable && mpi_size != size)) {
-    wrong = fmt::format("the launcher gives rank {} of {} ({}), MPI rank {} of {}", rank,
-                        size_variable ? std::to_string(size) : "?", LauncherRankVariable(),
-                        mpi_rank, mpi_size);
+  // Waits for MPI_Init (on the main thread, before any other MPI call), and
+  // ends the job in one line if MPI's world is not the launcher's. False
+  // when the job was stopped before MPI_Init returned (MpiThread::AwaitInit).
+  bool AwaitMpi() {
+    if (ready_) return true;
+    const std::optional<int> provided = thread_.AwaitInit();
+    if (!provided) return false;
+    ready_ = true;
+    int mpi_rank = 0, mpi_size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &mpi_rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &mpi_size);
+    std::string wrong;
+    if (*provided < MPI_THREAD_SERIALIZED) {
+      wrong = fmt::format("MPI provides thread level {}, below MPI_THREAD_SERIALIZED (MPI_Init "
+                          "runs on a thread of its own)", *provided);
+    } else if (mpi_rank != rank_ || (size_variable_ && mpi_size != size_)) {
+      wrong = fmt::format("the launcher gives rank {} of {} ({}), MPI rank {} of {}", rank_,
+                          size_variable_ ? std::to_string(size_) : "?", rank_variable_,
+                          mpi_rank, mpi_size);
+    }
+    if (!wrong.empty()) {
+      // what every rank sees alike, rank 0 alone says
+      if (mpi_rank == 0 || mpi_rank != rank_) fmt::print(stderr, "contactlaws: {}\n", wrong);
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, kExitRefused);
+    }
+    size_ = mpi_size;
+    return true;
   }
-  if (!wrong.empty()) {
-    // what every rank sees alike, rank 0 alone says
-    if (mpi_rank == 0 || mpi_rank != rank) fmt::print(stderr, "contactlaws: {}\n", wrong);
-    std::fflush(stderr);
-    MPI_Abort(MPI_COMM_WORLD, kExitRefused);
-  }
-  size = mpi_size;
-  return true;
-}
 
-int Rank() { return rank; }
-int Size() { return size; }  // known before any item is spread (ClusterSpread)
+  void Finalize() { thread_.Finalize(); }
+
+  int rank() const { return rank_; }
+  // known before any item is spread: from the launcher, or once MPI_Init
+  // returned (ClusterSpread)
+  int size() const { return size_; }
+  bool launcher_gives_size() const { return size_variable_ != nullptr; }
+
+ private:
+  MpiThread thread_;
+  const char* rank_variable_;
+  const char* size_variable_ = nullptr;
+  int rank_ = 0;
+  int size_ = 0;  // 0 until known
+  bool ready_ = false;  // MPI_Init returned and was checked
+};
 
 // Each item's rank: longest first, to the rank with the least seconds so far
 // (the lowest rank on a tie), which is within 4/3 of the best balance
@@ -185,6 +200,8 @@ struct Timing {
 
 class MpiSpread final : public WorkSpread {
  public:
+  explicit MpiSpread(Launch* launch) : launch_(launch) {}
+
   void Expect(const std::vector<double>& cost) override {
     const int count = static_cast<int>(cost.size());
     if (plans_.find(count) == plans_.end()) plans_[count] = LongestFirst(cost, Size());
@@ -194,21 +211,19 @@ class MpiSpread final : public WorkSpread {
 
   void Share(std::vector<std::string>* items, const std::vector<double>& seconds) override {
     const int count = static_cast<int>(items->size());
-    if (!AwaitMpi()) {
+    if (!launch_->AwaitMpi()) {
       // rank 0 alone tells the job's end, and cannot know which ranks joined
       if (Rank() != 0) std::_Exit(kExitInterrupted);
       throw Error(Missing(count, nullptr));
     }
-    // this rank's items: [seconds][length][bytes], in item order
-    std::string mine;
+    // this rank's items, in item order, each with its seconds
+    std::vector<std::pair<double, std::string>> items_mine;
     for (int k = 0; k < count; ++k) {
       if (!Mine(k, count)) continue;
-      const uint64_t length = (*items)[k].size();
       timing_.busy += seconds[k];
-      mine.append(reinterpret_cast<const char*>(&seconds[k]), sizeof seconds[k]);
-      mine.append(reinterpret_cast<const char*>(&length), sizeof length);
-      mine += (*items)[k];
+      items_mine.emplace_back(seconds[k], std::move((*items)[k]));
     }
+    const std::string mine = internal::Written(items_mine);
     // the wait for the slowest rank apart from the exchange proper
     double start = MPI_Wtime();
     AwaitArrivals(count);
@@ -227,16 +242,17 @@ class MpiSpread final : public WorkSpread {
     timing_.exchange += MPI_Wtime() - start;
     timing_.exchanges += 1;
     // each rank's items, in item order, as the plan that made them
-    std::vector<const char*> at(size);
-    for (int r = 0; r < size; ++r) at[r] = all.data() + offsets[r];
+    std::vector<std::vector<std::pair<double, std::string>>> from(size);
+    for (int r = 0; r < size; ++r) {
+      from[r] = internal::Read<std::vector<std::pair<double, std::string>>>(
+          all.substr(offsets[r], lengths[r]));
+    }
+    std::vector<size_t> next(size, 0);
     std::vector<double> every(count);
     for (int k = 0; k < count; ++k) {
-      const char*& from = at[Owner(k, count)];
-      uint64_t n;
-      std::memcpy(&every[k], from, sizeof every[k]);
-      std::memcpy(&n, from + sizeof every[k], sizeof n);
-      (*items)[k].assign(from + sizeof every[k] + sizeof n, n);
-      from += sizeof every[k] + sizeof n + n;
+      std::pair<double, std::string>& item = from[Owner(k, count)][next[Owner(k, count)]++];
+      every[k] = item.first;
+      (*items)[k] = std::move(item.second);
     }
     plans_[count] = LongestFirst(every, size);
   }
@@ -304,44 +320,57 @@ class MpiSpread final : public WorkSpread {
     return plan == plans_.end() ? k % Size() : plan->second[k];
   }
 
+  int Rank() const { return launch_->rank(); }
+  int Size() const { return launch_->size(); }
+
+  Launch* launch_;
   std::map<int, std::vector<int>> plans_;  // per count, each item's rank
   Timing timing_;
 };
 
-MpiSpread& TheSpread() {
-  static MpiSpread spread;
-  return spread;
-}
+// The job this process joined: its launch, the spread of its work over the
+// ranks, and what the timing line reports.
+struct Job {
+  explicit Job(const char* rank_variable) : launch(rank_variable) {}
 
-bool spread_used = false;  // the command spread its work (and reports its timing)
-int threads_per_rank = 1;
-std::chrono::steady_clock::time_point joined_at;
-
-// Rank 0's timing line on stderr: every rank's times, gathered.
-void PrintTiming() {
-  const Timing& mine = TheSpread().timing();
-  const double sent[4] = {mine.busy / threads_per_rank, mine.waiting, mine.exchange,
-                          mine.exchanges};
-  std::vector<double> all(4 * Size());
-  MPI_Gather(sent, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  if (Rank() != 0) return;
-  const int size = Size();
-  double busy_min = all[0], busy_max = all[0], busy_sum = 0, waiting = 0;
-  for (int r = 0; r < size; ++r) {
-    busy_min = std::min(busy_min, all[4 * r]);
-    busy_max = std::max(busy_max, all[4 * r]);
-    busy_sum += all[4 * r];
-    waiting += all[4 * r + 1];
+  // Rank 0's timing line on stderr: every rank's times, gathered.
+  void PrintTiming() {
+    const Timing& mine = spread.timing();
+    const double sent[4] = {mine.busy / threads_per_rank, mine.waiting, mine.exchange,
+                            mine.exchanges};
+    const int size = launch.size();
+    std::vector<double> all(4 * size);
+    MPI_Gather(sent, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    if (launch.rank() != 0) return;
+    double busy_min = all[0], busy_max = all[0], busy_sum = 0, waiting = 0;
+    for (int r = 0; r < size; ++r) {
+      busy_min = std::min(busy_min, all[4 * r]);
+      busy_max = std::max(busy_max, all[4 * r]);
+      busy_sum += all[4 * r];
+      waiting += all[4 * r + 1];
+    }
+    const double busy_mean = busy_sum / size;
+    fmt::print(stderr,
+               "contactlaws: timing: {} ranks x {} thread{}, wall {:.3f} s; busy (CPU) per rank "
+               "min {:.3f} mean {:.3f} max {:.3f} s (max/mean {:.3f}); waiting for the slowest "
+               "{:.3f} s (rank mean); exchange {:.6f} s in {} allgathers\n",
+               size, threads_per_rank, threads_per_rank == 1 ? "" : "s",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - joined_at).count(),
+               busy_min, busy_mean, busy_max, busy_mean > 0 ? busy_max / busy_mean : 1.0,
+               waiting / size, all[2], static_cast<long>(all[3]));
   }
-  const double busy_mean = busy_sum / size;
-  fmt::print(stderr,
-             "contactlaws: timing: {} ranks x {} thread{}, wall {:.3f} s; busy (CPU) per rank "
-             "min {:.3f} mean {:.3f} max {:.3f} s (max/mean {:.3f}); waiting for the slowest "
-             "{:.3f} s (rank mean); exchange {:.6f} s in {} allgathers\n",
-             size, threads_per_rank, threads_per_rank == 1 ? "" : "s",
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - joined_at).count(),
-             busy_min, busy_mean, busy_max, busy_mean > 0 ? busy_max / busy_mean : 1.0,
-             waiting / size, all[2], static_cast<long>(all[3]));
+
+  const std::chrono::steady_clock::time_point joined_at = std::chrono::steady_clock::now();
+  Launch launch;
+  MpiSpread spread{&launch};
+  bool spread_used = false;  // the command spread its work (and reports its timing)
+  int threads_per_rank = 1;
+};
+
+// The process's job, once it joined one (launched as a rank); null otherwise.
+std::unique_ptr<Job>& ThisJob() {
+  static std::unique_ptr<Job> job;
+  return job;
 }
 
 }  // namespace
@@ -350,19 +379,19 @@ bool JoinCluster() {
   // launched alone: the only process, without MPI's start-up
   const char* rank_variable = LauncherRankVariable();
   if (!rank_variable) return true;
-  joined_at = std::chrono::steady_clock::now();
-  joined = true;
-  ReadLaunch(rank_variable);
-  if (Rank() != 0) std::freopen("/dev/null", "w", stdout);
-  mpi_thread.Start();
+  ThisJob() = std::make_unique<Job>(rank_variable);
+  if (ThisJob()->launch.rank() != 0) std::freopen("/dev/null", "w", stdout);
   return true;
 }
 
-void SetThreadsPerRank(int jobs) { threads_per_rank = std::max(1, jobs); }
+void SetThreadsPerRank(int jobs) {
+  if (ThisJob()) ThisJob()->threads_per_rank = std::max(1, jobs);
+}
 
 void LeaveCluster(int exit_code) {
-  if (!joined) return;
-  if (!AwaitMpi()) {
+  Job* job = ThisJob().get();
+  if (!job) return;
+  if (!job->launch.AwaitMpi()) {
     // stopped before MPI_Init returned: no MPI call can end this rank
     std::fflush(stdout);
     std::fflush(stderr);
@@ -372,7 +401,7 @@ void LeaveCluster(int exit_code) {
   // rank holds every result and status); any other failure may be this
   // rank's alone
   if (exit_code != 0 && exit_code != kExitIncomplete && exit_code != kExitInterrupted &&
-      Size() > 1) {
+      job->launch.size() > 1) {
     // the others may wait in an exchange this rank will never join
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, exit_code);
@@ -380,19 +409,22 @@ void LeaveCluster(int exit_code) {
   // no rank leaves before rank 0 has written: mpirun ends the job when a
   // rank exits non-zero
   MPI_Barrier(MPI_COMM_WORLD);
-  if (spread_used) PrintTiming();
-  mpi_thread.Finalize();
+  if (job->spread_used) job->PrintTiming();
+  job->launch.Finalize();
 }
 
 WorkSpread* ClusterSpread() {
-  if (!joined) return nullptr;
+  Job* job = ThisJob().get();
+  if (!job) return nullptr;
   // the launcher does not say how many ranks
-  if (!size_variable && !AwaitMpi()) throw Error("stopped before MPI_Init returned");
-  if (Size() == 1) return nullptr;
-  spread_used = true;
-  return &TheSpread();
+  if (!job->launch.launcher_gives_size() && !job->launch.AwaitMpi()) {
+    throw Error("stopped before MPI_Init returned");
+  }
+  if (job->launch.size() == 1) return nullptr;
+  job->spread_used = true;
+  return &job->spread;
 }
 
-bool WritesOutputs() { return !joined || Rank() == 0; }
+bool WritesOutputs() { return !ThisJob() || ThisJob()->launch.rank() == 0; }
 
 }  // namespace contactlaws::cli

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <numeric>
 #include <string_view>
@@ -13,6 +12,7 @@
 
 #include "contactlaws/contact_model.h"
 #include "ident/binding.h"
+#include "ident/wire.h"
 #include "ident/work_spread.h"
 #include "sim/parallel.h"
 #include "sim/settle.h"
@@ -30,50 +30,17 @@ int Replay::StartSample(int i, const ReplayOptions& options) const {
 
 namespace {
 
-// Every process's trajectories to every process: each result as bytes (its
-// fields, then the simulated samples), exchanged through spread with the
-// seconds each took.
+// Every process's trajectories to every process, exchanged through spread
+// with the seconds each took.
 void Share(WorkSpread& spread, const std::vector<double>& seconds,
            std::vector<ReplayedTrajectory>* results) {
-  struct Fixed {
-    ReplayedTrajectory::Status status;
-    int start;
-    Score score;
-    double diverged_at;
-    int settled_bodies;
-    double settled_distance;
-    size_t last;  // doubles of ReplayedTrajectory::last, before the simulated samples
-  };
   std::vector<std::string> items(results->size());
   const int count = static_cast<int>(results->size());
   for (int i = 0; i < count; ++i) {
-    if (!spread.Mine(i, count)) continue;
-    const ReplayedTrajectory& r = (*results)[i];
-    const Fixed fixed{r.status, r.start, r.score, r.diverged_at, r.settled_bodies,
-                      r.settled_distance, r.last.size()};
-    items[i].assign(reinterpret_cast<const char*>(&fixed), sizeof fixed);
-    items[i].append(reinterpret_cast<const char*>(r.last.data()), r.last.size() * sizeof(double));
-    items[i].append(reinterpret_cast<const char*>(r.simulated.data()),
-                    r.simulated.size() * sizeof(double));
+    if (spread.Mine(i, count)) items[i] = internal::Written((*results)[i]);
   }
   spread.Share(&items, seconds);
-  for (int i = 0; i < count; ++i) {
-    ReplayedTrajectory& r = (*results)[i];
-    Fixed fixed;
-    std::memcpy(&fixed, items[i].data(), sizeof fixed);
-    r.status = fixed.status;
-    r.start = fixed.start;
-    r.score = fixed.score;
-    r.diverged_at = fixed.diverged_at;
-    r.settled_bodies = fixed.settled_bodies;
-    r.settled_distance = fixed.settled_distance;
-    r.last.resize(fixed.last);
-    std::memcpy(r.last.data(), items[i].data() + sizeof fixed, r.last.size() * sizeof(double));
-    const size_t simulated = sizeof fixed + r.last.size() * sizeof(double);
-    r.simulated.resize((items[i].size() - simulated) / sizeof(double));
-    std::memcpy(r.simulated.data(), items[i].data() + simulated,
-                r.simulated.size() * sizeof(double));
-  }
+  for (int i = 0; i < count; ++i) (*results)[i] = internal::Read<ReplayedTrajectory>(items[i]);
 }
 
 }  // namespace
