@@ -309,3 +309,19 @@ def test_messages_name_the_keyword_arguments(capfd):
     assert str(error.value).startswith("max_timestep=-1 ")
     assert (_contactlaws._spelled("use --impacts-per-point or --settle; see contactlaws check")
             == "use impacts_per_point=True or settle=True; see contactlaws.check()")
+
+
+def test_run_writes_numpy_records_that_hold_the_csvs_doubles(tmp_path):
+    """run --output FILE.npy: numpy.load gives one float64 field per CSV
+    column, each number the CSV's double (the CSV writes -0 as 0)."""
+    import numpy as np
+    args = ["run", BALL, "--duration", "0.5", "--friction", "coulomb"]
+    cli(*args, "--output", str(tmp_path / "ball.csv"))
+    cli(*args, "--output", str(tmp_path / "ball.npy"))
+    records = np.load(tmp_path / "ball.npy")
+    frame = pd.DataFrame(records)
+    expected = read(tmp_path / "ball.csv").astype(np.float64)  # a column of 0s reads as ints
+    assert list(frame.columns) == list(expected.columns)
+    assert all(records.dtype[name] == np.float64 for name in records.dtype.names)
+    assert len(frame) == 501
+    pd.testing.assert_frame_equal(frame + 0.0, expected, check_exact=True)

@@ -6,13 +6,15 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "app/arena.h"
-#include "cli/csv_file.h"
 #include "app/impact_table.h"
 #include "cli/csv_file.h"
+#include "cli/npy_file.h"
 #include "cli/report.h"
 #include "sim/start_contact.h"
 #include "sim/summary.h"
@@ -35,6 +37,28 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
 }
 
 // The impact log of sim, in rows, committed.
+// The trajectory's file: NumPy's records for a path ending in .npy, CSV
+// otherwise.
+class TrajectoryFile {
+ public:
+  explicit TrajectoryFile(const std::string& path) {
+    if (IsNpyPath(path)) {
+      npy_.emplace(path);
+    } else {
+      csv_.emplace(path);
+    }
+  }
+  void Header(const std::vector<std::string>& columns) {
+    npy_ ? npy_->Header(columns) : csv_->Header(columns);
+  }
+  void Row(const std::vector<double>& values) { npy_ ? npy_->Row(values) : csv_->Row(values); }
+  void Commit() { npy_ ? npy_->Commit() : csv_->Commit(); }
+
+ private:
+  std::optional<NpyFile> npy_;
+  std::optional<CsvFile> csv_;
+};
+
 void WriteImpacts(const Simulation& sim, app::ImpactRows rows, CsvFile* impacts) {
   WriteTable(app::ImpactTable(sim, app::ImpactsOf(sim.contacts(), rows)), impacts);
   impacts->Commit();
@@ -58,7 +82,7 @@ int RunCommand(const RunArgs& args) {
   WarnAboutTags(sim->contact_model(), &warned);
 
   // open the outputs before the run: an unwritable path fails now
-  std::optional<CsvFile> trajectory;
+  std::optional<TrajectoryFile> trajectory;
   std::optional<CsvFile> impacts;
   if (args.output) trajectory.emplace(*args.output);
   if (args.impacts) impacts.emplace(*args.impacts);
