@@ -105,5 +105,28 @@ INSTANTIATE_TEST_SUITE_P(Friction, HingedPlankTest, ::testing::Values("none", "c
                            return std::string(info.param);
                          });
 
+// A run under auto whose steps add energy is told of its accuracy, not of a
+// timestep it did not choose.
+TEST_F(EulerLedgerTest, AnAutoRunThatGainsEnergyIsToldOfItsAccuracy) {
+  Simulation& sim = MakeSimulation(R"(<mujoco>
+  <option timestep="1e-4" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1"/>
+    <body name="plank" pos="0 0 0.3"><joint name="pivot" type="hinge" axis="0 1 0"/>
+      <geom name="plank" type="box" pos="0.5 0 0" size="0.5 0.05 0.01" mass="0.5"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:plank-floor" data="geom1=plank geom2=floor law=hunt-crossley
+    restitution=0.3 stiffness=1e7 friction=none"/></custom>
+</mujoco>)");
+  AdvanceOptions options;
+  options.duration = 1.0;
+  options.auto_timestep = AutoTimestepOptions{};
+  options.auto_timestep->accuracy = 0.05;  // coarse enough to gain more than 1% of 1.47 J
+  const AdvanceResult result = Advance(&sim, options, nullptr);
+  ASSERT_TRUE(result.energy_growth.has_value());
+  EXPECT_NE(result.energy_growth->find("accuracy (0.05) too coarse"), std::string::npos)
+      << *result.energy_growth;
+}
+
 }  // namespace
 }  // namespace contactlaws
