@@ -33,6 +33,10 @@ void PeakForce::Add(double t, double force) {
 
 namespace {
 
+double Dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 // An episode's tangent and normal from its first point (a point episode's
 // own point, an impact's first to touch), and that point's slip and spin
 // along them.
@@ -276,16 +280,42 @@ void ImpactLog::Commit(double t, const std::vector<PointEvaluation>& points,
 
 void DissipationLedger::Reset() { *this = DissipationLedger(); }
 
-void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& points) {
+void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& points,
+                               Booking booking) {
   const double power = DissipatedPower(points);
   const double previous_time = committed_time_;
+  const double h = t - previous_time;
   if (has_committed_) {
-    dissipated_ += 0.5 * (power + committed_power_) * (t - previous_time);
+    dissipated_ += 0.5 * (power + committed_power_) * h;
     for (const PointEvaluation& e : points) {
       if (!e.touch) continue;
       const double touch = TouchTime(e, t, previous_time);
       dissipated_ += 0.5 * (e.touch_power + e.dissipated_power) * (t - touch) -
-                     0.5 * e.dissipated_power * (t - previous_time);
+                     0.5 * e.dissipated_power * h;
+    }
+    // kHeldForce (held_ filled at the last commit): the end's half is the
+    // start's forces at the end's rates, for the points in contact at both
+    for (const PointEvaluation& e : points) {
+      if (e.touch || e.episode < 0) continue;
+      for (const HeldForce& held : held_) {
+        if (held.episode != e.episode) continue;
+        const double power = held.damping * e.depth_rate -
+                             Dot3(held.friction, e.slip) - Dot3(held.torque, e.spin);
+        dissipated_ += 0.5 * h * (power - e.dissipated_power - e.friction_power);
+        break;
+      }
+    }
+  }
+  held_.clear();
+  if (booking == Booking::kHeldForce) {
+    for (const PointEvaluation& e : points) {
+      if (e.episode < 0) continue;
+      // the damping force is the power over the rate (0 at d' = 0, where
+      // the laws' damping force is 0)
+      HeldForce held{e.episode, e.depth_rate != 0 ? e.dissipated_power / e.depth_rate : 0.0,
+                     {e.friction[0], e.friction[1], e.friction[2]},
+                     {e.friction_torque[0], e.friction_torque[1], e.friction_torque[2]}};
+      held_.push_back(held);
     }
   }
   has_committed_ = true;

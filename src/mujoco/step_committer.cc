@@ -162,7 +162,12 @@ void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& lat
 
   // the energy of the step, the episodes of its start state
   const std::vector<PointEvaluation>& points = capture.points();
-  ledger_.Commit(capture.time(), points);
+  // MuJoCo's Euler and implicit integrators hold the laws' forces (explicit,
+  // in qfrc_passive) through the step; RK4's stages follow them
+  const DissipationLedger::Booking booking = model_.model()->opt.integrator == mjINT_RK4
+                                                 ? DissipationLedger::Booking::kTrapezoid
+                                                 : DissipationLedger::Booking::kHeldForce;
+  ledger_.Commit(capture.time(), points, booking);
   episodes_.Commit(capture.time(), points);
 
   // the separation speed is the one the bodies leave with: their rate at

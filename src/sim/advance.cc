@@ -19,7 +19,9 @@ static_assert(std::atomic<bool>::is_always_lock_free);
 // Watches the ledger's total of an undriven scene.
 class EnergyWatch {
  public:
-  explicit EnergyWatch(const Simulation& sim) : enabled_(sim.Undriven()) {}
+  // accuracy: the auto timestep's, when the steps are its
+  EnergyWatch(const Simulation& sim, std::optional<double> accuracy)
+      : enabled_(sim.Undriven()), accuracy_(accuracy) {}
   bool enabled() const { return enabled_; }
   // At a state after mj_forward.
   void Observe(const Simulation& sim) {
@@ -40,16 +42,20 @@ class EnergyWatch {
   }
   std::optional<std::string> Report() const {
     if (!enabled_ || !(worst_growth_ > kEnergyGrowthTolerance * scale_)) return std::nullopt;
+    const std::string cause =
+        accuracy_ ? fmt::format("likely an auto timestep's accuracy ({:.3g}) too coarse for the "
+                                "contact: ask for a smaller one", *accuracy_)
+                  : "likely a timestep too coarse for the contact";
     return fmt::format(
         "the total energy of this undriven scene grew by {:.4g} J ({:.3g}% of {:.4g} J, "
-        "tolerance {}%) by t = {:.6g} s: the integration adds energy, likely a timestep too "
-        "coarse for the contact",
+        "tolerance {}%) by t = {:.6g} s: the integration adds energy, {}",
         worst_growth_, 100 * worst_growth_ / scale_, scale_, 100 * kEnergyGrowthTolerance,
-        worst_time_);
+        worst_time_, cause);
   }
 
  private:
   bool enabled_;
+  std::optional<double> accuracy_;
   bool started_ = false;
   double initial_ = 0;
   double scale_ = 0;
@@ -69,7 +75,9 @@ AdvanceResult Advance(Simulation* sim, const AdvanceOptions& options,
   const bool sampling = options.sample_rate > 0 && on_row;
   const double period = sampling ? 1.0 / options.sample_rate : 0.0;
   std::vector<double> row;
-  EnergyWatch energy(*sim);
+  EnergyWatch energy(*sim, options.auto_timestep
+                               ? std::optional<double>(options.auto_timestep->accuracy)
+                               : std::nullopt);
   AdvanceResult result;
   // auto steps do not end at sample times: the rows inside them are
   // interpolated (dense_rows.h)
