@@ -11,6 +11,7 @@
 // integration added energy it had not added.
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include <fmt/format.h>
@@ -108,6 +109,9 @@ INSTANTIATE_TEST_SUITE_P(Friction, HingedPlankTest, ::testing::Values("none", "c
 // A run under auto whose steps add energy is told of its accuracy, not of a
 // timestep it did not choose.
 TEST_F(EulerLedgerTest, AnAutoRunThatGainsEnergyIsToldOfItsAccuracy) {
+  if (std::getenv(kTestContactStepsVariable)) {
+    GTEST_SKIP() << "contact steps resolve the landings inside the step: no energy gained";
+  }
   Simulation& sim = MakeSimulation(R"(<mujoco>
   <option timestep="1e-4" integrator="Euler"/>
   <worldbody>
