@@ -83,7 +83,8 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
         "law's v0 was the largest approach rate, and e_post is taken against it (docs/laws.md, "
         "Touching chains)",
         PairName(sim, first->pair), others, count, count == 1 ? "" : "s", point->time_contact,
-        point->impact_velocity, point->max_approach_velocity));
+        // a contact there at the start touched at no speed, -0 for one found closing
+        std::max(0.0, point->impact_velocity), point->max_approach_velocity));
   }
   // bodies that merely started touching: one line for the scene
   const Episode* fastest = nullptr;

@@ -95,5 +95,37 @@ TEST_F(RunReportTest, BodiesPlacedTouchingMakeOneLineThatPointsToSettle) {
   EXPECT_EQ(w[0].find("pulse"), std::string::npos) << w[0];
 }
 
+// A seesaw: a block resting on one end of a hinged plank (there at t = 0),
+// a ball dropped onto the other end. The plank flings the block: a push
+// through a contact that was there at the start, named with the speed it
+// touched at: none (printed 0, not -0).
+TEST_F(RunReportTest, APushThroughAContactThereAtTheStartTouchedAtZero) {
+  Simulation& sim = MakeSimulation(R"(<mujoco>
+  <option timestep="1e-4"/>
+  <worldbody>
+    <body name="plank" pos="0 0 0.3"><joint type="hinge" axis="0 1 0"/>
+      <geom name="plank" type="box" size="0.5 0.05 0.01" mass="0.5"/></body>
+    <body name="ball" pos="0.4 0 0.8"><freejoint/>
+      <geom name="ball" type="sphere" size="0.03" mass="0.3"/></body>
+    <body name="block" pos="-0.4 0 0.33"><freejoint/>
+      <geom name="block" type="box" size="0.02 0.02 0.02" mass="0.05"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:ball" data="geom1=ball geom2=plank law=hunt-crossley restitution=0.7
+      stiffness=1e6 friction=none"/>
+    <text name="contactlaw:block" data="geom1=block geom2=plank law=gonthier restitution=0.5
+      stiffness=1e6 friction=none"/>
+  </custom>
+</mujoco>)");
+  while (sim.time() < 0.35) sim.Step();
+  std::string push;
+  for (const std::string& w : ChainedContactWarnings(sim)) {
+    if (w.find("contactlaw:block") != std::string::npos) push = w;
+  }
+  ASSERT_FALSE(push.empty());
+  EXPECT_NE(push.find("touched at 0 m/s"), std::string::npos) << push;
+  EXPECT_EQ(push.find("-0 m/s"), std::string::npos) << push;
+}
+
 }  // namespace
 }  // namespace contactlaws
