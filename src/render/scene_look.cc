@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -22,9 +23,11 @@ constexpr char kChecker[] = "contactlaws_look_checker";
 constexpr char kFloor[] = "contactlaws_look_floor";
 constexpr char kKeyLight[] = "contactlaws_look_key";
 
-// The checker's square is about this many of the largest moving geom's
-// bounding diameters: large enough to read as a floor, small enough that a
-// body travelling its own size is seen to move over it.
+// The checker's square is about this many of the moving geoms' median
+// bounding diameter: large enough to read as a floor, small enough that a
+// body travelling its own size is seen to move over it (the median, so that
+// one long geom, a plank or a pole, does not make the squares of a ball
+// rolling on it larger than the floor).
 constexpr double kSquareSizes = 5;
 // Without moving geoms: this share of the model's extent.
 constexpr double kSquareExtentShare = 0.1;
@@ -72,14 +75,18 @@ double RoundDown125(double length) {
 }
 
 double SquareSize(const mjModel* m) {
-  double radius = 0;
+  std::vector<double> radii;
   for (int g = 0; g < m->ngeom; ++g) {
     const int body = m->geom_bodyid[g];
-    if (m->body_weldid[body] != 0 && m->geom_type[g] != mjGEOM_PLANE) {
-      radius = std::max(radius, m->geom_rbound[g]);
+    if (m->body_weldid[body] != 0 && m->geom_type[g] != mjGEOM_PLANE && m->geom_rbound[g] > 0) {
+      radii.push_back(m->geom_rbound[g]);
     }
   }
-  const double length = radius > 0 ? kSquareSizes * 2 * radius : kSquareExtentShare * m->stat.extent;
+  // the lower median
+  const auto median = radii.begin() + (radii.size() - 1) / 2;
+  if (!radii.empty()) std::nth_element(radii.begin(), median, radii.end());
+  const double length =
+      radii.empty() ? kSquareExtentShare * m->stat.extent : kSquareSizes * 2 * *median;
   return RoundDown125(length > 0 ? length : 1);
 }
 

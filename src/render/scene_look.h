@@ -12,7 +12,7 @@
 //           defaults, those of the shipped scenes);
 //   ground  a checker material on each plane that has no material and
 //           MuJoCo's default colour; its squares 1, 2 or 5 x 10^k m, about
-//           kSquareSizes moving bodies across;
+//           kSquareSizes of the moving geoms' median diameter;
 //   bodies  a colour per body (a palette, in body order) on each other geom
 //           that has no material and MuJoCo's default colour.
 // What is added is visual only: textures, a material and a light appended

@@ -196,6 +196,21 @@ TEST(RenderLookTest, EachElementOfItsOwnIsKept) {
   EXPECT_TRUE(plan_of("", "", kOwnLook, R"(material="ground")").floors.empty());
 }
 
+// One long geom does not set the squares: a 1 m plank on a hinge with a
+// ball (6 cm) and a block (4 cm) on it: 5 of the median diameter (the
+// block's 6.9 cm diagonal), 35 cm, down to 0.2 m; by the plank's 1 m they
+// would be 5 m, larger than the 4 m floor.
+TEST(RenderLookTest, TheSquaresFollowTheTypicalBodyNotTheLongest) {
+  const UniqueModel m = LoadModelString(R"(<mujoco><worldbody>
+    <geom type="plane" size="2 2 0.1"/>
+    <body pos="0 0 0.3"><joint type="hinge" axis="0 1 0"/>
+      <geom type="box" size="0.5 0.05 0.01"/></body>
+    <body pos="0.4 0 0.8"><freejoint/><geom type="sphere" size="0.03"/></body>
+    <body pos="-0.4 0 0.33"><freejoint/><geom type="box" size="0.02 0.02 0.02"/></body>
+  </worldbody></mujoco>)", "seesaw.xml");
+  EXPECT_DOUBLE_EQ(render::PlanLook(m.get()).square, 0.2);
+}
+
 // Visual only: the dressed model steps bit for bit as the scene's (a die
 // dropped and tumbling on the plane, MuJoCo's own contact).
 TEST(RenderLookTest, DressedModelStepsAsTheScene) {
