@@ -25,6 +25,22 @@ bool Immovable(const ContactModel& cm, int body) {
   return cm.model()->body_weldid[body] == 0 || cm.FindDrive(body) != nullptr;
 }
 
+namespace {
+
+// Whether body moves as a rigid part of a free-floating tree's root: then it
+// falls at g and the root's subtree mass is its translational mass. A body
+// on hinges, slides or balls (a pendulum, a plank on a pivot, a block on
+// rails) falls as its joints let it, and meets a contact with the mass its
+// chain shows there: only stepping ahead tells.
+bool FloatsFree(const ContactModel& cm, int body) {
+  const mjModel* m = cm.model();
+  const int root = m->body_rootid[body];
+  return m->body_weldid[body] == root && m->body_jntnum[root] == 1 &&
+         m->jnt_type[m->body_jntadr[root]] == mjJNT_FREE;
+}
+
+}  // namespace
+
 double GravityClosingAcceleration(const ContactModel& cm, const GeomPair& pair,
                                   const mjtNum normal[3]) {
   return GravityClosingAcceleration(cm, pair.body, normal);
@@ -138,10 +154,17 @@ ContactEstimate EstimateContact(const ContactData& contacts, int pair_index,
   }
   e.impact_velocity = impact_velocity ? *impact_velocity : speed;
   // nothing closes them by the current speeds and gravity alone (a pendulum,
-  // a body on a free body): step ahead to the touch
+  // a body on a free body), or a body moves on joints that gravity over the
+  // gap does not describe (a plank on a pivot: its tip lands faster than a
+  // free fall, with a third of its mass): step ahead to the touch
   const bool small_tag =
       static_cast<int>(cm.tags()[pair.tag].pairs.size()) <= kLookAheadPairs;
-  if (!impact_velocity && nearest && !(speed >= pair.params.min_impact_velocity) && small_tag &&
+  bool articulated = false;
+  for (const int body : pair.body) {
+    articulated = articulated || (!Immovable(cm, body) && !FloatsFree(cm, body));
+  }
+  if (!impact_velocity && nearest &&
+      (!(speed >= pair.params.min_impact_velocity) || articulated) && small_tag &&
       !Immovable(cm, pair.body[0]) + !Immovable(cm, pair.body[1]) > 0) {
     const std::optional<Approach> a = LookAhead(contacts, pair_index);
     if (a && a->rate >= pair.params.min_impact_velocity) {

@@ -123,5 +123,37 @@ TEST_F(EstimateTest, APendulumIsSteppedAheadToItsTouch) {
   EXPECT_TRUE(std::isfinite(e.contact_duration));
 }
 
+// A plank (1 m, 0.5 kg) on a pivot at one end, level, 0.3 m above the floor:
+// gravity alone would close the gap at g (2.39 m/s over 0.29 m, with all its
+// 0.5 kg); on its pivot its far corner lands at w L cos(theta) with I / (L
+// cos(theta))^2 of it, which the estimate steps ahead to find although
+// gravity over the gap already gives a speed.
+TEST_F(EstimateTest, APlankOnAPivotIsSteppedAheadToItsLanding) {
+  Simulation& sim = MakeSimulation(R"(<mujoco>
+  <option timestep="1e-4"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1"/>
+    <body name="plank" pos="0 0 0.3"><joint type="hinge" axis="0 1 0"/>
+      <geom name="plank" type="box" pos="0.5 0 0" size="0.5 0.05 0.01" mass="0.5"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:plank-floor" data="geom1=plank geom2=floor law=hunt-crossley
+    restitution=0.3 stiffness=1e7 friction=none"/></custom>
+</mujoco>)");
+  mj_forward(sim.model(), sim.data());
+  const ContactEstimate e = EstimateContact(sim.contacts(), 0);
+  ASSERT_TRUE(e.looked_ahead);
+  // the lower far corner (1 m out, 1 cm below the axis) touches the floor
+  const double arm = std::hypot(1.0, 0.01);
+  const double theta = std::asin(0.3 / arm) - std::atan2(0.01, 1.0);  // the plank's tilt
+  const double inertia = 0.5 * (1.0 / 3 + 0.02 * 0.02 / 12);  // about the pivot, kg m^2
+  const double w = std::sqrt(2 * 0.5 * 9.81 * 0.5 * std::sin(theta) / inertia);  // rad/s
+  const double lever = std::cos(theta) - 0.01 * std::sin(theta);  // the corner's, horizontal, m
+  // the look stops at the last step before the touch: one step of fall
+  // (w' lever h ~ 2e-3 m/s at 1e-4 s)
+  constexpr double kLookAheadTolerance = 3e-3;  // m/s
+  EXPECT_NEAR(e.impact_velocity, w * lever, kLookAheadTolerance);
+  EXPECT_NEAR(e.effective_mass, inertia / (lever * lever), 1e-3);
+}
+
 }  // namespace
 }  // namespace contactlaws
