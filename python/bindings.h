@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "app/options.h"
 #include "app/table.h"
 #include "contactlaws/contactlaws.h"
 
@@ -33,6 +34,21 @@ inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, con
   if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
   return pybind11::str(kwargs[key]).cast<std::string>();
 }
+
+// The options' grammar naming the keyword arguments (python/options.cc).
+const app::OptionReader& Keywords();
+
+// A keyword argument as the grammar takes it: absent or None -> nullopt; an
+// int or float (not a bool) as a number; a str as text; anything else as
+// Python's str() of it.
+std::optional<app::Value> ValueOf(const pybind11::dict& kwargs, const char* key);
+
+// A switch keyword: True or False (absent or None: false); else TypeError.
+bool Switch(const pybind11::dict& kwargs, const char* key);
+
+// The keywords of the options run, compare, restitution and check share
+// (duration, sample_rate, timestep, ..., settle).
+app::CommonInput CommonInputOf(const pybind11::dict& kwargs);
 
 // The keywords of the options run, compare and restitution share (duration,
 // sample_rate, timestep, ..., settle) into args.

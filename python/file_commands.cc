@@ -421,9 +421,8 @@ py::tuple Check(const std::string& scene, const py::dict& kwargs) {
 // restitution (`laws --format csv`): {"laws", "frictions", "effective"},
 // each a table's columns.
 py::dict LawTables(const py::dict& kwargs) {
-  const std::optional<std::string> text = OptionalText(kwargs, "restitution");
-  const std::vector<double> restitutions =
-      cli::ParseRestitutionList("--restitution", text.value_or(cli::kDefaultRestitutions));
+  const std::vector<double> restitutions = Keywords().RestitutionList(
+      "restitution", ValueOf(kwargs, "restitution").value_or(app::kDefaultRestitutions));
   py::dict out;
   out["laws"] = TableDict(app::LawTable());
   out["frictions"] = TableDict(app::FrictionTable());

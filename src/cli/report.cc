@@ -6,7 +6,8 @@
 
 #include "cli/cluster.h"
 #include "cli/mujoco_warnings.h"
-#include "sim/run_report.h"
+#include "app/run_warnings.h"
+#include "cli/options.h"
 
 namespace contactlaws::cli {
 
@@ -43,23 +44,8 @@ void Warn(const std::string& scene, const std::string& what) {
 }
 
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result) {
-  std::vector<std::string> warnings;
-  if (result.energy_growth) warnings.push_back(*result.energy_growth);
-  for (std::string& w : ChainedContactWarnings(sim)) warnings.push_back(std::move(w));
-  const double turn = sim.contacts().contact_steps_worst_turn();
-  if (sim.contacts().contact_steps().enabled() && turn > kFrozenTurnWarning) {
-    warnings.push_back(fmt::format(
-        "--contact-steps: a body in contact turned {:.3g} rad within one step (t = {:.6g} s), "
-        "beyond {} rad: the configuration frozen over the step moves its contact points and "
-        "normals by as much (a die's first rebound at 0.042 rad: 15% off); take a smaller "
-        "--timestep (docs/timestep.md, \"Contact steps\")",
-        turn, sim.contacts().contact_steps_worst_turn_time(), kFrozenTurnWarning));
-  }
-  for (const MujocoWarning& w : sim.Warnings()) {
-    warnings.push_back(fmt::format("MuJoCo: {} ({} time{})", w.text, w.count,
-                                   w.count == 1 ? "" : "s"));
-    NoteReportedMujocoWarning(w.text);
-  }
+  std::vector<std::string> warnings = app::RunWarnings(sim, result, Flags());
+  for (const MujocoWarning& w : sim.Warnings()) NoteReportedMujocoWarning(w.text);
   return warnings;
 }
 

@@ -1,0 +1,104 @@
+// Copyright contactlaws authors.
+//
+// The application's option grammar: a number given as a number reads as its
+// text does, and every message names the option as its front-end spells it.
+
+#include "app/options.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace contactlaws::app {
+namespace {
+
+// The message of the Error fn throws, or "" when it throws none.
+template <typename Fn>
+std::string ErrorOf(Fn fn) {
+  try {
+    fn();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A front-end's spelling unlike the key: "<max_timestep>".
+std::string Bracketed(std::string_view key) { return "<" + std::string(key) + ">"; }
+
+const OptionReader kKeywords(&KeywordSpelling);
+const OptionReader kBracketed(&Bracketed);
+
+TEST(OptionGrammarTest, ANumberReadsAsItsText) {
+  EXPECT_EQ(kKeywords.Positive("timestep", 2.5e-4, "s"),
+            kKeywords.Positive("timestep", std::string("2.5e-4"), "s"));
+  EXPECT_EQ(kKeywords.Restitution("restitution", 0.3),
+            kKeywords.Restitution("restitution", std::string("0.3")));
+  EXPECT_EQ(kKeywords.ContactSteps(3.0), kKeywords.ContactSteps(std::string("3")));
+  EXPECT_EQ(kKeywords.RestitutionList("restitution", 0.5), std::vector<double>{0.5});
+}
+
+TEST(OptionGrammarTest, ANumberIsRefusedAsItsTextIs) {
+  const struct {
+    std::string (*number)();
+    std::string (*text)();
+  } cases[] = {
+      {[] { return ErrorOf([] { kKeywords.Positive("timestep", -1.0, "s"); }); },
+       [] { return ErrorOf([] { kKeywords.Positive("timestep", std::string("-1"), "s"); }); }},
+      {[] { return ErrorOf([] { kKeywords.Restitution("restitution", 2.0); }); },
+       [] { return ErrorOf([] { kKeywords.Restitution("restitution", std::string("2")); }); }},
+      {[] { return ErrorOf([] { kKeywords.ContactSteps(2.5); }); },
+       [] { return ErrorOf([] { kKeywords.ContactSteps(std::string("2.5")); }); }},
+      {[] { return ErrorOf([] { kKeywords.ContactSteps(0.0); }); },
+       [] { return ErrorOf([] { kKeywords.ContactSteps(std::string("0")); }); }},
+      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", 1.5); }); },
+       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("1.5")); }); }},
+      {[] { return ErrorOf([] { kKeywords.Dissipation(-0.5); }); },
+       [] { return ErrorOf([] { kKeywords.Dissipation(std::string("-0.5")); }); }},
+  };
+  for (const auto& c : cases) {
+    const std::string message = c.number();
+    EXPECT_NE(message, "");
+    EXPECT_EQ(message, c.text());
+  }
+  EXPECT_EQ(ErrorOf([] { kKeywords.Positive("timestep", -1.0, "s"); }),
+            "timestep=-1 must be a number > 0 (s)");
+  // a non-finite number is not a number of the grammar
+  EXPECT_EQ(ErrorOf([] { kKeywords.Number("mu", std::nan("")); }), "mu=nan is not a finite number");
+  EXPECT_EQ(ErrorOf([] { kKeywords.Positive("duration", HUGE_VAL, "s"); }),
+            "duration=inf is not a finite number");
+}
+
+TEST(OptionGrammarTest, MessagesSpellEveryOptionTheyName) {
+  CommonInput input;
+  input.timestep = 1e-4;
+  input.accuracy = std::string("0.01");
+  EXPECT_EQ(ErrorOf([&] { kBracketed.Common(input); }),
+            "<accuracy>=0.01 goes with <timestep> auto, not with the fixed <timestep>=0.0001");
+  input = CommonInput();
+  input.max_timestep = 1e-3;
+  EXPECT_EQ(ErrorOf([&] { kBracketed.Common(input); }),
+            "<max_timestep>=0.001 goes with <timestep> auto");
+  EXPECT_EQ(ErrorOf([] { kBracketed.LawList("laws", "hertz,hertz"); }),
+            "<laws>=hertz,hertz names hertz twice");
+  EXPECT_EQ(ErrorOf([] { kBracketed.UnderOption("params", [] { throw Error("x=1: bad"); }); }),
+            "<params>: x=1: bad");
+}
+
+TEST(OptionGrammarTest, CommonOptionsTakeNumbers) {
+  CommonInput input;
+  input.duration = 0.5;
+  input.timestep = std::string("auto");
+  input.max_timestep = 1e-3;
+  input.mu = 0.25;
+  const CommonOptions options = kKeywords.Common(input);
+  EXPECT_EQ(options.duration, 0.5);
+  ASSERT_TRUE(options.auto_timestep);
+  EXPECT_EQ(options.auto_timestep->max_step, 1e-3);
+  EXPECT_EQ(options.simulation.overrides.mu, 0.25);
+}
+
+}  // namespace
+}  // namespace contactlaws::app
