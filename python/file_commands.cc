@@ -19,6 +19,7 @@
 #include <thread>
 #include <utility>
 
+#include "app/check_job.h"
 #include "app/law_tables.h"
 #include "app/replay_job.h"
 #include "bindings.h"
@@ -403,18 +404,25 @@ py::dict Fit(const std::string& scene_path, const py::dict& kwargs) {
   return out;
 }
 
-py::tuple Check(const std::string& scene, const py::dict& kwargs) {
-  cli::CheckArgs args;
-  args.scene = scene;
-  Take(kwargs, "law", &args.law);
-  Take(kwargs, "restitution", &args.restitution);
-  Take(kwargs, "dissipation", &args.dissipation);
-  Take(kwargs, "friction", &args.friction);
-  Take(kwargs, "mu", &args.mu);
-  Take(kwargs, "timestep", &args.timestep);
-  Take(kwargs, "accuracy", &args.accuracy);
-  Take(kwargs, "impact_velocity", &args.impact_velocity);
-  return Call(&cli::CheckCommand, std::move(args));
+// check's report (its options named as the keywords); the tags' warnings
+// on stderr, as the command line prints them.
+std::string Check(const std::string& scene_path, const py::dict& kwargs) {
+  app::CheckInput input;
+  input.law = OptionalText(kwargs, "law");
+  input.restitution = ValueOf(kwargs, "restitution");
+  input.dissipation = ValueOf(kwargs, "dissipation");
+  input.friction = OptionalText(kwargs, "friction");
+  input.mu = ValueOf(kwargs, "mu");
+  input.timestep = ValueOf(kwargs, "timestep");
+  input.accuracy = ValueOf(kwargs, "accuracy");
+  input.impact_velocity = ValueOf(kwargs, "impact_velocity");
+  const app::CheckRequest request = app::ReadCheck(Keywords(), input);
+  const Scene scene(scene_path);
+  std::unique_ptr<Simulation> sim = scene.Make(request.options);
+  for (const std::string& w : app::TagWarnings(sim->contact_model())) {
+    std::fprintf(stderr, "contactlaws: warning: %s\n", w.c_str());
+  }
+  return app::Check(sim.get(), request, Keywords()).text;
 }
 
 // The law and friction tables, and each law's a(e) and rebound per

@@ -21,8 +21,10 @@ namespace contactlaws::python {
 namespace {
 
 // Phrases first: a flag followed by its value as a word, and the commands.
-constexpr std::array<std::pair<const char*, const char*>, 4> kPhrases = {{
+constexpr std::array<std::pair<const char*, const char*>, 6> kPhrases = {{
     {"--laws all", "laws=\"all\""},
+    {"--timestep auto", "timestep=\"auto\""},
+    {"--contact-steps auto", "contact_steps=\"auto\""},
     {"contactlaws check", "contactlaws.check()"},
     {"contactlaws run", "contactlaws.run()"},
     {"contactlaws compare", "contactlaws.compare()"},

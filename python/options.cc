@@ -10,7 +10,7 @@ namespace contactlaws::python {
 namespace py = pybind11;
 
 const app::OptionReader& Keywords() {
-  static const app::OptionReader keywords(&app::KeywordSpelling);
+  static const app::OptionReader keywords(app::kKeywordSpelling);
   return keywords;
 }
 

@@ -299,7 +299,8 @@ def laws(*, restitution=None):
 def check(scene, *, law=None, restitution=None, dissipation=None, friction=None, mu=None,
           timestep=None, accuracy=None, impact_velocity=None):
     """The scene's tags resolved, their contact estimates and the timestep
-    they need, as `contactlaws check`: its report, word for word (str).
+    they need, as `contactlaws check`: its report, word for word, the
+    options it names spelled as the keyword arguments (str).
 
     law, restitution, dissipation (s/m), friction, mu: overrides of every
     tag; timestep: s or "auto" (accuracy: relative error); impact_velocity:
@@ -308,5 +309,4 @@ def check(scene, *, law=None, restitution=None, dissipation=None, friction=None,
     options = dict(law=law, restitution=restitution, dissipation=dissipation,
                    friction=friction, mu=mu, timestep=timestep, accuracy=accuracy,
                    impact_velocity=impact_velocity)
-    _, report = _contactlaws._check(str(scene), options)
-    return report
+    return _contactlaws._check(str(scene), options)

@@ -222,7 +222,11 @@ def test_laws_gives_the_command_lines_tables():
 
 def test_check_prints_the_command_lines_report():
     printed = cli("check", BALL, "--law=flores", "--restitution=0.4", "--timestep=1e-4").stdout
-    assert contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4) == printed
+    report = contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4)
+    # the options it advises named as the keywords
+    assert report == _contactlaws._spelled(printed)
+    assert 'or contact_steps="auto": 4 sub-steps' in report
+    assert "need a smaller timestep (timestep)" in report
     assert "steps per contact" in printed
 
 

@@ -91,7 +91,17 @@ std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string
 
 }  // namespace
 
-std::string KeywordSpelling(std::string_view key) { return std::string(key); }
+namespace {
+
+std::string KeywordName(std::string_view key) { return std::string(key); }
+std::string KeywordGiven(std::string_view key, std::string_view word) {
+  return fmt::format("{}=\"{}\"", key, word);
+}
+std::string KeywordSet(std::string_view key) { return fmt::format("{}=True", key); }
+
+}  // namespace
+
+const Spelling kKeywordSpelling = {&KeywordName, &KeywordGiven, &KeywordSet};
 
 void OptionReader::Refuse(std::string_view key, std::string_view value,
                           std::string_view requirement) const {
@@ -140,7 +150,7 @@ double OptionReader::Accuracy(const Value& accuracy, const std::optional<Value>&
   }
   if (timestep && !IsAuto(*timestep)) {
     Refuse("accuracy", fmt::format("{}", *value),
-           fmt::format("goes with {} auto, not with the fixed {}={}", Name("timestep"),
+           fmt::format("goes with {}, not with the fixed {}={}", Given("timestep", "auto"),
                        Name("timestep"), Shown(*timestep)));
   }
   return *value;
@@ -162,7 +172,7 @@ CommonOptions OptionReader::Common(const CommonInput& input) const {
   if (input.max_timestep && !auto_timestep) {
     const std::optional<double> value = NumberOf(*input.max_timestep);
     Refuse("max_timestep", value ? fmt::format("{}", *value) : Shown(*input.max_timestep),
-           fmt::format("goes with {} auto", Name("timestep")));
+           fmt::format("goes with {}", Given("timestep", "auto")));
   }
   if (input.accuracy) Accuracy(*input.accuracy, input.timestep);
   if (auto_timestep) {

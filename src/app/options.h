@@ -20,11 +20,20 @@
 
 namespace contactlaws::app {
 
-// An option's name in a front-end's messages, from its key (snake_case).
-using Spelling = std::string (*)(std::string_view key);
+// How a front-end names an option in its messages, from its key
+// (snake_case: "max_timestep").
+struct Spelling {
+  // the option: "--max-timestep", "max_timestep"
+  std::string (*name)(std::string_view key);
+  // the option given a word: "--timestep auto", "timestep=\"auto\""
+  std::string (*given)(std::string_view key, std::string_view word);
+  // a switch turned on: "--settle", "settle=True"
+  std::string (*set)(std::string_view key);
+};
 
-// The key as it is: Python's keyword arguments.
-std::string KeywordSpelling(std::string_view key);
+// Python's keyword arguments: the key as it is, a word as a str, a switch
+// True.
+extern const Spelling kKeywordSpelling;
 
 // An option's value as a front-end has it: a number already (Python's float
 // or int), or text read by the option's grammar ("auto", "0.1:0.9:0.1",
@@ -65,8 +74,12 @@ class OptionReader {
  public:
   explicit OptionReader(Spelling spelling) : spelling_(spelling) {}
 
-  // The option of key as the front-end names it.
-  std::string Name(std::string_view key) const { return spelling_(key); }
+  // The option of key as the front-end names it (Spelling).
+  std::string Name(std::string_view key) const { return spelling_.name(key); }
+  std::string Given(std::string_view key, std::string_view word) const {
+    return spelling_.given(key, word);
+  }
+  std::string Set(std::string_view key) const { return spelling_.set(key); }
 
   // Throws Error "OPTION=VALUE REQUIREMENT".
   [[noreturn]] void Refuse(std::string_view key, std::string_view value,

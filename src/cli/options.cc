@@ -26,12 +26,12 @@ std::string KeyOf(std::string_view option) {
   return key;
 }
 
+}  // namespace
+
 std::optional<app::Value> ValueOf(const std::optional<std::string>& text) {
   if (!text) return std::nullopt;
   return app::Value(*text);
 }
-
-}  // namespace
 
 std::string FlagSpelling(std::string_view key) {
   std::string flag = "--" + std::string(key);
@@ -39,8 +39,14 @@ std::string FlagSpelling(std::string_view key) {
   return flag;
 }
 
+namespace {
+std::string FlagGiven(std::string_view key, std::string_view word) {
+  return FlagSpelling(key) + " " + std::string(word);
+}
+}  // namespace
+
 const app::OptionReader& Flags() {
-  static const app::OptionReader flags(&FlagSpelling);
+  static const app::OptionReader flags({&FlagSpelling, &FlagGiven, &FlagSpelling});
   return flags;
 }
 

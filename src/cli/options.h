@@ -44,9 +44,13 @@ using app::CommonOptions;
 using app::kDefaultRestitutions;
 
 // The options' grammar (app/options.h) spelling each key as the command
-// line's flag: "max_timestep" -> "--max-timestep".
+// line's flag: "max_timestep" -> "--max-timestep", given a word "--timestep
+// auto", a switch "--settle".
 std::string FlagSpelling(std::string_view key);
 const app::OptionReader& Flags();
+
+// An option's text as the grammar takes it.
+std::optional<app::Value> ValueOf(const std::optional<std::string>& text);
 
 // The common options as the grammar takes them: the same text.
 app::CommonInput InputOf(const CommonArgs& args);

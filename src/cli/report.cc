@@ -6,6 +6,7 @@
 
 #include "cli/cluster.h"
 #include "cli/mujoco_warnings.h"
+#include "app/check_job.h"
 #include "app/run_warnings.h"
 #include "cli/options.h"
 
@@ -13,13 +14,7 @@ namespace contactlaws::cli {
 
 void WarnAboutTags(const ContactModel& model, std::set<std::string>* warned) {
   if (!WritesOutputs()) return;  // rank 0 of the job warns
-  if (model.tags().empty() && warned->insert("no tags").second) {
-    fmt::print(stderr,
-               "contactlaws: warning: {}: no contactlaw: tags: MuJoCo's own contact acts on "
-               "every pair (docs/tags.md)\n",
-               model.source());
-  }
-  for (const std::string& w : model.warnings()) {
+  for (const std::string& w : app::TagWarnings(model)) {
     if (warned->insert(w).second) fmt::print(stderr, "contactlaws: warning: {}\n", w);
   }
 }

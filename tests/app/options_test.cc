@@ -25,11 +25,16 @@ std::string ErrorOf(Fn fn) {
   return "";
 }
 
-// A front-end's spelling unlike the key: "<max_timestep>".
+// A front-end's spelling unlike the key: "<max_timestep>", "<timestep auto>",
+// "<settle!>".
 std::string Bracketed(std::string_view key) { return "<" + std::string(key) + ">"; }
+std::string BracketedGiven(std::string_view key, std::string_view word) {
+  return "<" + std::string(key) + " " + std::string(word) + ">";
+}
+std::string BracketedSet(std::string_view key) { return "<" + std::string(key) + "!>"; }
 
-const OptionReader kKeywords(&KeywordSpelling);
-const OptionReader kBracketed(&Bracketed);
+const OptionReader kKeywords(kKeywordSpelling);
+const OptionReader kBracketed({&Bracketed, &BracketedGiven, &BracketedSet});
 
 TEST(OptionGrammarTest, ANumberReadsAsItsText) {
   EXPECT_EQ(kKeywords.Positive("timestep", 2.5e-4, "s"),
@@ -76,15 +81,18 @@ TEST(OptionGrammarTest, MessagesSpellEveryOptionTheyName) {
   input.timestep = 1e-4;
   input.accuracy = std::string("0.01");
   EXPECT_EQ(ErrorOf([&] { kBracketed.Common(input); }),
-            "<accuracy>=0.01 goes with <timestep> auto, not with the fixed <timestep>=0.0001");
+            "<accuracy>=0.01 goes with <timestep auto>, not with the fixed <timestep>=0.0001");
   input = CommonInput();
   input.max_timestep = 1e-3;
   EXPECT_EQ(ErrorOf([&] { kBracketed.Common(input); }),
-            "<max_timestep>=0.001 goes with <timestep> auto");
+            "<max_timestep>=0.001 goes with <timestep auto>");
   EXPECT_EQ(ErrorOf([] { kBracketed.LawList("laws", "hertz,hertz"); }),
             "<laws>=hertz,hertz names hertz twice");
   EXPECT_EQ(ErrorOf([] { kBracketed.UnderOption("params", [] { throw Error("x=1: bad"); }); }),
             "<params>: x=1: bad");
+  // Python's
+  EXPECT_EQ(ErrorOf([&] { kKeywords.Common(input); }),
+            "max_timestep=0.001 goes with timestep=\"auto\"");
 }
 
 TEST(OptionGrammarTest, CommonOptionsTakeNumbers) {
