@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "app/check_job.h"
+#include "app/identify_options.h"
 #include "app/law_tables.h"
 #include "app/replay_job.h"
 #include "bindings.h"
@@ -97,41 +98,31 @@ MeasuredData MeasuredOf(const py::dict& table) {
                              table["source"].cast<std::string>());
 }
 
-// data: a path, or a table (MeasuredOf).
-void TakeData(const py::dict& kwargs, cli::ReplayArgs* args) {
-  if (!kwargs.contains("data") || !py::isinstance<py::dict>(kwargs["data"])) {
-    Take(kwargs, "data", &args->data);
-    return;
+// data: a path (read as a file is), or a table (MeasuredOf).
+MeasuredData DataOf(const py::dict& kwargs, const char* key) {
+  if (kwargs.contains(key) && py::isinstance<py::dict>(kwargs[key])) {
+    return MeasuredOf(kwargs[key].cast<py::dict>());
   }
-  const py::dict table = kwargs["data"].cast<py::dict>();
-  args->data = table["source"].cast<std::string>();
-  args->measured = MeasuredOf(table);
+  return app::ReadData(Keywords(), key, OptionalText(kwargs, key).value_or(""));
 }
 
-void TakeReplay(const std::string& scene, const py::dict& kwargs, cli::ReplayArgs* args) {
-  args->scene = scene;
-  TakeData(kwargs, args);
-  Take(kwargs, "start", &args->start);
-  Take(kwargs, "refit_height", &args->refit_height);
-  Take(kwargs, "refit_lead", &args->refit_lead);
-  Take(kwargs, "refit_min_samples", &args->refit_min_samples);
-  Take(kwargs, "metric", &args->metric);
-  Take(kwargs, "weights", &args->weights);
-  Take(kwargs, "length", &args->length);
-  Take(kwargs, "timestep", &args->timestep);
-  Take(kwargs, "max_timestep", &args->max_timestep);
-  Take(kwargs, "accuracy", &args->accuracy);
-  Take(kwargs, "integrator", &args->integrator);
-  Take(kwargs, "law", &args->law);
-  Take(kwargs, "restitution", &args->restitution);
-  Take(kwargs, "dissipation", &args->dissipation);
-  Take(kwargs, "friction", &args->friction);
-  Take(kwargs, "mu", &args->mu);
-  Take(kwargs, "jobs", &args->jobs);
+// replay's keywords (fit's too) into input.
+void TakeReplay(const py::dict& kwargs, app::ReplayInput* input) {
+  static_cast<app::CommonInput&>(*input) = CommonInputOf(kwargs);
+  if (auto v = OptionalText(kwargs, "start")) input->start = *v;
+  input->refit_height = ValueOf(kwargs, "refit_height");
+  if (auto v = ValueOf(kwargs, "refit_lead")) input->refit_lead = *v;
+  if (auto v = ValueOf(kwargs, "refit_min_samples")) input->refit_min_samples = *v;
+  if (auto v = OptionalText(kwargs, "metric")) input->metric = *v;
+  input->weights = OptionalText(kwargs, "weights");
+  input->length = ValueOf(kwargs, "length");
+  input->law = OptionalText(kwargs, "law");
+  input->restitution = ValueOf(kwargs, "restitution");
+  input->jobs = ValueOf(kwargs, "jobs");
   if (kwargs.contains("set") && !kwargs["set"].is_none()) {
-    for (const py::handle item : kwargs["set"]) args->set.push_back(py::str(item));
+    for (const py::handle item : kwargs["set"]) input->set.push_back(py::str(item));
   }
-  args->quiet = true;
+  if (auto v = ValueOf(kwargs, "seed")) input->seed = *v;
 }
 
 // What a command prints, kept in memory (a POSIX memory stream).
@@ -333,13 +324,13 @@ py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const st
 // SimulatedColumns, "report", "diverged", "settled": text}. No file
 // written, nothing printed.
 py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
-  cli::ReplayArgs args;
-  TakeReplay(scene_path, kwargs, &args);
-  const Scene scene = app::LoadReplayScene(args.scene);
-  const MeasuredData data = cli::DataOf(args);
+  app::ReplayInput input;
+  TakeReplay(kwargs, &input);
+  const Scene scene = app::LoadReplayScene(scene_path);
+  const MeasuredData data = DataOf(kwargs, "data");
   app::ReplayRequest request;
-  request.options = cli::ParseReplayOptions(args, scene, &request.metric);
-  request.seed = cli::ParseSeed(args.seed);
+  request.options = app::ReadReplayOptions(Keywords(), input, scene, &request.metric);
+  request.seed = app::ReadSeed(Keywords(), input.seed);
   request.keep_trajectories = true;
   std::atomic<bool> stop{false};
   request.stop = app::StopToken(&stop);
@@ -350,7 +341,7 @@ py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
   out["scores"] = TableDict(app::ScoresTable(result.scores));
   out["simulated"] = SimulatedColumns(data, result.simulated);
   out["report"] = result.report;
-  out["diverged"] = KeywordSpelling(result.diverged);
+  out["diverged"] = KeywordSpelling(result.diverged);  // the library's advice names flags
   out["settled"] = result.settled;
   return out;
 }
@@ -360,33 +351,31 @@ py::dict Replay(const std::string& scene_path, const py::dict& kwargs) {
 // "best_trajectories": SimulatedColumns, "best_tag", "report": text}. No
 // file written, nothing printed; Ctrl-C raises KeyboardInterrupt.
 py::dict Fit(const std::string& scene_path, const py::dict& kwargs) {
-  cli::FitArgs args;
-  TakeReplay(scene_path, kwargs, &args);
-  Take(kwargs, "params", &args.params);
-  Take(kwargs, "initial", &args.initial);
-  Take(kwargs, "laws", &args.laws);
-  Take(kwargs, "frictions", &args.frictions);
-  Take(kwargs, "budget", &args.budget);
-  Take(kwargs, "folds", &args.folds);
-  Take(kwargs, "trim", &args.trim);
-  Take(kwargs, "seed", &args.seed);
-  Take(kwargs, "profile", &args.profile);
-  Take(kwargs, "profile_points", &args.profile_points);
-  Take(kwargs, "profile_budget", &args.profile_budget);
-  const Scene scene = app::LoadReplayScene(args.scene);
-  const MeasuredData train = cli::DataOf(args);
+  app::FitInput input;
+  TakeReplay(kwargs, &input);
+  if (auto v = OptionalText(kwargs, "params")) input.params = *v;
+  input.initial = OptionalText(kwargs, "initial");
+  input.laws = OptionalText(kwargs, "laws");
+  input.frictions = OptionalText(kwargs, "frictions");
+  if (auto v = ValueOf(kwargs, "budget")) input.budget = *v;
+  input.folds = ValueOf(kwargs, "folds");
+  input.trim = ValueOf(kwargs, "trim");
+  input.profile = OptionalText(kwargs, "profile");
+  input.profile_points = ValueOf(kwargs, "profile_points");
+  input.profile_budget = ValueOf(kwargs, "profile_budget");
+  const Scene scene = app::LoadReplayScene(scene_path);
+  const MeasuredData train = DataOf(kwargs, "data");
   std::optional<MeasuredData> validate;
-  if (kwargs.contains("validate") && py::isinstance<py::dict>(kwargs["validate"])) {
-    validate = MeasuredOf(kwargs["validate"].cast<py::dict>());
-  } else if (const auto path = OptionalText(kwargs, "validate")) {
-    validate = cli::ReadData("--validate", *path);
+  if (kwargs.contains("validate") && !kwargs["validate"].is_none()) {
+    validate = DataOf(kwargs, "validate");
   }
   std::vector<std::string> offset_lines;
-  app::FitRequest request = cli::ParseFitRequest(args, scene, train, &offset_lines);
+  app::FitRequest request =
+      app::ReadFitRequest(Keywords(), input, scene, train, &offset_lines);
   std::atomic<bool> stop{false};
   request.stop = app::StopToken(&stop);
-  const app::FitJob job =
-      cli::CheckedFitJob(scene, train, validate ? &*validate : nullptr, std::move(request));
+  const app::FitJob job = app::CheckedFitJob(Keywords(), scene, train,
+                                             validate ? &*validate : nullptr, std::move(request));
   const app::FitOutcome outcome = Interruptible([&] { return job.Run(); }, &stop);
   // stopped before a first evaluation: only by Ctrl-C, raised above
   if (outcome.nothing) throw Error("fit: stopped before a first evaluation");
@@ -395,7 +384,7 @@ py::dict Fit(const std::string& scene_path, const py::dict& kwargs) {
   py::dict out;
   out["ranking"] = TableDict(outcome.ranking);
   out["errors"] = TableDict(outcome.errors);
-  out["folds"] = args.folds ? py::object(TableDict(outcome.folds)) : py::none();
+  out["folds"] = input.folds ? py::object(TableDict(outcome.folds)) : py::none();
   out["profile"] = outcome.profiled ? py::object(TableDict(outcome.profile)) : py::none();
   out["best_trajectories"] =
       SimulatedColumns(validate ? *validate : train, outcome.best_trajectories);

@@ -21,7 +21,8 @@ namespace contactlaws::python {
 namespace {
 
 // Phrases first: a flag followed by its value as a word, and the commands.
-constexpr std::array<std::pair<const char*, const char*>, 6> kPhrases = {{
+constexpr std::array<std::pair<const char*, const char*>, 7> kPhrases = {{
+    {"--metric weighted", "metric=\"weighted\""},
     {"--laws all", "laws=\"all\""},
     {"--timestep auto", "timestep=\"auto\""},
     {"--contact-steps auto", "contact_steps=\"auto\""},

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include <fmt/format.h>
@@ -38,26 +39,10 @@ std::vector<std::string_view> Split(std::string_view text, char separator) {
 
 double Round12(double v) { return std::round(v * 1e12) / 1e12; }
 
-// A value as a message shows it: text as given, a number as fmt's "{}"
-// (its shortest exact form).
-std::string Shown(const Value& value) {
-  if (const double* v = std::get_if<double>(&value)) return fmt::format("{}", *v);
-  return std::get<std::string>(value);
-}
+bool IsAuto(const Value& value) { return IsWord(value, "auto"); }
 
-// The number of value: itself, or its text read by the one number parser.
-std::optional<double> NumberOf(const Value& value) {
-  if (const double* v = std::get_if<double>(&value)) {
-    if (!std::isfinite(*v)) return std::nullopt;
-    return *v;
-  }
-  return ParseNumber(std::get<std::string>(value));
-}
-
-bool IsAuto(const Value& value) {
-  const std::string* text = std::get_if<std::string>(&value);
-  return text && *text == "auto";
-}
+// The most runs at a time jobs takes (an int).
+constexpr long kMaxJobs = 1L << 30;
 
 // The column groups' words, in the order of the trajectory's column groups.
 constexpr std::array<const char*, 5> kColumnGroupNames = {"bodies", "joints", "pairs", "friction",
@@ -91,6 +76,37 @@ std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string
 
 }  // namespace
 
+std::string Shown(const Value& value) {
+  if (const double* v = std::get_if<double>(&value)) return fmt::format("{}", *v);
+  return std::get<std::string>(value);
+}
+
+std::optional<double> NumberOf(const Value& value) {
+  if (const double* v = std::get_if<double>(&value)) {
+    if (!std::isfinite(*v)) return std::nullopt;
+    return *v;
+  }
+  return ParseNumber(std::get<std::string>(value));
+}
+
+std::optional<long> WholeNumberOf(const Value& value, long lo, long hi) {
+  const std::optional<double> number = NumberOf(value);
+  if (!number || *number != std::floor(*number) || *number < lo || *number > hi) {
+    return std::nullopt;
+  }
+  return static_cast<long>(*number);
+}
+
+bool IsWord(const Value& value, std::string_view word) {
+  const std::string* text = std::get_if<std::string>(&value);
+  return text && *text == word;
+}
+
+int DefaultJobs() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores > 0 ? static_cast<int>(cores) : 1;
+}
+
 namespace {
 
 std::string KeywordName(std::string_view key) { return std::string(key); }
@@ -121,6 +137,13 @@ double OptionReader::Positive(std::string_view key, const Value& value,
     Refuse(key, fmt::format("{}", number), fmt::format("must be a number > 0 ({})", unit));
   }
   return number;
+}
+
+int OptionReader::Jobs(const std::optional<Value>& jobs) const {
+  if (!jobs) return DefaultJobs();
+  const std::optional<long> n = WholeNumberOf(*jobs, 1, kMaxJobs);
+  if (!n) Refuse("jobs", Shown(*jobs), "must be a whole number >= 1");
+  return static_cast<int>(*n);
 }
 
 int OptionReader::Integrator(std::string_view name) const {

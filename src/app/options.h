@@ -40,6 +40,25 @@ extern const Spelling kKeywordSpelling;
 // "1e-3"). A number is held to the same rule as the text of that number.
 using Value = std::variant<double, std::string>;
 
+// A value as a message shows it: text as given, a number in its shortest
+// exact form (fmt's "{}").
+std::string Shown(const Value& value);
+
+// The number of value: itself when finite, or its text read by the one
+// number parser (scene/number.h); nullopt otherwise.
+std::optional<double> NumberOf(const Value& value);
+
+// The value when it is a whole number in [lo, hi] (as ParseWholeNumber
+// reads text), else nullopt.
+std::optional<long> WholeNumberOf(const Value& value, long lo, long hi);
+
+// Whether value is the word (text, not a number).
+bool IsWord(const Value& value, std::string_view word);
+
+// The number of runs at a time when none is asked for: the cores the
+// machine reports.
+int DefaultJobs();
+
 // The restitutions of `laws` (text), and of `laws --format csv` when none are
 // given.
 inline constexpr char kDefaultRestitutions[] = "0.9,0.7,0.5,0.3,0.1";
@@ -118,6 +137,9 @@ class OptionReader {
   // contact_steps: "auto" (kContactStepsAuto) or a whole number >= 1 of
   // sub-steps, or Refuse.
   int ContactSteps(const Value& value) const;
+
+  // jobs: DefaultJobs() when absent, else a whole number >= 1.
+  int Jobs(const std::optional<Value>& jobs) const;
 
   // "euler", "rk4", "implicit" -> mjtIntegrator.
   int Integrator(std::string_view name) const;

@@ -28,9 +28,6 @@
 namespace contactlaws::cli {
 namespace {
 
-// The most runs at a time --jobs takes (an int).
-constexpr long kMaxJobs = 1L << 30;
-
 // Progress lines on stderr, only when it is a terminal.
 class Progress {
  public:
@@ -291,12 +288,7 @@ SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
   return options;
 }
 
-int Jobs(const std::optional<std::string>& jobs) {
-  if (!jobs) return DefaultJobs();
-  const std::optional<long> n = ParseWholeNumber(*jobs, 1, kMaxJobs);
-  if (!n) Refuse("--jobs", *jobs, "must be a whole number >= 1");
-  return static_cast<int>(*n);
-}
+int Jobs(const std::optional<std::string>& jobs) { return Flags().Jobs(ValueOf(jobs)); }
 
 std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
                                                  const SimulationOptions& options,
