@@ -18,18 +18,13 @@
 #include "app/table.h"
 #include "contactlaws/contactlaws.h"
 
-namespace contactlaws::cli {
-struct CommonArgs;
-}  // namespace contactlaws::cli
-
 namespace contactlaws::python {
 
 // A Simulation's data, to write its state and to run mj_forward.
 inline mjData* MutableData(Simulation* sim) { return sim->data(); }
 
-// A keyword argument as the command line's text: absent or None -> nullopt,
-// a str as is, anything else as Python's str() of it (a float's shortest
-// exact form), so the command line's parser and messages apply.
+// A keyword argument taken as text (a name, a list, a path): absent or None
+// -> nullopt, a str as is, anything else as Python's str() of it.
 inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, const char* key) {
   if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
   return pybind11::str(kwargs[key]).cast<std::string>();
@@ -49,10 +44,6 @@ bool Switch(const pybind11::dict& kwargs, const char* key);
 // The keywords of the options run, compare, restitution and check share
 // (duration, sample_rate, timestep, ..., settle).
 app::CommonInput CommonInputOf(const pybind11::dict& kwargs);
-
-// The keywords of the options run, compare and restitution share (duration,
-// sample_rate, timestep, ..., settle) into args.
-void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
 
 // A scene with the overrides the keywords give (law, restitution, friction,
 // mu, timestep).

@@ -1,12 +1,10 @@
 // Copyright contactlaws authors.
 //
-// compare, restitution, replay, fit, laws and check as functions. replay:
-// the keywords parsed as the command line's options, the library's replay
-// job (app/replay_job.h), its result columns handed over as arrays. The
-// others: the command line's own commands (src/cli), given the keywords as
-// their options, their CSV files written into a folder the package reads
-// back as DataFrames, and their printed report kept as text. The work runs
-// on a thread of its own while the caller watches for Ctrl-C.
+// compare, restitution, replay, fit, laws and check as functions: the
+// keywords read by the application's option grammar (app/options.h), the
+// application's jobs run (src/app), their result columns handed over as
+// arrays. No file written, nothing read back. The work runs on a thread of
+// its own while the caller watches for Ctrl-C.
 
 #include <atomic>
 #include <chrono>
@@ -20,65 +18,49 @@
 #include <utility>
 
 #include "app/check_job.h"
+#include "app/run_warnings.h"
 #include "app/identify_options.h"
 #include "app/law_tables.h"
 #include "app/replay_job.h"
+#include "app/restitution_job.h"
+#include "app/compare_job.h"
 #include "bindings.h"
-#include "cli/commands.h"
-#include "cli/identify.h"
-#include "cli/sweep.h"
 
 namespace contactlaws::python {
 namespace {
 
 namespace py = pybind11;
 
-// The keyword key's text into field (absent or None: the command's default).
-void Take(const py::dict& kwargs, const char* key, std::optional<std::string>* field) {
-  if (auto v = OptionalText(kwargs, key)) *field = *v;
-}
-void Take(const py::dict& kwargs, const char* key, std::string* field) {
-  if (auto v = OptionalText(kwargs, key)) *field = *v;
-}
-
-// A flag keyword: True or False (absent or None: false).
-bool Flag(const py::dict& kwargs, const char* key) {
-  if (!kwargs.contains(key) || kwargs[key].is_none()) return false;
-  if (!py::isinstance<py::bool_>(kwargs[key])) {
-    throw py::type_error(std::string(key) + " must be True or False");
+// What a sweep says, on stderr as the command line prints it, the
+// library's advice (sim/) spelled with the keywords (KeywordSpelling).
+class StderrMonitor : public app::SweepMonitor {
+ public:
+  void Warn(const std::string& scene, const std::string& what) override {
+    std::fprintf(stderr, "contactlaws: warning: %s: %s\n", scene.c_str(),
+                 KeywordSpelling(what).c_str());
   }
-  return kwargs[key].cast<bool>();
-}
+  void TagWarning(const std::string& what) override {
+    std::fprintf(stderr, "contactlaws: warning: %s\n", what.c_str());
+  }
+  void Note(const std::string& scene, const std::string& what) override {
+    std::fprintf(stderr, "contactlaws: %s: %s\n", scene.c_str(), what.c_str());
+  }
+  void RunFailed(const std::string& scene, const std::string& run,
+                 const std::string& reason) override {
+    std::fprintf(stderr, "contactlaws: %s: %s: run failed: %s\n", scene.c_str(), run.c_str(),
+                 KeywordSpelling(reason).c_str());
+  }
+};
 
-}  // namespace
-
-void TakeCommon(const py::dict& kwargs, cli::CommonArgs* args) {
-  Take(kwargs, "duration", &args->duration);
-  Take(kwargs, "sample_rate", &args->sample_rate);
-  Take(kwargs, "timestep", &args->timestep);
-  Take(kwargs, "max_timestep", &args->max_timestep);
-  Take(kwargs, "accuracy", &args->accuracy);
-  Take(kwargs, "integrator", &args->integrator);
-  Take(kwargs, "columns", &args->columns);
-  Take(kwargs, "dissipation", &args->dissipation);
-  Take(kwargs, "friction", &args->friction);
-  Take(kwargs, "mu", &args->mu);
-  args->settle = Flag(kwargs, "settle");
-}
-
-namespace {
-
-cli::SweepArgs SweepArgsOf(const std::string& scene, const py::dict& kwargs) {
-  cli::SweepArgs args;
-  args.scene = scene;
-  TakeCommon(kwargs, &args);
-  Take(kwargs, "laws", &args.laws);
-  Take(kwargs, "restitution", &args.restitution);
-  Take(kwargs, "frictions", &args.frictions);
-  Take(kwargs, "jobs", &args.jobs);
-  args.impacts_per_point = Flag(kwargs, "impacts_per_point");
-  args.quiet = true;  // no progress line on the caller's stderr
-  return args;
+// compare's and restitution's keywords.
+app::SweepInput SweepInputOf(const py::dict& kwargs) {
+  app::SweepInput input;
+  static_cast<app::CommonInput&>(input) = CommonInputOf(kwargs);
+  if (auto v = OptionalText(kwargs, "laws")) input.laws = *v;
+  input.restitution = ValueOf(kwargs, "restitution");
+  input.frictions = OptionalText(kwargs, "frictions");
+  input.jobs = ValueOf(kwargs, "jobs");
+  return input;
 }
 
 // A table's columns as the Python side hands them over: {"source": str,
@@ -125,31 +107,6 @@ void TakeReplay(const py::dict& kwargs, app::ReplayInput* input) {
   if (auto v = ValueOf(kwargs, "seed")) input->seed = *v;
 }
 
-// What a command prints, kept in memory (a POSIX memory stream).
-class Report {
- public:
-  Report() : file_(open_memstream(&buffer_, &size_)) {
-    if (!file_) throw std::runtime_error("contactlaws: cannot open a memory stream");
-  }
-  ~Report() {
-    std::fclose(file_);
-    std::free(buffer_);
-  }
-  Report(const Report&) = delete;
-  Report& operator=(const Report&) = delete;
-
-  std::FILE* file() { return file_; }
-  std::string Text() {
-    std::fflush(file_);
-    return std::string(buffer_, size_);
-  }
-
- private:
-  char* buffer_ = nullptr;
-  size_t size_ = 0;
-  std::FILE* file_;
-};
-
 // Runs work on a thread of its own with the GIL released. The calling
 // thread checks for Ctrl-C meanwhile: on it, *stop is set, which makes the
 // runs stop after their current step (what the command line does on
@@ -178,16 +135,6 @@ auto Interruptible(const Work& work, std::atomic<bool>* stop) -> decltype(work()
   return done.get();
 }
 
-// A command of the command line, stopped through its program-wide flag.
-int InterruptibleCommand(const std::function<int()>& command) {
-  struct Clear {
-    ~Clear() { cli::stop_signal = false; }
-  } clear;
-  return Interruptible(command, &cli::stop_signal);
-}
-
-
-
 // Simulated samples of data's trajectories: {"names": every trajectory's
 // name, "trajectory": each row's index into names, "time": s, "columns":
 // the data's, "values": a rows x columns array}.
@@ -206,118 +153,47 @@ py::dict SimulatedColumns(const MeasuredData& data, const app::SimulatedSamples&
   return out;
 }
 
-// (exit status, printed report) of command given args with report.
-template <typename Args>
-py::tuple Call(int (*command)(const Args&), Args args) {
-  Report report;
-  args.report = report.file();
-  const int status = InterruptibleCommand([&] { return command(args); });
-  return py::make_tuple(status, report.Text());
-}
-
 // compare's results as columns: {"trajectories", "impacts", "summary":
 // tables (the columns of its three files), "report": the printed table,
-// "status": the command line's exit status}. No file written.
+// "failed": whether a run failed}. No file written.
 py::dict Compare(const std::string& scene, const py::dict& kwargs) {
-  using Kind = app::Column::Kind;
-  const cli::SweepArgs args = SweepArgsOf(scene, kwargs);
-  cli::ComparePlan plan = cli::PlanCompare(args);
+  StderrMonitor monitor;
+  app::ComparePlan plan = app::PlanCompare(Keywords(), scene, SweepInputOf(kwargs),
+                                           Switch(kwargs, "impacts_per_point"), &monitor);
   std::atomic<bool> stop{false};
   plan.sweep.keep_numbers = true;
   plan.sweep.advance.stop = &stop;
-  // each file's first columns: law, restitution, and friction when the runs
-  // compare friction models
-  std::vector<std::pair<std::string, Kind>> run = {{"law", Kind::kText},
-                                                   {"restitution", Kind::kNumber}};
-  if (plan.frictions) run.emplace_back("friction", Kind::kText);
-  const std::vector<std::string> columns = plan.first->Columns();
-  std::vector<std::pair<std::string, Kind>> header = run;
-  for (const std::string& c : columns) header.emplace_back(c, Kind::kNumber);
-  app::Table trajectories(header);
-  header = run;
-  for (const std::string& c : cli::SummaryColumns()) {
-    header.emplace_back(c, c == "status" || c == "reason" ? Kind::kText
-                           : c == "impacts"               ? Kind::kCount
-                                                          : Kind::kNumber);
-  }
-  app::Table summary(header);
-  header.clear();
-  const app::Table no_impacts = app::ImpactTable(*plan.first, {});
-  for (const app::Column& c : no_impacts.columns()) {
-    header.emplace_back(c.name, c.kind);
-  }
-  if (plan.frictions) header.emplace(header.begin() + 2, "friction", Kind::kText);
-  app::Table impacts(header);
-
-  std::vector<cli::CompareRow> rows;
-  auto deliver = [&](int k, cli::RunOutput& out) {
-    const cli::RunSpec& spec = plan.specs[k];
-      std::vector<app::Cell> prefix = {
-        app::Text(std::string(LawName(spec.law))),
-        out.restitution ? app::Number(*out.restitution) : app::Unknown()};
-    if (plan.frictions) prefix.push_back(app::Text(std::string(FrictionName(*spec.friction))));
-    const bool rows_valid = out.status == cli::RunOutput::Status::kOk ||
-                            out.status == cli::RunOutput::Status::kFailed;
-    if (rows_valid) {
-      // a failed run's rows up to its divergence are valid; an interrupted
-      // run's are not kept
-      for (size_t at = 0; at + columns.size() <= out.rows.size(); at += columns.size()) {
-        std::vector<app::Cell> cells = prefix;
-        for (size_t c = 0; c < columns.size(); ++c) cells.push_back(app::Number(out.rows[at + c]));
-        trajectories.AddRow(cells);
-      }
-      const app::Table& log = out.impact_table;
-      for (size_t i = 0; i < log.rows(); ++i) {
-        std::vector<app::Cell> cells;
-        for (const app::Column& c : log.columns()) {
-          cells.push_back(c.kind == Kind::kText ? app::Text(c.text[i])
-                                                : app::Cell{c.kind, c.numbers[i], {}});
-        }
-        if (plan.frictions) cells.emplace(cells.begin() + 2, prefix[2]);
-        impacts.AddRow(cells);
-      }
-    }
-    std::vector<app::Cell> cells = prefix;
-    const RunSummary& r = out.summary;
-    auto known = [](const std::optional<double>& v) {
-      return v ? app::Number(*v) : app::Unknown();
-    };
-    if (out.status == cli::RunOutput::Status::kOk) {
-      for (app::Cell c : {app::Count(r.impacts), known(r.restitution_post),
-                          app::Number(r.max_depth), app::Number(r.max_force),
-                          known(r.contact_duration), known(r.time_to_rest),
-                          app::Number(out.dissipated), app::Text("ok"), app::Text("")}) {
-        cells.push_back(std::move(c));
-      }
-    } else {
-      // a failed run's numbers are not to be trusted: only its status
-      for (int i = 0; i < 7; ++i) cells.push_back(app::Unknown());
-      cells.push_back(app::Text(cli::StatusName(out.status)));
-      cells.push_back(app::Text(out.reason));
-    }
-    summary.AddRow(cells);
-    rows.push_back({spec, out.status, out.restitution, out.summary, out.dissipated});
-    out.rows.clear();  // a delivered run's numbers are in the tables
-  };
-  const int status = Interruptible(
+  app::CompareTables tables(plan);
+  const app::SweepStatus status = Interruptible(
       [&] {
-        return cli::Sweep(*plan.in.scene, plan.in.common.simulation, plan.specs, plan.advices,
-                          plan.sweep, deliver);
+        return app::Sweep(*plan.in.scene, plan.in.common.simulation, plan.specs, plan.advices,
+                          plan.sweep, Keywords(), &monitor,
+                          [&](int k, app::RunOutput& out) { tables.Add(plan.specs[k], out); });
       },
       &stop);
   py::dict out;
-  out["trajectories"] = TableDict(trajectories);
-  out["impacts"] = TableDict(impacts);
-  out["summary"] = TableDict(summary);
-  out["report"] = cli::CompareTableText(rows, plan.frictions);
-  out["status"] = status;
+  out["trajectories"] = TableDict(tables.trajectories());
+  out["impacts"] = TableDict(tables.impacts());
+  out["summary"] = TableDict(tables.summary());
+  out["report"] = app::CompareTableText(tables.rows(), plan.frictions);
+  out["failed"] = status == app::SweepStatus::kFailed;
   return out;
 }
 
-py::tuple Restitution(const std::string& scene, const py::dict& kwargs, const std::string& path) {
-  cli::SweepArgs args = SweepArgsOf(scene, kwargs);
-  args.output = path;
-  return Call(&cli::RestitutionCommand, std::move(args));
+// restitution's results: {"table": its columns, "incomplete": whether a run
+// failed or a first contact did not end}. No file written.
+py::dict Restitution(const std::string& scene, const py::dict& kwargs) {
+  StderrMonitor monitor;
+  app::RestitutionPlan plan =
+      app::PlanRestitution(Keywords(), scene, SweepInputOf(kwargs), &monitor);
+  std::atomic<bool> stop{false};
+  plan.sweep.advance.stop = &stop;
+  const app::RestitutionResult result =
+      Interruptible([&] { return app::RunRestitution(plan, Keywords(), &monitor); }, &stop);
+  py::dict out;
+  out["table"] = TableDict(result.table);
+  out["incomplete"] = result.status == app::SweepStatus::kFailed || result.incomplete > 0;
+  return out;
 }
 
 // replay's results as columns: {"scores": TableColumns, "simulated":

@@ -2,15 +2,13 @@
 commands (the same options, the same checks and messages, the same numbers),
 their results as DataFrames with the columns of the command's CSV files.
 
-replay is the library's replay job, its results columns of numbers; the
-others run the command line's command, which writes its files into a
-temporary folder that is removed once read. Ctrl-C stops the runs after
-their current step and raises KeyboardInterrupt.
+Each calls the library's application layer (src/app), the jobs the command
+line calls, whose results come back as columns of numbers and names: no
+file is written, nothing read back. Ctrl-C stops the runs after their
+current step and raises KeyboardInterrupt.
 """
 
-import os as _os
 import sys as _sys
-import tempfile as _tempfile
 import warnings as _warnings
 
 import numpy as _np
@@ -18,7 +16,6 @@ import pandas as _pd
 
 from . import _contactlaws
 
-_INCOMPLETE = 3  # the command line's exit status when a run did not give what was asked
 
 
 def _text_list(value):
@@ -36,18 +33,6 @@ def _assignments(value):
         return ",".join(f"{key}={v if isinstance(v, str) else repr(float(v))}"
                         for key, v in value.items())
     return _text_list(value)
-
-
-def _read(path):
-    """A CSV the command wrote, its numbers the very doubles it computed
-    (they are written in their shortest exact form)."""
-    return _pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
-                        na_values=[""])
-
-
-def _warn_incomplete(status, scene, what):
-    if status == _INCOMPLETE:
-        _warnings.warn(f"{scene}: {what}", stacklevel=3)
 
 
 class CompareResult:
@@ -86,7 +71,8 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
                    sample_rate=sample_rate, columns=columns, settle=settle, jobs=jobs,
                    impacts_per_point=impacts_per_point)
     result = _contactlaws._compare(str(scene), options)
-    _warn_incomplete(result["status"], scene, "a run failed: its summary row gives the reason")
+    if result["failed"]:
+        _warnings.warn(f"{scene}: a run failed: its summary row gives the reason", stacklevel=2)
     return CompareResult(*(_pd.DataFrame(result[name])
                            for name in ("trajectories", "impacts", "summary")),
                          result["report"])
@@ -107,12 +93,11 @@ def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, 
                    friction=friction, mu=mu, dissipation=dissipation, duration=duration,
                    timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
                    integrator=integrator, settle=settle, jobs=jobs)
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        path = _os.path.join(folder, "restitution.csv")
-        status, _ = _contactlaws._restitution(str(scene), options, path)
-        table = _read(path)
-    _warn_incomplete(status, scene, "a first contact did not end within the duration")
-    return table
+    result = _contactlaws._restitution(str(scene), options)
+    if result["incomplete"]:
+        _warnings.warn(f"{scene}: a first contact did not end within the duration",
+                       stacklevel=2)
+    return _pd.DataFrame(result["table"])
 
 
 def _data(data):

@@ -241,19 +241,6 @@ CheckRequest ReadCheck(const OptionReader& reader, const CheckInput& input) {
   return request;
 }
 
-std::vector<std::string> TagWarnings(const ContactModel& model) {
-  std::vector<std::string> warnings;
-  if (model.tags().empty()) {
-    warnings.push_back(fmt::format(
-        "{}: no contactlaw: tags: MuJoCo's own contact acts on every pair (docs/tags.md)",
-        model.source()));
-  }
-  for (const std::string& w : model.warnings()) {
-    if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
-  }
-  return warnings;
-}
-
 CheckReport Check(Simulation* sim, const CheckRequest& request, const OptionReader& reader) {
   CheckReport report;
   std::string* out = &report.text;

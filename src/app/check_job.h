@@ -40,10 +40,6 @@ struct CheckRequest {
 // Refuses what the reader refuses, in the order the options are listed.
 CheckRequest ReadCheck(const OptionReader& reader, const CheckInput& input);
 
-// The warnings of a scene's tags, once each: their own (ContactModel::
-// warnings, each naming its file and tag), and a scene without any.
-std::vector<std::string> TagWarnings(const ContactModel& model);
-
 struct CheckReport {
   std::string text;  // the report: settings, each tag, the driven bodies
   int coarse = 0;    // tags whose contact the timestep resolves too coarsely

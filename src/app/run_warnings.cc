@@ -2,6 +2,7 @@
 
 #include "app/run_warnings.h"
 
+#include <algorithm>
 #include <utility>
 
 #include <fmt/format.h>
@@ -9,6 +10,19 @@
 #include "sim/run_report.h"
 
 namespace contactlaws::app {
+
+std::vector<std::string> TagWarnings(const ContactModel& model) {
+  std::vector<std::string> warnings;
+  if (model.tags().empty()) {
+    warnings.push_back(fmt::format(
+        "{}: no contactlaw: tags: MuJoCo's own contact acts on every pair (docs/tags.md)",
+        model.source()));
+  }
+  for (const std::string& w : model.warnings()) {
+    if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+  }
+  return warnings;
+}
 
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result,
                                      const OptionReader& options) {

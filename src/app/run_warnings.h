@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
-// What a finished run leaves to warn about, its options named by the
-// front-end's reader (app/options.h).
+// What a scene's tags and a finished run leave to warn about, options named
+// by the front-end's reader (app/options.h).
 
 #ifndef CONTACTLAWS_APP_RUN_WARNINGS_H_
 #define CONTACTLAWS_APP_RUN_WARNINGS_H_
@@ -19,6 +19,10 @@ namespace contactlaws::app {
 // (with their counts).
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result,
                                      const OptionReader& options);
+
+// The warnings of a scene's tags, once each: their own (ContactModel::
+// warnings, each naming its file and tag), and a scene without any.
+std::vector<std::string> TagWarnings(const ContactModel& model);
 
 }  // namespace contactlaws::app
 

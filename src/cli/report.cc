@@ -4,10 +4,10 @@
 
 #include <fmt/format.h>
 
+#include "app/csv_text.h"
+#include "app/run_warnings.h"
 #include "cli/cluster.h"
 #include "cli/mujoco_warnings.h"
-#include "app/check_job.h"
-#include "app/run_warnings.h"
 #include "cli/options.h"
 
 namespace contactlaws::cli {
@@ -45,7 +45,7 @@ std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult&
 }
 
 std::string Cell(const std::optional<double>& value, const char* format) {
-  return value ? fmt::format(fmt::runtime(format), *value) : "-";
+  return app::TableCell(value, format);
 }
 
 }  // namespace contactlaws::cli
