@@ -23,19 +23,9 @@ void ReportSettle(const Simulation& sim) {
   if (sim.settled()) fmt::print(stderr, "contactlaws: {}: {}\n", sim.source(), sim.settled()->Line());
 }
 
-namespace {
-Spelling spelling = nullptr;  // the command line's: the message as it is
-}  // namespace
-
-void SetSpelling(Spelling s) { spelling = s; }
-
-std::string Spelled(const std::string& message) {
-  return spelling ? spelling(message) : message;
-}
-
 void Warn(const std::string& scene, const std::string& what) {
   if (!WritesOutputs()) return;  // rank 0 of the job warns
-  fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, Spelled(what));
+  fmt::print(stderr, "contactlaws: warning: {}: {}\n", scene, what);
 }
 
 std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult& result) {

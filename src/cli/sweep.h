@@ -32,8 +32,8 @@ struct SweepArgs : CommonArgs {
 // The options as the sweep reads them: the same text.
 app::SweepInput InputOf(const SweepArgs& args);
 
-// What a sweep says, on stderr: warnings (rank 0 of a cluster job alone,
-// Spelled), the settled line, failed runs, and a progress line when stderr
+// What a sweep says, on stderr: warnings (rank 0 of a cluster job alone),
+// the settled line, failed runs, and a progress line when stderr
 // is a terminal and not quiet.
 class ProgramMonitor : public app::SweepMonitor {
  public:
