@@ -34,8 +34,9 @@ inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, con
 const app::OptionReader& Keywords();
 
 // A keyword argument as the grammar takes it: absent or None -> nullopt; an
-// int or float (not a bool) as a number; a str as text; anything else as
-// Python's str() of it.
+// int or float (not a bool) as a number; a list or tuple of them as numbers
+// (the option must take a list); a str as text; anything else as Python's
+// str() of it.
 std::optional<app::Value> ValueOf(const pybind11::dict& kwargs, const char* key);
 
 // A switch keyword: True or False (absent or None: false); else TypeError.

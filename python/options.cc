@@ -5,6 +5,9 @@
 
 #include "bindings.h"
 
+#include <utility>
+#include <vector>
+
 namespace contactlaws::python {
 
 namespace py = pybind11;
@@ -14,13 +17,28 @@ const app::OptionReader& Keywords() {
   return keywords;
 }
 
+namespace {
+
+// An int or a float; a bool is an int to Python, not a number here (its
+// text, "True", is refused).
+bool IsNumber(const py::handle value) {
+  return !py::isinstance<py::bool_>(value) &&
+         (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value));
+}
+
+}  // namespace
+
 std::optional<app::Value> ValueOf(const py::dict& kwargs, const char* key) {
   if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
   const py::handle value = kwargs[key];
-  // a bool is an int to Python, not a number here: its text ("True") is refused
-  if (!py::isinstance<py::bool_>(value) &&
-      (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
-    return app::Value(value.cast<double>());
+  if (IsNumber(value)) return app::Value(value.cast<double>());
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::vector<double> numbers;
+    for (const py::handle item : value) {
+      if (!IsNumber(item)) return app::Value(py::str(value).cast<std::string>());
+      numbers.push_back(item.cast<double>());
+    }
+    return app::Value(std::move(numbers));
   }
   return app::Value(py::str(value).cast<std::string>());
 }

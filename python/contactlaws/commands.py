@@ -25,6 +25,15 @@ def _text_list(value):
     return value
 
 
+def _numbers(value):
+    """A list or tuple of numbers as it is (the library takes them as
+    numbers); anything else as _text_list."""
+    if isinstance(value, (list, tuple)) and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
+        return list(value)
+    return _text_list(value)
+
+
 def _assignments(value):
     """A mapping {KEY: VALUE} as the command line's KEY=VALUE,... text,
     each number in its shortest exact form (the same double read back); text
@@ -64,7 +73,7 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
     simulated second; jobs: runs at a time (the results do not depend on it).
     Returns a CompareResult; warns when a run failed (its summary row says why).
     """
-    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+    options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
                    frictions=_text_list(frictions), friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
@@ -89,7 +98,7 @@ def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, 
     (s); empty where a run has no such value. The options as compare's;
     warns when a first contact did not end within duration.
     """
-    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+    options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
                    friction=friction, mu=mu, dissipation=dissipation, duration=duration,
                    timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
                    integrator=integrator, settle=settle, jobs=jobs)
@@ -276,7 +285,7 @@ def laws(*, restitution=None):
     restitution: "E1,E2", "start:stop:step" or a list (default
     0.9,0.7,0.5,0.3,0.1). Returns LawTables.
     """
-    tables = _contactlaws._laws(dict(restitution=_text_list(restitution)))
+    tables = _contactlaws._laws(dict(restitution=_numbers(restitution)))
     return LawTables(*(_pd.DataFrame(tables[name])
                        for name in ("laws", "frictions", "effective")))
 

@@ -78,6 +78,9 @@ std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string
 
 std::string Shown(const Value& value) {
   if (const double* v = std::get_if<double>(&value)) return fmt::format("{}", *v);
+  if (const auto* list = std::get_if<std::vector<double>>(&value)) {
+    return fmt::format("{}", fmt::join(*list, ","));
+  }
   return std::get<std::string>(value);
 }
 
@@ -86,7 +89,8 @@ std::optional<double> NumberOf(const Value& value) {
     if (!std::isfinite(*v)) return std::nullopt;
     return *v;
   }
-  return ParseNumber(std::get<std::string>(value));
+  if (const std::string* text = std::get_if<std::string>(&value)) return ParseNumber(*text);
+  return std::nullopt;
 }
 
 std::optional<long> WholeNumberOf(const Value& value, long lo, long hi) {
@@ -125,6 +129,9 @@ void OptionReader::Refuse(std::string_view key, std::string_view value,
 }
 
 double OptionReader::Number(std::string_view key, const Value& value) const {
+  if (std::holds_alternative<std::vector<double>>(value)) {
+    Refuse(key, Shown(value), "must be one number, not a list");
+  }
   const std::optional<double> number = NumberOf(value);
   if (!number) Refuse(key, Shown(value), "is not a finite number");
   return *number;
@@ -226,8 +233,8 @@ int OptionReader::ContactSteps(const Value& value) const {
     if (*v >= 1 && *v == std::floor(*v) && *v <= kMaxContactSteps) {
       substeps = static_cast<int>(*v);
     }
-  } else {
-    substeps = ParseContactSteps(std::get<std::string>(value));
+  } else if (const std::string* text = std::get_if<std::string>(&value)) {
+    substeps = ParseContactSteps(*text);
   }
   if (!substeps) Refuse("contact_steps", Shown(value), kContactStepsRequirement);
   return *substeps;
@@ -334,9 +341,15 @@ std::vector<double> OptionReader::RestitutionList(std::string_view key, const Va
   };
   std::vector<double> values;
   const std::vector<std::string_view> range = Split(text, ':');
-  if (const double* v = std::get_if<double>(&value)) {
-    if (!std::isfinite(*v)) Refuse(key, text, fmt::format("has '{}', which is not a finite number", text));
-    values.push_back(*v);
+  if (std::holds_alternative<double>(value) ||
+      std::holds_alternative<std::vector<double>>(value)) {
+    values = std::holds_alternative<double>(value) ? std::vector<double>{std::get<double>(value)}
+                                                   : std::get<std::vector<double>>(value);
+    for (const double v : values) {
+      if (!std::isfinite(v)) {
+        Refuse(key, text, fmt::format("has '{}', which is not a finite number", v));
+      }
+    }
   } else if (range.size() == 3) {
     const double start = number(range[0]);
     const double stop = number(range[1]);

@@ -36,16 +36,18 @@ struct Spelling {
 extern const Spelling kKeywordSpelling;
 
 // An option's value as a front-end has it: a number already (Python's float
-// or int), or text read by the option's grammar ("auto", "0.1:0.9:0.1",
-// "1e-3"). A number is held to the same rule as the text of that number.
-using Value = std::variant<double, std::string>;
+// or int), text read by the option's grammar ("auto", "0.1:0.9:0.1",
+// "1e-3"), or numbers already (Python's list of them, where the option
+// takes a list). Numbers are held to the same rule as their text; a message
+// shows them as "E1,E2,...".
+using Value = std::variant<double, std::string, std::vector<double>>;
 
 // A value as a message shows it: text as given, a number in its shortest
-// exact form (fmt's "{}").
+// exact form (fmt's "{}"), numbers so separated by commas.
 std::string Shown(const Value& value);
 
 // The number of value: itself when finite, or its text read by the one
-// number parser (scene/number.h); nullopt otherwise.
+// number parser (scene/number.h); nullopt otherwise (a list too).
 std::optional<double> NumberOf(const Value& value);
 
 // The value when it is a whole number in [lo, hi] (as ParseWholeNumber
@@ -168,7 +170,7 @@ class OptionReader {
   double Restitution(std::string_view key, const Value& value) const;
 
   // "E1,E2,..." or "start:stop:step" (stop included when it is on the grid,
-  // to 1e-9 of a step), or one number. Values are rounded to 12 decimals, so
+  // to 1e-9 of a step), one number, or numbers. Values are rounded to 12 decimals, so
   // 0.1:1.0:0.1 gives exactly the doubles 0.1, 0.2, ..., 1. Each in [0, 1];
   // no repeats.
   std::vector<double> RestitutionList(std::string_view key, const Value& value) const;

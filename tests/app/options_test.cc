@@ -43,6 +43,8 @@ TEST(OptionGrammarTest, ANumberReadsAsItsText) {
             kKeywords.Restitution("restitution", std::string("0.3")));
   EXPECT_EQ(kKeywords.ContactSteps(3.0), kKeywords.ContactSteps(std::string("3")));
   EXPECT_EQ(kKeywords.RestitutionList("restitution", 0.5), std::vector<double>{0.5});
+  EXPECT_EQ(kKeywords.RestitutionList("restitution", std::vector<double>{0.3, 0.6}),
+            kKeywords.RestitutionList("restitution", std::string("0.3,0.6")));
 }
 
 TEST(OptionGrammarTest, ANumberIsRefusedAsItsTextIs) {
@@ -60,6 +62,10 @@ TEST(OptionGrammarTest, ANumberIsRefusedAsItsTextIs) {
        [] { return ErrorOf([] { kKeywords.ContactSteps(std::string("0")); }); }},
       {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", 1.5); }); },
        [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("1.5")); }); }},
+      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::vector<double>{0.5, 1.5}); }); },
+       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("0.5,1.5")); }); }},
+      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::vector<double>{0.5, 0.5}); }); },
+       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("0.5,0.5")); }); }},
       {[] { return ErrorOf([] { kKeywords.Dissipation(-0.5); }); },
        [] { return ErrorOf([] { kKeywords.Dissipation(std::string("-0.5")); }); }},
   };
@@ -74,6 +80,9 @@ TEST(OptionGrammarTest, ANumberIsRefusedAsItsTextIs) {
   EXPECT_EQ(ErrorOf([] { kKeywords.Number("mu", std::nan("")); }), "mu=nan is not a finite number");
   EXPECT_EQ(ErrorOf([] { kKeywords.Positive("duration", HUGE_VAL, "s"); }),
             "duration=inf is not a finite number");
+  // numbers where one is taken
+  EXPECT_EQ(ErrorOf([] { kKeywords.Restitution("restitution", std::vector<double>{0.5, 0.6}); }),
+            "restitution=0.5,0.6 must be one number, not a list");
 }
 
 TEST(OptionGrammarTest, MessagesSpellEveryOptionTheyName) {
