@@ -85,7 +85,9 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
       throw py::error_already_set();
     }
   }
-  for (std::string& w : app::RunWarnings(*sim, result, Keywords())) warnings.push_back(std::move(w));
+  for (std::string& w : app::RunWarnings(*sim, result, Keywords())) {
+    warnings.push_back(std::move(w));
+  }
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   std::string divergence;
   if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice);

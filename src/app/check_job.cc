@@ -2,12 +2,13 @@
 
 #include "app/check_job.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <memory>
-
-#include <fmt/format.h>
+#include <utility>
 
 #include "sim/contact_steps.h"
 #include "sim/estimate.h"
@@ -17,6 +18,12 @@
 namespace contactlaws::app {
 
 namespace {
+
+// Appends the formatted text to out.
+template <typename... Args>
+void Print(std::string* out, fmt::format_string<Args...> format, Args&&... args) {
+  fmt::format_to(std::back_inserter(*out), format, std::forward<Args>(args)...);
+}
 
 // A number in its shortest exact form (fmt's "{}"), "" when not known.
 std::string Shortest(const std::optional<double>& value) {
@@ -28,13 +35,13 @@ void PrintSettings(const Simulation& sim, std::string* out) {
   const mjModel* m = sim.model();
   const char* integrators[] = {"euler", "rk4", "implicit"};
 
-  fmt::format_to(std::back_inserter(*out), "{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
-             sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10, MujocoVersion() % 10,
-             m->opt.timestep,
-             m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator] : "?",
-             m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
-  fmt::format_to(std::back_inserter(*out), "rule: a contact is resolved by >= {} steps of its estimated duration\n",
-             kStepsPerContact);
+  Print(out, "{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
+        sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10, MujocoVersion() % 10,
+        m->opt.timestep,
+        m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator] : "?",
+        m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
+  Print(out, "rule: a contact is resolved by >= {} steps of its estimated duration\n",
+        kStepsPerContact);
 }
 
 // The friction of a tag's pair, and the step its tangential dynamics need
@@ -46,25 +53,25 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
   const GeomPair& pair = cm.pairs()[pair_index];
   const FrictionParams& f = pair.friction;
   if (f.kind == FrictionKind::kNone) {
-    fmt::format_to(std::back_inserter(*out), "  friction none{}\n",
-               pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
+    Print(out, "  friction none{}\n",
+          pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
     return false;
   }
-  fmt::format_to(std::back_inserter(*out), "  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n",
-             FrictionName(f.kind), f.mu_static, f.mu_kinetic, pair.condim,
-             f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
-             f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
+  Print(out, "  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n", FrictionName(f.kind),
+        f.mu_static, f.mu_kinetic, pair.condim,
+        f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
+        f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
   const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
-    fmt::format_to(std::back_inserter(*out), "  tangential: {}: {}: {}: steps of <= {:.3g} s in contact\n",
-               t.what, t.Span(), names.Given("timestep", "auto"), ContactSteps(*accuracy).TangentialStep(t.duration));
+    Print(out, "  tangential: {}: {}: {}: steps of <= {:.3g} s in contact\n", t.what, t.Span(),
+          names.Given("timestep", "auto"), ContactSteps(*accuracy).TangentialStep(t.duration));
     return false;
   }
   const double step = t.timestep();
   const bool ok = !(std::isfinite(step)) || dt <= step;
-  fmt::format_to(std::back_inserter(*out), "  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
-             ok ? "ok" : "TOO COARSE", step);
+  Print(out, "  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
+        ok ? "ok" : "TOO COARSE", step);
   return !ok;
 }
 
@@ -72,19 +79,18 @@ bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate
 // settling at the v0 floor: EstimateResting); true when the timestep is too
 // coarse for it.
 bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                  double dt, bool automatic, const OptionReader& names,
-                  std::string* out) {
+                  double dt, bool automatic, const OptionReader& names, std::string* out) {
   const RestingEstimate r = EstimateResting(cm, pair_index, estimate);
   if (!std::isfinite(r.lag)) return false;
   const bool ok = automatic || dt <= r.timestep();
-  fmt::format_to(std::back_inserter(*out),
-             "  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
-             "{} (needs timestep <= {:.3g} s{})\n",
-             r.lag, r.load, cm.pairs()[pair_index].params.min_impact_velocity,
-             automatic ? names.Given("timestep", "auto") + " keeps to it"
-             : ok      ? "ok"
-                       : "TOO COARSE",
-             r.timestep(), ok ? "" : ", or a larger min_impact_velocity");
+  Print(out,
+        "  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
+        "{} (needs timestep <= {:.3g} s{})\n",
+        r.lag, r.load, cm.pairs()[pair_index].params.min_impact_velocity,
+        automatic ? names.Given("timestep", "auto") + " keeps to it"
+        : ok      ? "ok"
+                  : "TOO COARSE",
+        r.timestep(), ok ? "" : ", or a larger min_impact_velocity");
   return !ok;
 }
 
@@ -96,15 +102,15 @@ bool PrintStart(const Simulation& sim, int tag, const std::vector<StartContact>&
   const StartContact* shortest = ShorterStartLag(sim.contact_model(), tag, starts, rest_lag);
   if (!shortest) return false;
   const bool ok = automatic || sim.model()->opt.timestep <= shortest->timestep();
-  fmt::format_to(std::back_inserter(*out),
-             "  at the start: damping lag {:.3g} s at the depth {:.4g} m of {}, its law's force "
-             "{:.4g} N against the load {:.4g} N: {} (needs timestep <= {:.3g} s{})\n",
-             shortest->lag, shortest->depth, PairName(sim, shortest->pair), shortest->force,
-             shortest->load,
-             automatic ? names.Given("timestep", "auto") + " keeps to it"
-             : ok      ? "ok"
-                       : "TOO COARSE",
-             shortest->timestep(), ok ? "" : ", or " + names.Set("settle"));
+  Print(out,
+        "  at the start: damping lag {:.3g} s at the depth {:.4g} m of {}, its law's force "
+        "{:.4g} N against the load {:.4g} N: {} (needs timestep <= {:.3g} s{})\n",
+        shortest->lag, shortest->depth, PairName(sim, shortest->pair), shortest->force,
+        shortest->load,
+        automatic ? names.Given("timestep", "auto") + " keeps to it"
+        : ok      ? "ok"
+                  : "TOO COARSE",
+        shortest->timestep(), ok ? "" : ", or " + names.Set("settle"));
   return !ok;
 }
 
@@ -118,83 +124,87 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
   const double dt = m->opt.timestep;
   const PairTag& tag = cm.tags()[t];
   const LawParams& law = cm.pairs()[tag.pairs.front()].params;
-  fmt::format_to(std::back_inserter(*out), "\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
-             tag.geom2, tag.pairs.size(), LawName(law.law));
+  Print(out, "\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1, tag.geom2,
+        tag.pairs.size(), LawName(law.law));
   if (Law(law.law).family == LawFamily::kLinear) {
-    fmt::format_to(std::back_inserter(*out), "  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
-               law.linear_stiffness,
-               law.damping ? fmt::format("{} N s/m", *law.damping)
-                           : std::string("from e and the effective mass at each contact"));
+    Print(out, "  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
+          law.linear_stiffness,
+          law.damping ? fmt::format("{} N s/m", *law.damping)
+                      : std::string("from e and the effective mass at each contact"));
   } else {
     const std::string damping =
         ReadsDissipation(law.law)
             ? fmt::format("dissipation c {} s/m (a = c v0)", *law.dissipation)
-            : fmt::format("restitution {}{}", Shortest(ReportedRestitution(law.law, law.restitution)),
+            : fmt::format("restitution {}{}",
+                          Shortest(ReportedRestitution(law.law, law.restitution)),
                           IsElastic(law.law) ? " (elastic)" : "");
-    fmt::format_to(std::back_inserter(*out), "  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
-               law.exponent, law.exponent);
+    Print(out, "  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
+          law.exponent, law.exponent);
   }
-  fmt::format_to(std::back_inserter(*out), "  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
-             law.allow_tension ? ", allow_tension" : "");
+  Print(out, "  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
+        law.allow_tension ? ", allow_tension" : "");
 
   // the pair of this tag whose contact is shortest decides the timestep
   const TagEstimate shortest = EstimateTag(sim->contacts(), t, impact_velocity);
   const int worst = shortest.pair;
   const ContactEstimate& estimate = shortest.estimate;
   const GeomPair& pair = cm.pairs()[worst];
-  fmt::format_to(std::back_inserter(*out), "  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
-             tag.pairs.size() > 1 ? "shortest contact: " : "",
-             ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
-             estimate.effective_mass,
-             estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
+  Print(out, "  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
+        tag.pairs.size() > 1 ? "shortest contact: " : "", ObjectName(m, mjOBJ_GEOM, pair.named[0]),
+        ObjectName(m, mjOBJ_GEOM, pair.named[1]), estimate.effective_mass,
+        estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
   const std::string how =
       impact_velocity ? names.Name("impact_velocity")
       : estimate.looked_ahead
-          ? fmt::format("stepped ahead to the touch, {:.4g} s from now, through the joint "
-                        "chains",
-                        *estimate.looked_ahead)
-          : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
-                        "speed");
-  fmt::format_to(std::back_inserter(*out), "  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
+          ? fmt::format(
+                "stepped ahead to the touch, {:.4g} s from now, through the joint "
+                "chains",
+                *estimate.looked_ahead)
+          : std::string(
+                "estimated: closing speed, gravity over the gap, driven bodies' top "
+                "speed");
+  Print(out, "  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
   // both lines are printed, whatever the first says
   const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy, names, out);
-  const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value(), names, out);
+  const bool resting_coarse =
+      PrintResting(cm, worst, estimate, dt, accuracy.has_value(), names, out);
   const bool start_coarse = PrintStart(*sim, t, starts, EstimateResting(cm, worst, estimate).lag,
                                        accuracy.has_value(), names, out);
   // beside the duration
   const bool side_coarse = friction_coarse || resting_coarse || start_coarse;
   if (!std::isfinite(estimate.contact_duration)) {
-    fmt::format_to(std::back_inserter(*out),
-               "  contact duration: not estimated (nothing brings the geoms together, or "
-               "neither can move); give {}\n",
-               names.Name("impact_velocity"));
+    Print(out,
+          "  contact duration: not estimated (nothing brings the geoms together, or "
+          "neither can move); give {}\n",
+          names.Name("impact_velocity"));
     return side_coarse;  // nothing to hold the normal's timestep to
   }
-  fmt::format_to(std::back_inserter(*out), "  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
-             Law(law.law).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
-             estimate.contact_duration);
+  Print(out, "  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
+        Law(law.law).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
+        estimate.contact_duration);
   if (accuracy) {
     // the auto timestep's own rule at that accuracy (auto_timestep.h)
     const ContactSteps steps(*accuracy);
-    fmt::format_to(std::back_inserter(*out),
-               "  {}: steps of {:.3g} s near and in this contact ({:.0f} per "
-               "contact, accuracy {})\n",
-               names.Given("timestep", "auto"), steps.NormalStep(law.law, estimate.contact_duration), steps.PerContact(law.law),
-               *accuracy);
+    Print(out,
+          "  {}: steps of {:.3g} s near and in this contact ({:.0f} per "
+          "contact, accuracy {})\n",
+          names.Given("timestep", "auto"), steps.NormalStep(law.law, estimate.contact_duration),
+          steps.PerContact(law.law), *accuracy);
     return side_coarse;
   }
   const double steps = estimate.contact_duration / dt;
   const bool ok = steps >= kStepsPerContact;
-  fmt::format_to(std::back_inserter(*out), "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps,
-             dt, ok ? "ok" : "TOO COARSE", estimate.timestep());
+  Print(out, "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
+        ok ? "ok" : "TOO COARSE", estimate.timestep());
   if (!ok) {
     // the contact integrated inside the step instead (ContactStepsOptions)
     const ContactSteps per(kDefaultAccuracy);
-    fmt::format_to(std::back_inserter(*out),
-               "  or {}: {:.0f} sub-steps of its normal law inside each {} s "
-               "step near and in this contact ({:.0f} per contact; friction stays at the step)\n",
-               names.Given("contact_steps", "auto"), std::ceil(dt / per.NormalStep(law.law, estimate.contact_duration)), dt,
-               per.PerContact(law.law));
+    Print(out,
+          "  or {}: {:.0f} sub-steps of its normal law inside each {} s "
+          "step near and in this contact ({:.0f} per contact; friction stays at the step)\n",
+          names.Given("contact_steps", "auto"),
+          std::ceil(dt / per.NormalStep(law.law, estimate.contact_duration)), dt,
+          per.PerContact(law.law));
   }
   return !ok || side_coarse;
 }
@@ -202,20 +212,20 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
 void PrintDrives(const Simulation& sim, std::string* out) {
   const mjModel* m = sim.model();
   const ContactModel& cm = sim.contact_model();
-  fmt::format_to(std::back_inserter(*out), "\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
+  Print(out, "\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
   for (const Drive& drive : cm.drives()) {
     if (drive.motion == Drive::Motion::kLinear) {
-      fmt::format_to(std::back_inserter(*out), "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
-                 drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
-                 drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.speed);
+      Print(out, "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
+            drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
+            drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.speed);
       continue;
     }
-    fmt::format_to(std::back_inserter(*out),
-               "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
-               "* t + {} rad), top speed {:.6g} m/s\n",
-               drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
-               drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.amplitude,
-               drive.omega, drive.phase, std::abs(drive.amplitude * drive.omega));
+    Print(out,
+          "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
+          "* t + {} rad), top speed {:.6g} m/s\n",
+          drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
+          drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.amplitude, drive.omega,
+          drive.phase, std::abs(drive.amplitude * drive.omega));
   }
 }
 
@@ -247,15 +257,15 @@ CheckReport Check(Simulation* sim, const CheckRequest& request, const OptionRead
   const std::vector<StartContact> starts = StartContacts(sim);  // calls mj_forward
   PrintSettings(*sim, out);
   const int tags = static_cast<int>(sim->contact_model().tags().size());
-  fmt::format_to(std::back_inserter(*out), "\n{} contactlaw tag(s)\n", tags);
+  Print(out, "\n{} contactlaw tag(s)\n", tags);
   for (int t = 0; t < tags; ++t) {
     report.coarse +=
         PrintTag(sim, t, starts, request.impact_velocity, request.accuracy, reader, out);
   }
   PrintDrives(*sim, out);
   if (report.coarse) {
-    fmt::format_to(std::back_inserter(*out), "\nwarning: {} tag(s) need a smaller timestep ({})\n",
-                   report.coarse, reader.Name("timestep"));
+    Print(out, "\nwarning: {} tag(s) need a smaller timestep ({})\n", report.coarse,
+          reader.Name("timestep"));
   }
   return report;
 }

@@ -70,7 +70,8 @@ std::string CompareTableText(const std::vector<CompareRow>& rows, bool frictions
       continue;
     }
     fmt::format_to(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
-                   r.s.impacts, TableCell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
+                   r.s.impacts, TableCell(r.s.restitution_post, "{:.6f}"), r.s.max_depth,
+                   r.s.max_force,
                    TableCell(r.s.contact_duration, "{:.6g}"), TableCell(r.s.time_to_rest, "{:.6g}"),
                    r.dissipated);
   }

@@ -43,7 +43,8 @@ ScoreWeights ReadWeights(const OptionReader& reader, const std::string& text) {
 int ReadCount(const OptionReader& reader, std::string_view key, const Value& value, long lo) {
   const std::optional<long> v = WholeNumberOf(value, lo, kMaxCount);
   if (!v) {
-    reader.Refuse(key, Shown(value), fmt::format("must be a whole number in [{}, {}]", lo, kMaxCount));
+    reader.Refuse(key, Shown(value),
+                  fmt::format("must be a whole number in [{}, {}]", lo, kMaxCount));
   }
   return static_cast<int>(*v);
 }

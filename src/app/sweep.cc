@@ -38,7 +38,8 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
   out.restitution = spec.restitution;
   try {
     std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
-    out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
+    out.restitution =
+        ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
     std::vector<std::string> prefix = {std::string(LawName(spec.law)), Field(out.restitution)};
     if (spec.friction) prefix.emplace_back(FrictionName(*spec.friction));
     std::function<void(const std::vector<double>&)> on_row;

@@ -52,7 +52,9 @@ void ProgramMonitor::Note(const std::string& scene, const std::string& what) {
 void ProgramMonitor::RunFailed(const std::string& scene, const std::string& run,
                                const std::string& reason) {
   EndProgress();
-  if (WritesOutputs()) fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene, run, reason);
+  if (WritesOutputs()) {
+    fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene, run, reason);
+  }
 }
 
 void ProgramMonitor::RunDone(int k, int count, const std::string& run) {

@@ -48,31 +48,30 @@ TEST(OptionGrammarTest, ANumberReadsAsItsText) {
 }
 
 TEST(OptionGrammarTest, ANumberIsRefusedAsItsTextIs) {
+  using Read = void (*)(const Value&);
+  const Read positive = [](const Value& v) { kKeywords.Positive("timestep", v, "s"); };
+  const Read restitution = [](const Value& v) { kKeywords.Restitution("restitution", v); };
+  const Read contact_steps = [](const Value& v) { kKeywords.ContactSteps(v); };
+  const Read list = [](const Value& v) { kKeywords.RestitutionList("restitution", v); };
+  const Read dissipation = [](const Value& v) { kKeywords.Dissipation(v); };
   const struct {
-    std::string (*number)();
-    std::string (*text)();
+    Read read;
+    Value number;
+    const char* text;  // the number's text
   } cases[] = {
-      {[] { return ErrorOf([] { kKeywords.Positive("timestep", -1.0, "s"); }); },
-       [] { return ErrorOf([] { kKeywords.Positive("timestep", std::string("-1"), "s"); }); }},
-      {[] { return ErrorOf([] { kKeywords.Restitution("restitution", 2.0); }); },
-       [] { return ErrorOf([] { kKeywords.Restitution("restitution", std::string("2")); }); }},
-      {[] { return ErrorOf([] { kKeywords.ContactSteps(2.5); }); },
-       [] { return ErrorOf([] { kKeywords.ContactSteps(std::string("2.5")); }); }},
-      {[] { return ErrorOf([] { kKeywords.ContactSteps(0.0); }); },
-       [] { return ErrorOf([] { kKeywords.ContactSteps(std::string("0")); }); }},
-      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", 1.5); }); },
-       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("1.5")); }); }},
-      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::vector<double>{0.5, 1.5}); }); },
-       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("0.5,1.5")); }); }},
-      {[] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::vector<double>{0.5, 0.5}); }); },
-       [] { return ErrorOf([] { kKeywords.RestitutionList("restitution", std::string("0.5,0.5")); }); }},
-      {[] { return ErrorOf([] { kKeywords.Dissipation(-0.5); }); },
-       [] { return ErrorOf([] { kKeywords.Dissipation(std::string("-0.5")); }); }},
+      {positive, -1.0, "-1"},
+      {restitution, 2.0, "2"},
+      {contact_steps, 2.5, "2.5"},
+      {contact_steps, 0.0, "0"},
+      {list, 1.5, "1.5"},
+      {list, std::vector<double>{0.5, 1.5}, "0.5,1.5"},
+      {list, std::vector<double>{0.5, 0.5}, "0.5,0.5"},
+      {dissipation, -0.5, "-0.5"},
   };
   for (const auto& c : cases) {
-    const std::string message = c.number();
-    EXPECT_NE(message, "");
-    EXPECT_EQ(message, c.text());
+    const std::string message = ErrorOf([&] { c.read(c.number); });
+    EXPECT_NE(message, "") << c.text;
+    EXPECT_EQ(message, ErrorOf([&] { c.read(std::string(c.text)); }));
   }
   EXPECT_EQ(ErrorOf([] { kKeywords.Positive("timestep", -1.0, "s"); }),
             "timestep=-1 must be a number > 0 (s)");
