@@ -68,7 +68,7 @@ std::string KeywordSpelling(const std::string& message);
 void BindKeywordSpelling(pybind11::module_& m);
 void BindSimulation(pybind11::module_& m);
 void BindCommands(pybind11::module_& m);
-void BindFileCommands(pybind11::module_& m);
+void BindJobs(pybind11::module_& m);
 
 }  // namespace contactlaws::python
 

@@ -156,7 +156,7 @@ class ReplayResult:
 
 
 def _simulated_frame(simulated):
-    """The library's simulated samples (python/file_commands.cc's
+    """The library's simulated samples (python/jobs.cc's
     SimulatedColumns) as trajectories.csv's table."""
     names = _np.asarray(simulated["names"], dtype=object)
     frame = _pd.DataFrame(simulated["values"], columns=simulated["columns"])
@@ -166,7 +166,7 @@ def _simulated_frame(simulated):
 
 
 def _replay_result(scene, result):
-    """ReplayResult of the library's columns (python/file_commands.cc)."""
+    """ReplayResult of the library's columns (python/jobs.cc)."""
     scores = _pd.DataFrame(result["scores"])
     trajectories = _simulated_frame(result["simulated"])
     if result["diverged"]:

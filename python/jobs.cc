@@ -9,21 +9,21 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <functional>
 #include <future>
-#include <stdexcept>
+#include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include "app/check_job.h"
-#include "app/run_warnings.h"
+#include "app/compare_job.h"
 #include "app/identify_options.h"
 #include "app/law_tables.h"
 #include "app/replay_job.h"
 #include "app/restitution_job.h"
-#include "app/compare_job.h"
+#include "app/run_warnings.h"
 #include "bindings.h"
 
 namespace contactlaws::python {
@@ -305,7 +305,7 @@ py::dict LawTables(const py::dict& kwargs) {
 
 }  // namespace
 
-void BindFileCommands(py::module_& m) {
+void BindJobs(py::module_& m) {
   m.def("_compare", &Compare);
   m.def("_restitution", &Restitution);
   m.def("_replay", &Replay);
