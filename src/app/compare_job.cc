@@ -15,7 +15,7 @@ namespace {
 
 // A law that reads no restitution once (an elastic one at e = 1); every other
 // law at each restitution (the scene's if none given); each of those with
-// every friction model of --frictions (the scene's if none given).
+// every friction model of frictions (the scene's if none given).
 std::vector<RunSpec> CompareSpecs(const std::vector<LawId>& laws,
                                   const std::vector<double>& restitutions,
                                   const std::vector<FrictionKind>& frictions) {

@@ -3,9 +3,8 @@
 #include "app/sweep.h"
 
 #include <cmath>
-#include <cstdio>
+#include <functional>
 #include <cstring>
-#include <filesystem>
 #include <memory>
 #include <set>
 #include <type_traits>
@@ -197,9 +196,9 @@ std::vector<RunOutput> RunShare(WorkSpread* spread, int count, int jobs,
 
 namespace {
 
-// --laws all: a law that needs a dissipation nobody gave (neither the scene's
-// tags nor --dissipation) is left out with a warning, not refused; named in
-// --laws, it is refused as any bad input is.
+// laws "all": a law that needs a dissipation nobody gave (neither the
+// scene's tags nor the dissipation option) is left out with a warning, not
+// refused; named in laws, it is refused as any bad input is.
 void LeaveOutLawsMissingADissipation(const OptionReader& reader, SweepInputs* in,
                                       SweepMonitor* monitor) {
   if (in->common.simulation.overrides.dissipation) return;
