@@ -3,8 +3,8 @@
 #include "app/sweep.h"
 
 #include <cmath>
-#include <functional>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <set>
 #include <type_traits>
