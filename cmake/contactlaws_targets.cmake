@@ -30,8 +30,9 @@ function(contactlaws_add_layer layer)
 endfunction()
 
 # Headers a MuJoCo-free layer (laws, memory) must not reach, directly or
-# through the project's own headers it includes.
+# through the project's own headers it includes, and why.
 set(contactlaws_forbidden_includes "mujoco/" "fmt/" "Eigen/")
+set(contactlaws_forbidden_reason "this layer is built without MuJoCo, fmt and Eigen")
 
 # Follows the #include lines of file, recording in the parent's
 # contactlaws_visited the files seen; fails on a forbidden header.
@@ -48,7 +49,7 @@ function(contactlaws_check_includes file origin)
       string(FIND "${header}" "${forbidden}" at)
       if(at EQUAL 0)
         message(FATAL_ERROR "${origin} reaches <${header}> (through ${file}): "
-                            "this layer is built without MuJoCo, fmt and Eigen")
+                            "${contactlaws_forbidden_reason}")
       endif()
     endforeach()
     foreach(root "${PROJECT_SOURCE_DIR}/include" "${PROJECT_SOURCE_DIR}/src")
@@ -64,6 +65,21 @@ endfunction()
 # forbidden headers, through everything of the project it includes.
 function(contactlaws_check_layer dir)
   file(GLOB files "${PROJECT_SOURCE_DIR}/${dir}/*.cc" "${PROJECT_SOURCE_DIR}/${dir}/*.h")
+  set(contactlaws_visited "")
+  foreach(file IN LISTS files)
+    contactlaws_check_includes("${file}" "${file}")
+  endforeach()
+endfunction()
+
+# contactlaws_check_beside_cli(DIR): every source and header of DIR (a
+# front-end: python/) reaches neither the command line's headers (src/cli)
+# nor CLI11's, directly or through the project's headers: the two
+# front-ends stand side by side over the application layer (src/app).
+function(contactlaws_check_beside_cli dir)
+  set(contactlaws_forbidden_includes "cli/" "CLI/")
+  set(contactlaws_forbidden_reason
+      "a front-end beside the command line uses the application layer (src/app), not src/cli")
+  file(GLOB files "${dir}/*.cc" "${dir}/*.h")
   set(contactlaws_visited "")
   foreach(file IN LISTS files)
     contactlaws_check_includes("${file}" "${file}")

@@ -14,29 +14,37 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "app/options.h"
 #include "app/table.h"
 #include "contactlaws/contactlaws.h"
-
-namespace contactlaws::cli {
-struct CommonArgs;
-}  // namespace contactlaws::cli
 
 namespace contactlaws::python {
 
 // A Simulation's data, to write its state and to run mj_forward.
 inline mjData* MutableData(Simulation* sim) { return sim->data(); }
 
-// A keyword argument as the command line's text: absent or None -> nullopt,
-// a str as is, anything else as Python's str() of it (a float's shortest
-// exact form), so the command line's parser and messages apply.
+// A keyword argument taken as text (a name, a list, a path): absent or None
+// -> nullopt, a str as is, anything else as Python's str() of it.
 inline std::optional<std::string> OptionalText(const pybind11::dict& kwargs, const char* key) {
   if (!kwargs.contains(key) || kwargs[key].is_none()) return std::nullopt;
   return pybind11::str(kwargs[key]).cast<std::string>();
 }
 
-// The keywords of the options run, compare and restitution share (duration,
-// sample_rate, timestep, ..., settle) into args.
-void TakeCommon(const pybind11::dict& kwargs, cli::CommonArgs* args);
+// The options' grammar naming the keyword arguments (python/options.cc).
+const app::OptionReader& Keywords();
+
+// A keyword argument as the grammar takes it: absent or None -> nullopt; an
+// int or float (not a bool) as a number; a list or tuple of them as numbers
+// (the option must take a list); a str as text; anything else as Python's
+// str() of it.
+std::optional<app::Value> ValueOf(const pybind11::dict& kwargs, const char* key);
+
+// A switch keyword: True or False (absent or None: false); else TypeError.
+bool Switch(const pybind11::dict& kwargs, const char* key);
+
+// The keywords of the options run, compare, restitution and check share
+// (duration, sample_rate, timestep, ..., settle).
+app::CommonInput CommonInputOf(const pybind11::dict& kwargs);
 
 // A scene with the overrides the keywords give (law, restitution, friction,
 // mu, timestep).
@@ -60,7 +68,7 @@ std::string KeywordSpelling(const std::string& message);
 void BindKeywordSpelling(pybind11::module_& m);
 void BindSimulation(pybind11::module_& m);
 void BindCommands(pybind11::module_& m);
-void BindFileCommands(pybind11::module_& m);
+void BindJobs(pybind11::module_& m);
 
 }  // namespace contactlaws::python
 

@@ -47,6 +47,8 @@ def _build():
     build = os.path.join(ROOT, "build", "pip")
     subprocess.run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                     f"-DPython3_EXECUTABLE={sys.executable}", "-DCONTACTLAWS_PYTHON=ON",
+                    # the module binds the library, not the command line
+                    "-DCONTACTLAWS_BUILD_CLI=OFF",
                     "-DCONTACTLAWS_BUILD_TESTS=OFF", "-DCONTACTLAWS_BUILD_PLUGIN=OFF"],
                    check=True)
     jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", "2")

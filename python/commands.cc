@@ -1,19 +1,18 @@
 // Copyright contactlaws authors.
 //
-// The commands as functions: the command line's option parsing (so its
-// messages, word for word) and the library's Advance, with the results kept
-// in memory instead of written as CSV.
+// run as a function: the application's option grammar (app/options.h, its
+// messages naming the keywords) and the library's Advance, with the results
+// kept in memory.
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bindings.h"
 #include "app/arena.h"
-#include "cli/commands.h"
 #include "app/impact_table.h"
-#include "cli/csv_file.h"
-#include "cli/report.h"
+#include "app/run_warnings.h"
 #include "sim/start_contact.h"
 #include "sim/summary.h"
 #include "sim/timestep_advice.h"
@@ -26,15 +25,6 @@ namespace py = pybind11;
 // Thrown out of Advance's row callback when Ctrl-C arrived (Python's error
 // indicator is set: KeyboardInterrupt follows).
 struct Interrupted {};
-
-cli::RunArgs RunArgsOf(const std::string& scene, const py::dict& kwargs) {
-  cli::RunArgs args;
-  args.scene = scene;
-  TakeCommon(kwargs, &args);
-  args.law = OptionalText(kwargs, "law");
-  args.restitution = OptionalText(kwargs, "restitution");
-  return args;
-}
 
 // The table run prints: one row per tag.
 py::list SummaryRows(const Simulation& sim, double end_time) {
@@ -56,12 +46,12 @@ py::list SummaryRows(const Simulation& sim, double end_time) {
 // contactlaws run: (columns, rows as an n x columns array, impact columns,
 // impact rows as text fields, summary rows, warnings, divergence message).
 py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
-  const cli::RunArgs args = RunArgsOf(scene_path, kwargs);
-  const cli::CommonOptions common = cli::ParseCommon(args);
+  const app::CommonOptions common = Keywords().Common(CommonInputOf(kwargs));
   SimulationOptions options = common.simulation;
-  cli::ParseLawOverrides(args.law, args.restitution, &options.overrides);
+  Keywords().LawOverrides(OptionalText(kwargs, "law"), ValueOf(kwargs, "restitution"),
+                          &options.overrides);
   // the arena sized as the command line sizes it (the same work per step)
-  const Scene scene(args.scene, app::LoadSizedModel(args.scene, options.overrides));
+  const Scene scene(scene_path, app::LoadSizedModel(scene_path, options.overrides));
   std::unique_ptr<Simulation> sim = scene.Make(options);
   // a start deep in contact, whatever the step; a fixed step's own
   const std::vector<StartContact> starts = StartContacts(sim.get());
@@ -95,10 +85,13 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
       throw py::error_already_set();
     }
   }
-  for (const std::string& w : cli::RunWarnings(*sim, result)) warnings.push_back(w);
+  for (std::string& w : app::RunWarnings(*sim, result, Keywords())) {
+    warnings.push_back(std::move(w));
+  }
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   std::string divergence;
   if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice);
+  // the library's advice (sim/) names the command line's flags
   for (std::string& w : warnings) w = KeywordSpelling(w);
   divergence = KeywordSpelling(divergence);
 

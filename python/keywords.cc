@@ -1,12 +1,14 @@
 // Copyright contactlaws authors.
 //
-// The command line's messages spoken to a Python caller: each --flag is the
-// functions' keyword argument of the same name (--max-timestep=1e-3 ->
-// max_timestep=1e-3, give --dissipation -> give dissipation, --settle ->
-// settle=True), the command line's phrases that have no flag form as
-// Python's. The errors raised (contactlaws.Error), the warnings (Python's
-// and the commands' lines on stderr) and the divergence messages pass
-// through it: the one place where flags become keywords.
+// The library's own advice spoken to a Python caller. The options' messages
+// name the keywords already (the application's grammar, app/options.h, reads
+// them with Python's spelling); the texts of src/sim still name the command
+// line's flags: the timestep advice and the deep start's warning
+// (sim/timestep_advice.h, sim/start_contact.h), a divergence's message and
+// replay's. Those, and contactlaws.Error's message, pass through
+// KeywordSpelling: each --flag becomes the keyword argument of the same
+// name (--max-timestep -> max_timestep, --settle -> settle=True), a few
+// phrases Python's own (--timestep auto -> timestep="auto").
 
 #include <algorithm>
 #include <array>
@@ -15,14 +17,16 @@
 #include <utility>
 
 #include "bindings.h"
-#include "cli/report.h"
 
 namespace contactlaws::python {
 namespace {
 
 // Phrases first: a flag followed by its value as a word, and the commands.
-constexpr std::array<std::pair<const char*, const char*>, 4> kPhrases = {{
+constexpr std::array<std::pair<const char*, const char*>, 7> kPhrases = {{
+    {"--metric weighted", "metric=\"weighted\""},
     {"--laws all", "laws=\"all\""},
+    {"--timestep auto", "timestep=\"auto\""},
+    {"--contact-steps auto", "contact_steps=\"auto\""},
     {"contactlaws check", "contactlaws.check()"},
     {"contactlaws run", "contactlaws.run()"},
     {"contactlaws compare", "contactlaws.compare()"},
@@ -58,7 +62,6 @@ std::string KeywordSpelling(const std::string& message) {
 }
 
 void BindKeywordSpelling(pybind11::module_& m) {
-  cli::SetSpelling(&KeywordSpelling);
   // contactlaws.Error, a ValueError, carries the command line's message
   // with the keywords' names
   static pybind11::exception<Error> error(m, "Error", PyExc_ValueError);

@@ -10,5 +10,5 @@ PYBIND11_MODULE(_contactlaws, m) {
   contactlaws::python::BindKeywordSpelling(m);
   contactlaws::python::BindSimulation(m);
   contactlaws::python::BindCommands(m);
-  contactlaws::python::BindFileCommands(m);
+  contactlaws::python::BindJobs(m);
 }

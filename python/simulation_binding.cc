@@ -11,8 +11,6 @@
 
 #include "app/arena.h"
 #include "app/impact_table.h"
-#include "cli/csv_file.h"
-#include "cli/options.h"
 
 namespace contactlaws::python {
 namespace {
@@ -59,22 +57,26 @@ void AdvanceTo(Simulation* sim, double t, double timestep) {
 
 std::unique_ptr<Simulation> MakeSimulation(const std::string& scene, const py::dict& kwargs) {
   SimulationOptions options;
-  const std::optional<std::string> law = OptionalText(kwargs, "law");
-  const std::optional<std::string> restitution = OptionalText(kwargs, "restitution");
-  cli::ParseLawOverrides(law, restitution, &options.overrides);
-  cli::ParseFrictionOverrides(OptionalText(kwargs, "friction"), OptionalText(kwargs, "mu"),
-                              &options.overrides);
-  if (const auto timestep = OptionalText(kwargs, "timestep")) {
-    options.timestep = cli::ParsePositive("--timestep", *timestep, "s");
+  const app::OptionReader& keywords = Keywords();
+  keywords.LawOverrides(OptionalText(kwargs, "law"), ValueOf(kwargs, "restitution"),
+                        &options.overrides);
+  keywords.FrictionOverrides(OptionalText(kwargs, "friction"), ValueOf(kwargs, "mu"),
+                             &options.overrides);
+  if (const auto timestep = ValueOf(kwargs, "timestep")) {
+    options.timestep = keywords.Positive("timestep", *timestep, "s");
   }
   // the arena sized as the command line sizes it: reset() zeroes all of it
   return Scene(scene, app::LoadSizedModel(scene, options.overrides)).Make(options);
 }
 
 void BindSimulation(py::module_& m) {
-  // a step length as the command line reads --timestep (its message)
+  // a step length, read as the timestep keyword is (its message)
   m.def("_parse_timestep", [](const py::object& value) {
-    return cli::ParsePositive("--timestep", std::string(py::str(value)), "s");
+    py::dict kwargs;
+    kwargs["timestep"] = value;
+    // None too is refused by its text
+    const std::optional<app::Value> timestep = ValueOf(kwargs, "timestep");
+    return Keywords().Positive("timestep", timestep.value_or(app::Value("None")), "s");
   });
   py::class_<Simulation>(m, "_Simulation")
       .def(py::init([](const std::string& scene, const py::dict& overrides) {

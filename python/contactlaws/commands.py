@@ -2,15 +2,13 @@
 commands (the same options, the same checks and messages, the same numbers),
 their results as DataFrames with the columns of the command's CSV files.
 
-replay is the library's replay job, its results columns of numbers; the
-others run the command line's command, which writes its files into a
-temporary folder that is removed once read. Ctrl-C stops the runs after
-their current step and raises KeyboardInterrupt.
+Each calls the library's application layer (src/app), the jobs the command
+line calls, whose results come back as columns of numbers and names: no
+file is written, nothing read back. Ctrl-C stops the runs after their
+current step and raises KeyboardInterrupt.
 """
 
-import os as _os
 import sys as _sys
-import tempfile as _tempfile
 import warnings as _warnings
 
 import numpy as _np
@@ -18,7 +16,6 @@ import pandas as _pd
 
 from . import _contactlaws
 
-_INCOMPLETE = 3  # the command line's exit status when a run did not give what was asked
 
 
 def _text_list(value):
@@ -26,6 +23,15 @@ def _text_list(value):
     if isinstance(value, (list, tuple)):
         return ",".join(str(v) for v in value)
     return value
+
+
+def _numbers(value):
+    """A list or tuple of numbers as it is (the library takes them as
+    numbers); anything else as _text_list."""
+    if isinstance(value, (list, tuple)) and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):
+        return list(value)
+    return _text_list(value)
 
 
 def _assignments(value):
@@ -36,18 +42,6 @@ def _assignments(value):
         return ",".join(f"{key}={v if isinstance(v, str) else repr(float(v))}"
                         for key, v in value.items())
     return _text_list(value)
-
-
-def _read(path):
-    """A CSV the command wrote, its numbers the very doubles it computed
-    (they are written in their shortest exact form)."""
-    return _pd.read_csv(path, float_precision="round_trip", keep_default_na=False,
-                        na_values=[""])
-
-
-def _warn_incomplete(status, scene, what):
-    if status == _INCOMPLETE:
-        _warnings.warn(f"{scene}: {what}", stacklevel=3)
 
 
 class CompareResult:
@@ -79,14 +73,15 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
     simulated second; jobs: runs at a time (the results do not depend on it).
     Returns a CompareResult; warns when a run failed (its summary row says why).
     """
-    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+    options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
                    frictions=_text_list(frictions), friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
                    sample_rate=sample_rate, columns=columns, settle=settle, jobs=jobs,
                    impacts_per_point=impacts_per_point)
     result = _contactlaws._compare(str(scene), options)
-    _warn_incomplete(result["status"], scene, "a run failed: its summary row gives the reason")
+    if result["failed"]:
+        _warnings.warn(f"{scene}: a run failed: its summary row gives the reason", stacklevel=2)
     return CompareResult(*(_pd.DataFrame(result[name])
                            for name in ("trajectories", "impacts", "summary")),
                          result["report"])
@@ -103,16 +98,15 @@ def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, 
     (s); empty where a run has no such value. The options as compare's;
     warns when a first contact did not end within duration.
     """
-    options = dict(laws=_text_list(laws), restitution=_text_list(restitution),
+    options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
                    friction=friction, mu=mu, dissipation=dissipation, duration=duration,
                    timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
                    integrator=integrator, settle=settle, jobs=jobs)
-    with _tempfile.TemporaryDirectory(prefix="contactlaws-") as folder:
-        path = _os.path.join(folder, "restitution.csv")
-        status, _ = _contactlaws._restitution(str(scene), options, path)
-        table = _read(path)
-    _warn_incomplete(status, scene, "a first contact did not end within the duration")
-    return table
+    result = _contactlaws._restitution(str(scene), options)
+    if result["incomplete"]:
+        _warnings.warn(f"{scene}: a first contact did not end within the duration",
+                       stacklevel=2)
+    return _pd.DataFrame(result["table"])
 
 
 def _data(data):
@@ -162,7 +156,7 @@ class ReplayResult:
 
 
 def _simulated_frame(simulated):
-    """The library's simulated samples (python/file_commands.cc's
+    """The library's simulated samples (python/jobs.cc's
     SimulatedColumns) as trajectories.csv's table."""
     names = _np.asarray(simulated["names"], dtype=object)
     frame = _pd.DataFrame(simulated["values"], columns=simulated["columns"])
@@ -172,7 +166,7 @@ def _simulated_frame(simulated):
 
 
 def _replay_result(scene, result):
-    """ReplayResult of the library's columns (python/file_commands.cc)."""
+    """ReplayResult of the library's columns (python/jobs.cc)."""
     scores = _pd.DataFrame(result["scores"])
     trajectories = _simulated_frame(result["simulated"])
     if result["diverged"]:
@@ -291,7 +285,7 @@ def laws(*, restitution=None):
     restitution: "E1,E2", "start:stop:step" or a list (default
     0.9,0.7,0.5,0.3,0.1). Returns LawTables.
     """
-    tables = _contactlaws._laws(dict(restitution=_text_list(restitution)))
+    tables = _contactlaws._laws(dict(restitution=_numbers(restitution)))
     return LawTables(*(_pd.DataFrame(tables[name])
                        for name in ("laws", "frictions", "effective")))
 
@@ -299,7 +293,8 @@ def laws(*, restitution=None):
 def check(scene, *, law=None, restitution=None, dissipation=None, friction=None, mu=None,
           timestep=None, accuracy=None, impact_velocity=None):
     """The scene's tags resolved, their contact estimates and the timestep
-    they need, as `contactlaws check`: its report, word for word (str).
+    they need, as `contactlaws check`: its report, word for word, the
+    options it names spelled as the keyword arguments (str).
 
     law, restitution, dissipation (s/m), friction, mu: overrides of every
     tag; timestep: s or "auto" (accuracy: relative error); impact_velocity:
@@ -308,5 +303,4 @@ def check(scene, *, law=None, restitution=None, dissipation=None, friction=None,
     options = dict(law=law, restitution=restitution, dissipation=dissipation,
                    friction=friction, mu=mu, timestep=timestep, accuracy=accuracy,
                    impact_velocity=impact_velocity)
-    _, report = _contactlaws._check(str(scene), options)
-    return report
+    return _contactlaws._check(str(scene), options)

@@ -5,6 +5,7 @@ import _thread
 import io
 import os
 import subprocess
+import tempfile
 import threading
 import time
 
@@ -59,7 +60,7 @@ def test_compare_gives_the_command_lines_three_files(tmp_path, monkeypatch):
     # the results come back as the library's columns: no folder, no CSV read back
     def no_file(*args, **kwargs):
         raise AssertionError("compare went through a file")
-    monkeypatch.setattr(contactlaws.commands._tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(tempfile, "TemporaryDirectory", no_file)
     monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
     result = contactlaws.compare(BALL, laws=["hertz", "flores", "hunt-crossley"],
                                  restitution=[0.5, 0.8], duration=0.6, sample_rate=200)
@@ -81,12 +82,19 @@ def test_compare_of_friction_models(tmp_path):
     assert list(result.summary["friction"]) == ["coulomb", "stribeck"]
 
 
-def test_restitution_gives_the_command_lines_table(tmp_path):
+def test_restitution_gives_the_command_lines_table(tmp_path, monkeypatch):
     out = tmp_path / "fig7.csv"
     cli("restitution", BALL, "--laws=hertz,flores,gonthier", "--restitution=0.2,0.6,1",
         "--duration=0.6", "--quiet", "--output", str(out))
+
+    # the table comes back as the library's columns: no folder, no CSV read back
+    def no_file(*args, **kwargs):
+        raise AssertionError("restitution went through a file")
+    monkeypatch.setattr(tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
     table = contactlaws.restitution(BALL, laws="hertz,flores,gonthier", restitution=[0.2, 0.6, 1],
                                     duration=0.6)
+    monkeypatch.undo()
     assert_same(table, out)
     assert list(table["law"]) == ["hertz"] * 3 + ["flores"] * 3 + ["gonthier"] * 3
 
@@ -147,7 +155,7 @@ def test_replay_keeps_numbered_trajectories_names_and_writes_no_file(tmp_path, m
     # the results come back as the library's columns: no folder, no CSV read back
     def no_file(*args, **kwargs):
         raise AssertionError("replay went through a file")
-    monkeypatch.setattr(contactlaws.commands._tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(tempfile, "TemporaryDirectory", no_file)
     monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
     result = contactlaws.replay(BALL, numbered, law="flores", timestep=1e-4)
     monkeypatch.undo()
@@ -173,7 +181,7 @@ def test_fit_gives_the_command_lines_files(tmp_path, measured, monkeypatch):
     # the results come back as the library's columns: no folder, no CSV read back
     def no_file(*args, **kwargs):
         raise AssertionError("fit went through a file")
-    monkeypatch.setattr(contactlaws.commands._tempfile, "TemporaryDirectory", no_file)
+    monkeypatch.setattr(tempfile, "TemporaryDirectory", no_file)
     monkeypatch.setattr(contactlaws.commands._pd, "read_csv", no_file)
     result = contactlaws.fit(BALL, measured, "restitution=0.3:0.9", law="flores",
                              timestep=1e-4, budget=6, folds=2, profile="all", profile_points=3)
@@ -222,7 +230,11 @@ def test_laws_gives_the_command_lines_tables():
 
 def test_check_prints_the_command_lines_report():
     printed = cli("check", BALL, "--law=flores", "--restitution=0.4", "--timestep=1e-4").stdout
-    assert contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4) == printed
+    report = contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4)
+    # the options it advises named as the keywords
+    assert report == _contactlaws._spelled(printed)
+    assert 'or contact_steps="auto": 4 sub-steps' in report
+    assert "need a smaller timestep (timestep)" in report
     assert "steps per contact" in printed
 
 

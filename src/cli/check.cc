@@ -2,253 +2,38 @@
 
 #include "cli/commands.h"
 
-#include <algorithm>
-#include <cmath>
+#include <cstdio>
+#include <memory>
 #include <set>
 
-#include <fmt/format.h>
-
-#include "app/impact_table.h"
-#include "cli/csv_file.h"
+#include "app/check_job.h"
 #include "cli/report.h"
-#include "sim/contact_steps.h"
-#include "sim/estimate.h"
-#include "sim/start_contact.h"
-#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
-
 namespace {
 
-// The scene's MuJoCo settings, and the rule the estimates are held to.
-void PrintSettings(const Simulation& sim, std::FILE* out) {
-  const mjModel* m = sim.model();
-  const char* integrators[] = {"euler", "rk4", "implicit"};
-
-  fmt::print(out, "{}: MuJoCo {}.{}.{}, timestep {} s, integrator {}, gravity ({}, {}, {}) m/s^2\n",
-             sim.source(), MujocoVersion() / 100, MujocoVersion() / 10 % 10, MujocoVersion() % 10,
-             m->opt.timestep,
-             m->opt.integrator >= 0 && m->opt.integrator < 3 ? integrators[m->opt.integrator] : "?",
-             m->opt.gravity[0], m->opt.gravity[1], m->opt.gravity[2]);
-  fmt::print(out, "rule: a contact is resolved by >= {} steps of its estimated duration\n",
-             kStepsPerContact);
-}
-
-// The friction of a tag's pair, and the step its tangential dynamics need
-// (EstimateTangential: kStepsPerContact steps per period); true when the
-// timestep is too coarse.
-bool PrintFriction(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                   double dt, std::optional<double> accuracy, std::FILE* out) {
-  const GeomPair& pair = cm.pairs()[pair_index];
-  const FrictionParams& f = pair.friction;
-  if (f.kind == FrictionKind::kNone) {
-    fmt::print(out, "  friction none{}\n",
-               pair.condim == 1 ? " (condim 1: frictionless, as in MuJoCo)" : "");
-    return false;
-  }
-  fmt::print(out, "  friction {}: mu_static {}, mu_kinetic {}, condim {}{}{}\n",
-             FrictionName(f.kind), f.mu_static, f.mu_kinetic, pair.condim,
-             f.torsional > 0 ? fmt::format(", torsional {} m", f.torsional) : "",
-             f.rolling > 0 ? fmt::format(", rolling {} m", f.rolling) : "");
-  const TangentialEstimate t = EstimateTangential(cm, pair_index, estimate);
-  if (accuracy) {
-    // the auto timestep's own rule at that accuracy (auto_timestep.h)
-    fmt::print(out, "  tangential: {}: {}: --timestep auto: steps of <= {:.3g} s in contact\n",
-               t.what, t.Span(), ContactSteps(*accuracy).TangentialStep(t.duration));
-    return false;
-  }
-  const double step = t.timestep();
-  const bool ok = !(std::isfinite(step)) || dt <= step;
-  fmt::print(out, "  tangential: {}: {}: {} (needs timestep <= {:.3g} s)\n", t.what, t.Span(),
-             ok ? "ok" : "TOO COARSE", step);
-  return !ok;
-}
-
-// The lag of the law's damping at rest under the pair's weight (a contact
-// settling at the v0 floor: EstimateResting); true when the timestep is too
-// coarse for it.
-bool PrintResting(const ContactModel& cm, int pair_index, const ContactEstimate& estimate,
-                  double dt, bool automatic, std::FILE* out) {
-  const RestingEstimate r = EstimateResting(cm, pair_index, estimate);
-  if (!std::isfinite(r.lag)) return false;
-  const bool ok = automatic || dt <= r.timestep();
-  fmt::print(out,
-             "  at rest: damping lag {:.3g} s under the weight {:.4g} N at the v0 floor {} m/s: "
-             "{} (needs timestep <= {:.3g} s{})\n",
-             r.lag, r.load, cm.pairs()[pair_index].params.min_impact_velocity,
-             automatic ? "--timestep auto keeps to it"
-             : ok      ? "ok"
-                       : "TOO COARSE",
-             r.timestep(), ok ? "" : ", or a larger min_impact_velocity");
-  return !ok;
-}
-
-// The lag of the law's damping where the tag's pairs start in contact when it
-// is shorter than rest_lag, the one at rest (s: ShorterStartLag); true when
-// the timestep is too coarse for it.
-bool PrintStart(const Simulation& sim, int tag, const std::vector<StartContact>& starts,
-                double rest_lag, bool automatic, std::FILE* out) {
-  const StartContact* shortest = ShorterStartLag(sim.contact_model(), tag, starts, rest_lag);
-  if (!shortest) return false;
-  const bool ok = automatic || sim.model()->opt.timestep <= shortest->timestep();
-  fmt::print(out,
-             "  at the start: damping lag {:.3g} s at the depth {:.4g} m of {}, its law's force "
-             "{:.4g} N against the load {:.4g} N: {} (needs timestep <= {:.3g} s{})\n",
-             shortest->lag, shortest->depth, PairName(sim, shortest->pair), shortest->force,
-             shortest->load,
-             automatic ? "--timestep auto keeps to it"
-             : ok      ? "ok"
-                       : "TOO COARSE",
-             shortest->timestep(), ok ? "" : ", or --settle");
-  return !ok;
-}
-
-// Tag t resolved, its estimated contact and the timestep it needs; true when
-// the timestep is too coarse for the estimate.
-bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
-              std::optional<double> impact_velocity, std::optional<double> accuracy,
-              std::FILE* out) {
-  const mjModel* m = sim->model();
-  const ContactModel& cm = sim->contact_model();
-  const double dt = m->opt.timestep;
-  const PairTag& tag = cm.tags()[t];
-  const LawParams& law = cm.pairs()[tag.pairs.front()].params;
-  fmt::print(out, "\ncontactlaw:{}: {} - {}, {} geom pair(s), law {}\n", tag.label, tag.geom1,
-             tag.geom2, tag.pairs.size(), LawName(law.law));
-  if (Law(law.law).family == LawFamily::kLinear) {
-    fmt::print(out, "  restitution {}, linear_stiffness k {} N/m, damping c {}\n", law.restitution,
-               law.linear_stiffness,
-               law.damping ? fmt::format("{} N s/m", *law.damping)
-                           : std::string("from e and the effective mass at each contact"));
-  } else {
-    const std::string damping =
-        ReadsDissipation(law.law)
-            ? fmt::format("dissipation c {} s/m (a = c v0)", *law.dissipation)
-            : fmt::format("restitution {}{}", Field(ReportedRestitution(law.law, law.restitution)),
-                          IsElastic(law.law) ? " (elastic)" : "");
-    fmt::print(out, "  {}, stiffness K {:.6g} N/m^{}, exponent n {}\n", damping, law.stiffness,
-               law.exponent, law.exponent);
-  }
-  fmt::print(out, "  min_impact_velocity {} m/s{}\n", law.min_impact_velocity,
-             law.allow_tension ? ", allow_tension" : "");
-
-  // the pair of this tag whose contact is shortest decides the timestep
-  const TagEstimate shortest = EstimateTag(sim->contacts(), t, impact_velocity);
-  const int worst = shortest.pair;
-  const ContactEstimate& estimate = shortest.estimate;
-  const GeomPair& pair = cm.pairs()[worst];
-  fmt::print(out, "  {}geoms {} - {}: effective mass {:.6g} kg, gap {}\n",
-             tag.pairs.size() > 1 ? "shortest contact: " : "",
-             ObjectName(m, mjOBJ_GEOM, pair.named[0]), ObjectName(m, mjOBJ_GEOM, pair.named[1]),
-             estimate.effective_mass,
-             estimate.gap ? fmt::format("{:.6g} m", *estimate.gap) : "out of reach");
-  const std::string how =
-      impact_velocity ? std::string("--impact-velocity")
-      : estimate.looked_ahead
-          ? fmt::format("stepped ahead to the touch, {:.4g} s from now, through the joint "
-                        "chains",
-                        *estimate.looked_ahead)
-          : std::string("estimated: closing speed, gravity over the gap, driven bodies' top "
-                        "speed");
-  fmt::print(out, "  impact velocity {:.6g} m/s ({})\n", estimate.impact_velocity, how);
-  // both lines are printed, whatever the first says
-  const bool friction_coarse = PrintFriction(cm, worst, estimate, dt, accuracy, out);
-  const bool resting_coarse = PrintResting(cm, worst, estimate, dt, accuracy.has_value(), out);
-  const bool start_coarse = PrintStart(*sim, t, starts, EstimateResting(cm, worst, estimate).lag,
-                                       accuracy.has_value(), out);
-  // beside the duration
-  const bool side_coarse = friction_coarse || resting_coarse || start_coarse;
-  if (!std::isfinite(estimate.contact_duration)) {
-    fmt::print(out,
-               "  contact duration: not estimated (nothing brings the geoms together, or "
-               "neither can move); give --impact-velocity\n");
-    return side_coarse;  // nothing to hold the normal's timestep to
-  }
-  fmt::print(out, "  elastic ({}) contact: max depth {:.4g} m, duration {:.4g} s\n",
-             Law(law.law).family == LawFamily::kLinear ? "k d" : "K d^n", estimate.max_depth,
-             estimate.contact_duration);
-  if (accuracy) {
-    // the auto timestep's own rule at that accuracy (auto_timestep.h)
-    const ContactSteps steps(*accuracy);
-    fmt::print(out,
-               "  --timestep auto: steps of {:.3g} s near and in this contact ({:.0f} per "
-               "contact, accuracy {})\n",
-               steps.NormalStep(law.law, estimate.contact_duration), steps.PerContact(law.law),
-               *accuracy);
-    return side_coarse;
-  }
-  const double steps = estimate.contact_duration / dt;
-  const bool ok = steps >= kStepsPerContact;
-  fmt::print(out, "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps,
-             dt, ok ? "ok" : "TOO COARSE", estimate.timestep());
-  if (!ok) {
-    // the contact integrated inside the step instead (ContactStepsOptions)
-    const ContactSteps per(kDefaultAccuracy);
-    fmt::print(out,
-               "  or --contact-steps auto: {:.0f} sub-steps of its normal law inside each {} s "
-               "step near and in this contact ({:.0f} per contact; friction stays at the step)\n",
-               std::ceil(dt / per.NormalStep(law.law, estimate.contact_duration)), dt,
-               per.PerContact(law.law));
-  }
-  return !ok || side_coarse;
-}
-
-void PrintDrives(const Simulation& sim, std::FILE* out) {
-  const mjModel* m = sim.model();
-  const ContactModel& cm = sim.contact_model();
-  fmt::print(out, "\n{} driven bod{}\n", cm.drives().size(), cm.drives().size() == 1 ? "y" : "ies");
-  for (const Drive& drive : cm.drives()) {
-    if (drive.motion == Drive::Motion::kLinear) {
-      fmt::print(out, "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m/s * t\n",
-                 drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
-                 drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.speed);
-      continue;
-    }
-    fmt::print(out,
-               "contactdrive:{}: body {}, p(t) = ({}, {}, {}) + ({}, {}, {}) * {} m * sin({} rad/s "
-               "* t + {} rad), top speed {:.6g} m/s\n",
-               drive.label, ObjectName(m, mjOBJ_BODY, drive.body), drive.ref[0], drive.ref[1],
-               drive.ref[2], drive.axis[0], drive.axis[1], drive.axis[2], drive.amplitude,
-               drive.omega, drive.phase, std::abs(drive.amplitude * drive.omega));
-  }
+app::CheckInput InputOf(const CheckArgs& args) {
+  app::CheckInput input;
+  input.law = args.law;
+  input.restitution = ValueOf(args.restitution);
+  input.dissipation = ValueOf(args.dissipation);
+  input.friction = args.friction;
+  input.mu = ValueOf(args.mu);
+  input.timestep = ValueOf(args.timestep);
+  input.accuracy = ValueOf(args.accuracy);
+  input.impact_velocity = ValueOf(args.impact_velocity);
+  return input;
 }
 
 }  // namespace
 
 int CheckCommand(const CheckArgs& args) {
-  SimulationOptions options;
-  ParseLawOverrides(args.law, args.restitution, &options.overrides);
-  if (args.dissipation) options.overrides.dissipation = ParseDissipation(*args.dissipation);
-  ParseFrictionOverrides(args.friction, args.mu, &options.overrides);
-  // auto (or --accuracy): the contact steps are the auto timestep's;
-  // otherwise a fixed step
-  std::optional<double> accuracy;
-  if (args.accuracy) accuracy = ParseAccuracy(*args.accuracy, args.timestep);
-  if (args.timestep && *args.timestep == "auto" && !accuracy) accuracy = kDefaultAccuracy;
-  if (args.timestep && !accuracy) {
-    options.timestep = ParsePositive("--timestep", *args.timestep, "s");
-  }
-  std::optional<double> impact_velocity;
-  if (args.impact_velocity) {
-    impact_velocity = ParsePositive("--impact-velocity", *args.impact_velocity, "m/s");
-  }
+  const app::CheckRequest request = app::ReadCheck(Flags(), InputOf(args));
   const Scene scene(args.scene);
-  std::unique_ptr<Simulation> sim = scene.Make(options);
+  std::unique_ptr<Simulation> sim = scene.Make(request.options);
   std::set<std::string> warned;
   WarnAboutTags(sim->contact_model(), &warned);
-  const std::vector<StartContact> starts = StartContacts(sim.get());  // calls mj_forward
-  std::FILE* out = args.report;
-  PrintSettings(*sim, out);
-  int coarse = 0;
-  const int tags = static_cast<int>(sim->contact_model().tags().size());
-  fmt::print(out, "\n{} contactlaw tag(s)\n", tags);
-  for (int t = 0; t < tags; ++t) {
-    coarse += PrintTag(sim.get(), t, starts, impact_velocity, accuracy, out);
-  }
-  PrintDrives(*sim, out);
-  if (coarse) {
-    fmt::print(out, "\nwarning: {} tag(s) need a smaller timestep (--timestep)\n", coarse);
-  }
+  std::fputs(app::Check(sim.get(), request, Flags()).text.c_str(), args.report);
   return 0;
 }
 

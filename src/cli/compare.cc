@@ -3,44 +3,23 @@
 #include "cli/commands.h"
 
 #include <cstdio>
-#include <iterator>
-#include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
-#include "cli/csv_file.h"
+#include "app/compare_job.h"
 #include "app/impact_table.h"
+#include "cli/cluster.h"
 #include "cli/csv_file.h"
-#include "cli/report.h"
 #include "cli/sweep.h"
-#include "sim/summary.h"
-#include "sim/timestep_advice.h"
 
 namespace contactlaws::cli {
 namespace {
 
-// A law that reads no restitution once (an elastic one at e = 1); every other
-// law at each restitution (the scene's if none given); each of those with
-// every friction model of --frictions (the scene's if none given).
-std::vector<RunSpec> CompareSpecs(const std::vector<LawId>& laws,
-                                  const std::vector<double>& restitutions,
-                                  const std::vector<FrictionKind>& frictions) {
-  std::vector<RunSpec> specs;
-  auto add = [&](LawId law, std::optional<double> e) {
-    if (frictions.empty()) specs.push_back({law, e, std::nullopt});
-    for (const FrictionKind friction : frictions) specs.push_back({law, e, friction});
-  };
-  for (const LawId law : laws) {
-    if (!ReadsRestitution(law)) {
-      add(law, IsElastic(law) ? std::optional<double>(1.0) : std::nullopt);
-    } else if (restitutions.empty()) {
-      add(law, std::nullopt);
-    } else {
-      for (const double e : restitutions) add(law, e);
-    }
-  }
-  return specs;
-}
+using app::RunOutput;
+using app::RunSpec;
+using app::StatusName;
+using app::SummaryColumns;
 
 // law, restitution, and friction when the runs compare friction models.
 std::vector<std::string> RunColumns(bool frictions) {
@@ -112,97 +91,37 @@ class CompareFiles {
   CsvFile summary_;
 };
 
-// True when a tagged pair of model can have friction (its larger condim > 1).
-bool HasFriction(const ContactModel& model) {
-  for (const GeomPair& pair : model.pairs()) {
-    if (pair.condim > 1) return true;
-  }
-  return false;
-}
 
-// The run's first cells: law, restitution, and the friction model when the
-// runs compare them.
-std::string RunCells(const RunSpec& spec, const std::string& restitution, bool frictions) {
-  std::string cells = fmt::format("{:<20} {:>11}", LawName(spec.law), restitution);
-  if (frictions) {
-    cells += fmt::format(" {:<11}", spec.friction ? FrictionName(*spec.friction) : "");
-  }
-  return cells;
-}
 
 }  // namespace
 
-std::string CompareTableText(const std::vector<CompareRow>& rows, bool frictions) {
-  std::string text;
-  auto out = std::back_inserter(text);
-  fmt::format_to(out, "{:<20} {:>11}{} {:>10} {:>12} {:>14} {:>14} {:>13} {:>13} {:>15}\n", "law",
-                 "restitution", frictions ? fmt::format(" {:<11}", "friction") : "", "collisions",
-                 "first e_post", "max depth (m)", "max force (N)", "duration (s)", "at rest (s)",
-                 "dissipated (J)");
-  for (const CompareRow& r : rows) {
-    const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
-    if (r.status != RunOutput::Status::kOk) {
-      fmt::format_to(out, "{} {}\n", cells, StatusName(r.status));
-      continue;
-    }
-    fmt::format_to(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
-                   r.s.impacts, Cell(r.s.restitution_post, "{:.6f}"), r.s.max_depth, r.s.max_force,
-                   Cell(r.s.contact_duration, "{:.6g}"), Cell(r.s.time_to_rest, "{:.6g}"),
-                   r.dissipated);
-  }
-  return text;
-}
 
-std::vector<std::string> SummaryColumns() {
-  return {"impacts",           "restitution_post", "max_depth", "max_force", "contact_duration",
-          "time_to_rest",      "dissipated_energy", "status",   "reason"};
-}
-
-ComparePlan PlanCompare(const SweepArgs& args) {
-  ComparePlan plan;
-  plan.in = ReadSweepInputs(args, nullptr);
-  const SweepInputs& in = plan.in;
-  const SimulationOptions& options = in.common.simulation;
-  plan.specs = CompareSpecs(in.laws, in.restitutions, in.frictions);
-  plan.frictions = !in.frictions.empty();
-  plan.advices = Prepare(*in.scene, options, plan.specs, in.common.auto_timestep.has_value());
-  plan.first = in.scene->Make(OptionsFor(options, plan.specs.front()));
-  ReportSettle(*plan.first);
-  if (plan.frictions && !HasFriction(plan.first->contact_model())) {
-    Warn(in.scene->path(), "--frictions: every tagged pair is frictionless (condim 1, as in "
-                           "MuJoCo): the friction models do not act");
-  }
-  SweepOptions& sweep = plan.sweep;
-  sweep.advance.duration = in.common.duration;
-  sweep.advance.sample_rate = in.common.sample_rate;
-  sweep.advance.auto_timestep = in.common.auto_timestep;
-  sweep.advance.stop = &stop_signal;
-  sweep.record = true;
-  sweep.impact_rows =
-      args.impacts_per_point ? app::ImpactRows::kPointEpisodes : app::ImpactRows::kImpacts;
-  sweep.jobs = in.jobs;
-  sweep.quiet = args.quiet;
-  return plan;
-}
 
 int CompareCommand(const SweepArgs& args) {
-  const ComparePlan plan = PlanCompare(args);
+  ProgramMonitor monitor(args.quiet);
+  app::ComparePlan plan =
+      app::PlanCompare(Flags(), args.scene, InputOf(args), args.impacts_per_point, &monitor);
+  plan.sweep.advance.stop = &stop_signal;
+  plan.sweep.spread = ClusterSpread();
+  if (plan.sweep.spread) SetThreadsPerRank(plan.sweep.jobs);
   const Scene& scene = *plan.in.scene;
   CompareFiles files(args.output_dir, plan.first->Columns(),
                      TableColumns(app::ImpactTable(*plan.first, {})), plan.frictions);
-  std::vector<CompareRow> rows;
-  const int status = Sweep(scene, plan.in.common.simulation, plan.specs, plan.advices, plan.sweep,
-                           [&](int k, RunOutput& out) {
-                             files.Write(plan.specs[k], out);
-                             rows.push_back({plan.specs[k], out.status, out.restitution,
-                                             out.summary, out.dissipated});
-                           });
+  std::vector<app::CompareRow> rows;
+  const app::SweepStatus status =
+      app::Sweep(scene, plan.in.common.simulation, plan.specs, plan.advices, plan.sweep, Flags(),
+                 &monitor, [&](int k, app::RunOutput& out) {
+                   files.Write(plan.specs[k], out);
+                   rows.push_back({plan.specs[k], out.status, out.restitution, out.summary,
+                                   out.dissipated});
+                 });
+  const int exit = ExitStatus(status);
   files.Commit();
 
-  std::fputs(CompareTableText(rows, plan.frictions).c_str(), args.report);
+  std::fputs(app::CompareTableText(rows, plan.frictions).c_str(), args.report);
   fmt::print(args.report, "wrote {0}/trajectories.csv, {0}/impacts.csv, {0}/summary.csv\n",
              args.output_dir);
-  return status;
+  return exit;
 }
 
 }  // namespace contactlaws::cli

@@ -14,37 +14,18 @@
 #include <string_view>
 #include <vector>
 
+#include "app/csv_text.h"
 #include "app/table.h"
 
 namespace contactlaws::cli {
 
-// Appends a finite double as fmt's "{}" writes it, byte for byte: the
-// shortest digits that read back to the same double, in fixed notation for
-// a decimal exponent in [-4, 16) ("0.0001", "1500", "2.5") and else as
-// d[.ddd]e+XX ("1e-05", "1.5e+16"). From std::to_chars' shortest scientific
-// form (C++17), a third of fmt's cost on a trajectory's rows.
-void AppendShortest(std::string* out, double value);
-
-// Appends one CSV line of preformatted fields to out; a field holding a comma,
-// a double quote or a line break is quoted (RFC 4180).
-void AppendFields(std::string* out, const std::vector<std::string>& fields);
-
-// Appends one CSV line: the preformatted prefix fields, then numbers in their
-// shortest exact form. Returns false, appending nothing, when a number is NaN
-// or infinite (no such value is ever written).
-bool AppendRow(std::string* out, const std::vector<std::string>& prefix,
-               const std::vector<double>& values);
-
-// A number in its shortest exact form; an empty field for what is not known
-// (nullopt, NaN, an infinity), and 0 for -0.
-std::string Field(double value);
-std::string Field(const std::optional<double>& value);
-
-// Row i of table as CSV fields: text as it is, numbers as Field.
-std::vector<std::string> TableFields(const app::Table& table, size_t i);
-
-// The names of table's columns.
-std::vector<std::string> TableColumns(const app::Table& table);
+// The results' CSV text (app/csv_text.h), as the files write it.
+using app::AppendFields;
+using app::AppendRow;
+using app::AppendShortest;
+using app::Field;
+using app::TableColumns;
+using app::TableFields;
 
 // Whether two output paths name one file ("-" is standard output; a file
 // that does not exist yet is compared by its absolute, normal path).

@@ -13,89 +13,59 @@
 
 namespace contactlaws::cli {
 
-namespace {
-
-// "P,A" or "P,A,J", each >= 0.
-ScoreWeights ParseWeights(const std::string& text) {
-  std::vector<double> w;
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t comma = text.find(',', start);
-    const std::string part = text.substr(start, comma - start);
-    const std::optional<double> v = ParseNumber(part);
-    if (!v || *v < 0) Refuse("--weights", text, "must be P,A or P,A,J: numbers >= 0");
-    w.push_back(*v);
-    start = comma == std::string::npos ? text.size() + 1 : comma + 1;
-  }
-  if (w.size() < 2 || w.size() > 3) Refuse("--weights", text, "must be P,A or P,A,J: numbers >= 0");
-  return {w[0], w[1], w.size() == 3 ? w[2] : 0.0};
+app::ReplayInput InputOf(const ReplayArgs& args) {
+  app::ReplayInput input;
+  static_cast<app::CommonInput&>(input) = InputOf(static_cast<const CommonArgs&>(args));
+  input.start = args.start;
+  input.refit_height = ValueOf(args.refit_height);
+  input.refit_lead = args.refit_lead;
+  input.refit_min_samples = args.refit_min_samples;
+  input.metric = args.metric;
+  input.weights = args.weights;
+  input.length = ValueOf(args.length);
+  input.jobs = ValueOf(args.jobs);
+  input.law = args.law;
+  input.restitution = ValueOf(args.restitution);
+  input.set = args.set;
+  input.seed = args.seed;
+  return input;
 }
 
-int ParseCount(std::string_view option, const std::string& text, long lo) {
-  const std::optional<long> v = ParseWholeNumber(text, lo, 1000000);
-  if (!v) Refuse(option, text, fmt::format("must be a whole number in [{}, 1000000]", lo));
-  return static_cast<int>(*v);
+app::FitInput InputOf(const FitArgs& args) {
+  app::FitInput input;
+  static_cast<app::ReplayInput&>(input) = InputOf(static_cast<const ReplayArgs&>(args));
+  input.params = args.params;
+  input.initial = args.initial;
+  input.laws = args.laws;
+  input.frictions = args.frictions;
+  input.budget = args.budget;
+  input.folds = ValueOf(args.folds);
+  input.trim = ValueOf(args.trim);
+  input.profile = args.profile;
+  input.profile_points = ValueOf(args.profile_points);
+  input.profile_budget = ValueOf(args.profile_budget);
+  return input;
 }
-
-}  // namespace
 
 ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Metric* metric) {
-  ReplayOptions options;
-  const std::optional<Metric> m = ParseMetric(args.metric);
-  if (!m) Refuse("--metric", args.metric, "must be e_q, position_rms, angle_rms or weighted");
-  *metric = *m;
-  if (args.weights && *m != Metric::kWeighted) {
-    Refuse("--weights", *args.weights, "goes with --metric weighted");
-  }
-  if (args.weights) options.weights = ParseWeights(*args.weights);
-  if (args.length) options.length = ParsePositive("--length", *args.length, "m");
-
-  CommonOptions common = ParseCommon(args);
-  options.simulation = common.simulation;
-  // the laws need the contact-aware step; MuJoCo's own contact its scene's
-  bool tagged = false;
-  for (int i = 0; i < scene.model()->ntext; ++i) {
-    const char* name = scene.model()->names + scene.model()->name_textadr[i];
-    tagged = tagged || std::string_view(name).rfind(kPairTagPrefix, 0) == 0;
-  }
-  options.auto_timestep = common.auto_timestep;
-  if (!args.timestep && !options.auto_timestep && tagged) options.auto_timestep.emplace();
-  ParseLawOverrides(args.law, args.restitution, &options.simulation.overrides);
-  for (const std::string& word : args.set) {
-    const size_t eq = word.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == word.size()) {
-      Refuse("--set", word, "must be KEY=VALUE, a contactlaw tag key and its value");
-    }
-    options.simulation.overrides.keys.emplace_back(word.substr(0, eq), word.substr(eq + 1));
-  }
-
-  if (args.start == "refit") {
-    options.start = StartRule::kRefit;
-  } else if (args.start != "first") {
-    Refuse("--start", args.start, "must be first or refit");
-  }
-  if (args.refit_height) options.refit.height = ParseOption("--refit-height", *args.refit_height);
-  options.refit.lead = ParseCount("--refit-lead", args.refit_lead, 0);
-  options.refit.min_samples = ParseCount("--refit-min-samples", args.refit_min_samples, 2);
-  options.jobs = Jobs(args.jobs);
+  ReplayOptions options = app::ReadReplayOptions(Flags(), InputOf(args), scene, metric);
   options.spread = ClusterSpread();
   SetThreadsPerRank(options.jobs);
   return options;
 }
 
-uint64_t ParseSeed(const std::string& text) {
-  const std::optional<long> seed = ParseWholeNumber(text, 0, 4294967295L);
-  if (!seed) Refuse("--seed", text, "must be a whole number in [0, 4294967295]");
-  return static_cast<uint64_t>(*seed);
-}
+uint64_t ParseSeed(const std::string& text) { return app::ReadSeed(Flags(), text); }
 
-MeasuredData DataOf(const ReplayArgs& args) {
-  return args.measured ? *args.measured : ReadData("--data", args.data);
-}
+MeasuredData DataOf(const ReplayArgs& args) { return app::ReadData(Flags(), "data", args.data); }
 
-MeasuredData ReadData(const std::string& option, const std::string& path) {
-  if (path.empty()) Refuse(option, path, "must name a trajectory file");
-  return ReadMeasuredData(path);
+app::FitRequest ParseFitRequest(const FitArgs& args, const Scene& scene,
+                                const MeasuredData& train_data,
+                                std::vector<std::string>* offset_lines) {
+  app::FitRequest request =
+      app::ReadFitRequest(Flags(), InputOf(args), scene, train_data, offset_lines);
+  request.base.spread = ClusterSpread();
+  SetThreadsPerRank(request.base.jobs);
+  return request;
 }
 
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/fit_job.h"
+#include "app/identify_options.h"
 #include "app/replay_job.h"
 #include "cli/csv_file.h"
 #include "cli/options.h"
@@ -21,8 +22,6 @@ namespace contactlaws::cli {
 // replay's options; fit takes them all.
 struct ReplayArgs : CommonArgs {
   std::string data;                    // the measured trajectories
-  // in place of data's file: trajectories already read (Python's DataFrame)
-  std::optional<MeasuredData> measured;
   std::optional<std::string> output;   // DIR
   std::string start = "first";         // first or refit
   std::optional<std::string> refit_height;
@@ -55,30 +54,27 @@ struct FitArgs : ReplayArgs {
   std::optional<std::string> profile_budget;  // the others re-fitted at each point
 };
 
+// The options as the grammar takes them (app/identify_options.h): the same
+// text.
+app::ReplayInput InputOf(const ReplayArgs& args);
+app::FitInput InputOf(const FitArgs& args);
+
 // --seed, or Refuse.
 uint64_t ParseSeed(const std::string& text);
 
-// The replay options of args (the scene's tags read later, by Replay::Run):
-// the law and friction overrides, --set, the timestep (auto unless
-// --timestep is given or the scene has no contactlaw tag), the start rule,
-// the weights, the jobs. metric: the metric chosen.
+// app::ReadReplayOptions under the flags, spread over the ranks of a
+// cluster job. metric: the metric chosen.
 ReplayOptions ParseReplayOptions(const ReplayArgs& args, const Scene& scene, Metric* metric);
 
-// The measured data of path, bound to scene by Replay's constructor.
-MeasuredData ReadData(const std::string& option, const std::string& path);
-
-// args.measured, else ReadData("--data", args.data).
+// The trajectories of --data.
 MeasuredData DataOf(const ReplayArgs& args);
 
-// fit's request of args (every option but the stop and the progress): the
-// parameters (GEOM.offset=rest bounded by the data's estimate, whose lines
-// go to offset_lines), the combinations, the budget, folds, trim, profile.
+// app::ReadFitRequest under the flags, spread over the ranks of a cluster
+// job: every option but the stop and the progress; offset_lines: what
+// GEOM.offset=rest estimated.
 app::FitRequest ParseFitRequest(const FitArgs& args, const Scene& scene,
                                 const MeasuredData& train_data,
                                 std::vector<std::string>* offset_lines);
-// The job of request, its refusals under --params.
-app::FitJob CheckedFitJob(const Scene& scene, const MeasuredData& train,
-                          const MeasuredData* validate, app::FitRequest request);
 
 // The simulated samples in the data's own columns (trajectories.csv).
 void WriteSimulated(const MeasuredData& data, const app::SimulatedSamples& simulated,

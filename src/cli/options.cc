@@ -13,281 +13,114 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "laws/param_range.h"
-#include "scene/number.h"
 #include "scene/tags.h"
 
 namespace contactlaws::cli {
 namespace {
 
-// Longest restitution list a range may expand to.
-constexpr long kMaxListLength = 100000;
-
-std::vector<std::string_view> Split(std::string_view text, char separator) {
-  std::vector<std::string_view> parts;
-  size_t start = 0;
-  while (true) {
-    const size_t end = text.find(separator, start);
-    parts.push_back(text.substr(start, end == std::string_view::npos ? end : end - start));
-    if (end == std::string_view::npos) return parts;
-    start = end + 1;
-  }
-}
-
-// The whole of text as a finite number, or Refuse.
-double Number(std::string_view option, std::string_view text, std::string_view whole) {
-  const std::optional<double> value = ParseNumber(text);
-  if (!value) Refuse(option, whole, fmt::format("has '{}', which is not a finite number", text));
-  return *value;
-}
-
-double Round12(double v) { return std::round(v * 1e12) / 1e12; }
-
-// --columns' words, in the order of the trajectory's column groups.
-constexpr std::array<const char*, 5> kColumnGroupNames = {"bodies", "joints", "pairs", "friction",
-                                                          "energy"};
-
-// "bodies,joints,pairs,friction,energy" (any of them, no repeats) as
-// ColumnGroups; nullopt, with the word at fault in *bad, for anything else.
-std::optional<ColumnGroups> ParseColumnGroups(std::string_view text, std::string* bad) {
-  ColumnGroups groups{false, false, false, false, false};
-  const std::pair<const char*, bool ColumnGroups::*> names[] = {
-      {kColumnGroupNames[0], &ColumnGroups::bodies},
-      {kColumnGroupNames[1], &ColumnGroups::joints},
-      {kColumnGroupNames[2], &ColumnGroups::pairs},
-      {kColumnGroupNames[3], &ColumnGroups::friction},
-      {kColumnGroupNames[4], &ColumnGroups::energy}};
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t end = std::min(text.find(',', start), text.size());
-    const std::string_view word = text.substr(start, end - start);
-    auto found = std::find_if(std::begin(names), std::end(names),
-                              [&](const auto& n) { return word == n.first; });
-    if (found == std::end(names) || groups.*found->second) {
-      *bad = std::string(word);
-      return std::nullopt;
-    }
-    groups.*found->second = true;
-    start = end + 1;
-  }
-  return groups;
+// "--max-timestep" -> "max_timestep".
+std::string KeyOf(std::string_view option) {
+  if (option.substr(0, 2) == "--") option.remove_prefix(2);
+  std::string key(option);
+  std::replace(key.begin(), key.end(), '-', '_');
+  return key;
 }
 
 }  // namespace
+
+std::optional<app::Value> ValueOf(const std::optional<std::string>& text) {
+  if (!text) return std::nullopt;
+  return app::Value(*text);
+}
+
+std::string FlagSpelling(std::string_view key) {
+  std::string flag = "--" + std::string(key);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+namespace {
+std::string FlagGiven(std::string_view key, std::string_view word) {
+  return FlagSpelling(key) + " " + std::string(word);
+}
+}  // namespace
+
+const app::OptionReader& Flags() {
+  static const app::OptionReader flags({&FlagSpelling, &FlagGiven, &FlagSpelling});
+  return flags;
+}
+
+app::CommonInput InputOf(const CommonArgs& args) {
+  app::CommonInput input;
+  input.duration = args.duration;
+  input.timestep = ValueOf(args.timestep);
+  input.max_timestep = ValueOf(args.max_timestep);
+  input.accuracy = ValueOf(args.accuracy);
+  input.integrator = args.integrator;
+  input.sample_rate = args.sample_rate;
+  input.columns = args.columns;
+  input.dissipation = ValueOf(args.dissipation);
+  input.friction = args.friction;
+  input.mu = ValueOf(args.mu);
+  input.settle = args.settle;
+  input.contact_steps = ValueOf(args.contact_steps);
+  return input;
+}
 
 void Refuse(std::string_view option, std::string_view value, std::string_view requirement) {
   throw Error(fmt::format("{}={} {}", option, value, requirement));
 }
 
 double ParseOption(std::string_view option, std::string_view text) {
-  const std::optional<double> value = ParseNumber(text);
-  if (!value) Refuse(option, text, "is not a finite number");
-  return *value;
+  return Flags().Number(KeyOf(option), std::string(text));
 }
 
 double ParsePositive(std::string_view option, std::string_view text, std::string_view unit) {
-  const double value = ParseOption(option, text);
-  if (!(value > 0)) {
-    Refuse(option, fmt::format("{}", value), fmt::format("must be a number > 0 ({})", unit));
-  }
-  return value;
+  return Flags().Positive(KeyOf(option), std::string(text), unit);
 }
 
-int ParseIntegrator(std::string_view name) {
-  if (name == "euler") return mjINT_EULER;
-  if (name == "rk4") return mjINT_RK4;
-  if (name == "implicit") return mjINT_IMPLICIT;
-  Refuse("--integrator", name, "must be euler, rk4 or implicit");
-}
+int ParseIntegrator(std::string_view name) { return Flags().Integrator(name); }
 
-ColumnGroups ParseColumns(std::string_view text) {
-  std::string bad;
-  const std::optional<ColumnGroups> groups = ParseColumnGroups(text, &bad);
-  if (groups) return *groups;
-  const bool known = std::find(kColumnGroupNames.begin(), kColumnGroupNames.end(), bad) !=
-                     kColumnGroupNames.end();
-  Refuse("--columns", text,
-         known ? fmt::format("names {} twice", bad)
-               : fmt::format("has '{}', which is not a group ({})", bad,
-                             fmt::join(kColumnGroupNames, ", ")));
-}
+ColumnGroups ParseColumns(std::string_view text) { return Flags().Columns(text); }
 
 double ParseAccuracy(const std::string& text, const std::optional<std::string>& timestep) {
-  const std::optional<double> value = ParseNumber(text);
-  if (!value || !(*value > 0 && *value <= kMaxAccuracy)) {
-    Refuse("--accuracy", value ? fmt::format("{}", *value) : text,
-           fmt::format("must be a number in (0, {}] (relative error)", kMaxAccuracy));
-  }
-  if (timestep && *timestep != "auto") {
-    Refuse("--accuracy", fmt::format("{}", *value),
-           fmt::format("goes with --timestep auto, not with the fixed --timestep={}", *timestep));
-  }
-  return *value;
+  return Flags().Accuracy(text, ValueOf(timestep));
 }
 
-CommonOptions ParseCommon(const CommonArgs& args) {
-  CommonOptions options;
-  options.duration = ParsePositive("--duration", args.duration, "s");
-  options.sample_rate = ParsePositive("--sample-rate", args.sample_rate, "rows per simulated second");
-  // --accuracy alone asks for the auto timestep; with a fixed one it is refused
-  const bool fixed = args.timestep && *args.timestep != "auto";
-  const bool auto_timestep = (args.timestep && !fixed) || (!args.timestep && args.accuracy);
-  if (fixed) {
-    if (!ParseNumber(*args.timestep)) {
-      Refuse("--timestep", *args.timestep, "must be a number > 0 (s) or auto");
-    }
-    options.simulation.timestep = ParsePositive("--timestep", *args.timestep, "s");
-  }
-  if (args.max_timestep && !auto_timestep) {
-    const std::optional<double> value = ParseNumber(*args.max_timestep);
-    Refuse("--max-timestep", value ? fmt::format("{}", *value) : *args.max_timestep,
-           "goes with --timestep auto");
-  }
-  if (args.accuracy) ParseAccuracy(*args.accuracy, args.timestep);
-  if (auto_timestep) {
-    options.auto_timestep.emplace();
-    if (args.max_timestep) {
-      options.auto_timestep->max_step = ParsePositive("--max-timestep", *args.max_timestep, "s");
-    }
-    if (args.accuracy) options.auto_timestep->accuracy = ParseAccuracy(*args.accuracy, args.timestep);
-  }
-  if (args.integrator) options.simulation.integrator = ParseIntegrator(*args.integrator);
-  if (args.contact_steps) {
-    if (auto_timestep) Refuse("--contact-steps", *args.contact_steps, "goes with a fixed timestep");
-    options.simulation.contact_steps.substeps = ParseContactStepsOption(*args.contact_steps);
-  }
-  options.simulation.settle = args.settle;
-  if (args.columns) options.simulation.columns = ParseColumns(*args.columns);
-  if (args.dissipation) {
-    options.simulation.overrides.dissipation = ParseDissipation(*args.dissipation);
-  }
-  ParseFrictionOverrides(args.friction, args.mu, &options.simulation.overrides);
-  return options;
-}
+CommonOptions ParseCommon(const CommonArgs& args) { return Flags().Common(InputOf(args)); }
 
-int ParseContactStepsOption(const std::string& text) {
-  const std::optional<int> substeps = ParseContactSteps(text);
-  if (!substeps) Refuse("--contact-steps", text, kContactStepsRequirement);
-  return *substeps;
-}
+int ParseContactStepsOption(const std::string& text) { return Flags().ContactSteps(text); }
 
 void ParseFrictionOverrides(const std::optional<std::string>& friction,
                             const std::optional<std::string>& mu, Overrides* overrides) {
-  if (friction) {
-    overrides->friction = ParseFrictionName(*friction);
-    if (!overrides->friction) {
-      Refuse("--friction", *friction,
-             fmt::format("is not a friction model ({}){}", FrictionNameList(),
-                         FrictionSuggestion(*friction)));
-    }
-  }
-  if (mu) {
-    const double value = ParseOption("--mu", *mu);
-    if (!kNonNegativeRange.Contains(value)) {
-      Refuse("--mu", fmt::format("{}", value), kNonNegativeRange.Requirement());
-    }
-    overrides->mu = value;
-  }
+  Flags().FrictionOverrides(friction, ValueOf(mu), overrides);
 }
 
 void ParseLawOverrides(const std::optional<std::string>& law,
                        const std::optional<std::string>& restitution, Overrides* overrides) {
-  if (law) overrides->law = ParseLaw("--law", *law);
-  if (restitution) overrides->restitution = ParseRestitution("--restitution", *restitution);
+  Flags().LawOverrides(law, ValueOf(restitution), overrides);
 }
 
 LawId ParseLaw(std::string_view option, std::string_view name) {
-  const std::optional<LawId> law = ParseLawName(name);
-  if (!law) {
-    Refuse(option, name, fmt::format("is not a law ({}){}", LawNameList(), LawSuggestion(name)));
-  }
-  return *law;
+  return Flags().Law(KeyOf(option), name);
 }
-
-namespace {
-
-// Names separated by commas, each read by parse (nullopt: not `what`, one of
-// `names`, with suggest's hint), none twice; "all" is every one, all.
-template <typename Kind>
-std::vector<Kind> ParseNameList(std::string_view option, std::string_view text,
-                                std::string_view what, const std::string& names,
-                                const std::vector<Kind>& all,
-                                std::optional<Kind> (*parse)(std::string_view),
-                                std::string (*suggest)(std::string_view)) {
-  if (text == "all") return all;
-  std::vector<Kind> kinds;
-  for (std::string_view name : Split(text, ',')) {
-    const std::optional<Kind> kind = parse(name);
-    if (!kind) {
-      Refuse(option, text, fmt::format("has '{}', which is not {} (all, {}){}", name, what,
-                                       names, suggest(name)));
-    }
-    if (std::find(kinds.begin(), kinds.end(), *kind) != kinds.end()) {
-      Refuse(option, text, fmt::format("names {} twice", name));
-    }
-    kinds.push_back(*kind);
-  }
-  return kinds;
-}
-
-}  // namespace
 
 std::vector<LawId> ParseLawList(std::string_view option, std::string_view text) {
-  return ParseNameList(option, text, "a law", LawNameList(), AllLaws(), &ParseLawName,
-                       &LawSuggestion);
+  return Flags().LawList(KeyOf(option), text);
 }
 
 std::vector<FrictionKind> ParseFrictionList(std::string_view option, std::string_view text) {
-  std::vector<FrictionKind> all;
-  for (const FrictionInfo& model : FrictionModels()) all.push_back(model.kind);
-  return ParseNameList(option, text, "a friction model", FrictionNameList(), all,
-                       &ParseFrictionName, &FrictionSuggestion);
+  return Flags().FrictionList(KeyOf(option), text);
 }
 
-double ParseDissipation(std::string_view text) {
-  const double value = ParseOption("--dissipation", text);
-  if (!kNonNegativeRange.Contains(value)) {
-    Refuse("--dissipation", fmt::format("{}", value), kNonNegativeRange.Requirement("s/m"));
-  }
-  return value;
-}
+double ParseDissipation(std::string_view text) { return Flags().Dissipation(std::string(text)); }
 
 double ParseRestitution(std::string_view option, std::string_view text) {
-  const double value = ParseOption(option, text);
-  if (!kUnitRange.Contains(value)) {
-    Refuse(option, fmt::format("{}", value), kUnitRange.Requirement());
-  }
-  return value;
+  return Flags().Restitution(KeyOf(option), std::string(text));
 }
 
 std::vector<double> ParseRestitutionList(std::string_view option, std::string_view text) {
-  std::vector<double> values;
-  const std::vector<std::string_view> range = Split(text, ':');
-  if (range.size() == 3) {
-    const double start = Number(option, range[0], text);
-    const double stop = Number(option, range[1], text);
-    const double step = Number(option, range[2], text);
-    if (!(step > 0)) Refuse(option, text, "must have a step > 0 (start:stop:step)");
-    if (stop < start) Refuse(option, text, "must have start <= stop (start:stop:step)");
-    const double count = std::floor((stop - start) / step + 1e-9) + 1;
-    if (count > kMaxListLength) {
-      Refuse(option, text, fmt::format("expands to more than {} values", kMaxListLength));
-    }
-    for (long i = 0; i < static_cast<long>(count); ++i) values.push_back(Round12(start + i * step));
-  } else if (range.size() == 1) {
-    for (std::string_view item : Split(text, ',')) values.push_back(Number(option, item, text));
-  } else {
-    Refuse(option, text, "must be E1,E2,... or start:stop:step");
-  }
-  for (size_t i = 0; i < values.size(); ++i) {
-    if (!kUnitRange.Contains(values[i])) {
-      Refuse(option, text, fmt::format("has {}, outside {}", values[i], kUnitRange.bounds));
-    }
-    if (std::find(values.begin(), values.begin() + i, values[i]) != values.begin() + i) {
-      Refuse(option, text, fmt::format("has {} twice", values[i]));
-    }
-  }
-  return values;
+  return Flags().RestitutionList(KeyOf(option), std::string(text));
 }
 
 CLI::Option* AddNumber(CLI::App* cmd, const std::string& name, std::string* value,

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/options.h"
 #include "contactlaws/contactlaws.h"
 
 namespace CLI {
@@ -39,14 +40,20 @@ struct CommonArgs {
   std::optional<std::string> contact_steps;  // "auto" or a count of sub-steps
 };
 
-// What SimulationOptions leave out of the common options: the run's length
-// and sampling, and the auto timestep when asked for.
-struct CommonOptions {
-  SimulationOptions simulation;
-  double duration = 0;     // s
-  double sample_rate = 0;  // rows per simulated second
-  std::optional<AutoTimestepOptions> auto_timestep;
-};
+using app::CommonOptions;
+using app::kDefaultRestitutions;
+
+// The options' grammar (app/options.h) spelling each key as the command
+// line's flag: "max_timestep" -> "--max-timestep", given a word "--timestep
+// auto", a switch "--settle".
+std::string FlagSpelling(std::string_view key);
+const app::OptionReader& Flags();
+
+// An option's text as the grammar takes it.
+std::optional<app::Value> ValueOf(const std::optional<std::string>& text);
+
+// The common options as the grammar takes them: the same text.
+app::CommonInput InputOf(const CommonArgs& args);
 
 // Throws Error "OPTION=VALUE REQUIREMENT".
 [[noreturn]] void Refuse(std::string_view option, std::string_view value,
@@ -64,28 +71,28 @@ auto UnderOption(std::string_view option, const F& f) -> decltype(f()) {
   }
 }
 
+// The grammar's readers (app::OptionReader) under their flags: OPTION is
+// the flag ("--mu"), each message word for word the grammar's.
+
 // The number text, or Refuse: "OPTION=TEXT is not a finite number".
 double ParseOption(std::string_view option, std::string_view text);
 
 // A number > 0, or Refuse: "OPTION=VALUE must be a number > 0 (UNIT)".
 double ParsePositive(std::string_view option, std::string_view text, std::string_view unit);
 
-// "bodies,joints,pairs,energy" or any of them: the trajectory's column groups.
+// --columns (OptionReader::Columns).
 ColumnGroups ParseColumns(std::string_view text);
 
-// --accuracy: a number in (0, kMaxAccuracy], or Refuse; refused too beside a
-// fixed --timestep (timestep: the --timestep given, if any).
+// --accuracy (OptionReader::Accuracy).
 double ParseAccuracy(const std::string& text, const std::optional<std::string>& timestep);
 
-// Validates the common options (overrides but --dissipation left empty; no
-// timestep for auto).
+// Validates the common options (OptionReader::Common).
 CommonOptions ParseCommon(const CommonArgs& args);
 
-// --contact-steps: "auto" (kContactStepsAuto) or a whole number >= 1 of
-// sub-steps, or Refuse.
+// --contact-steps (OptionReader::ContactSteps).
 int ParseContactStepsOption(const std::string& text);
 
-// "euler", "rk4", "implicit" -> mjtIntegrator.
+// --integrator (OptionReader::Integrator).
 int ParseIntegrator(std::string_view name);
 
 // --law and --restitution, when given, into overrides.
@@ -111,14 +118,8 @@ double ParseDissipation(std::string_view text);
 // A restitution in [0, 1].
 double ParseRestitution(std::string_view option, std::string_view text);
 
-// "E1,E2,..." or "start:stop:step" (stop included when it is on the grid, to
-// 1e-9 of a step). Values are rounded to 12 decimals, so 0.1:1.0:0.1 gives
-// exactly the doubles 0.1, 0.2, ..., 1. Each in [0, 1]; no repeats.
+// OptionReader::RestitutionList of the text.
 std::vector<double> ParseRestitutionList(std::string_view option, std::string_view text);
-
-// The restitutions of `laws` (text), and of `laws --format csv` when none are
-// given.
-inline constexpr char kDefaultRestitutions[] = "0.9,0.7,0.5,0.3,0.1";
 
 // The shared options declared to the command line (CLI11), each into its
 // field of the *Args above as text; a command's own are in main.cc.

@@ -18,15 +18,7 @@ namespace contactlaws::cli {
 // The line of what --settle moved, on stderr (nothing without it).
 void ReportSettle(const Simulation& sim);
 
-// How messages name the options: as the command line's flags, unless a
-// caller that names them otherwise (the Python module: keyword arguments)
-// sets its spelling, once, before any command runs. Warn's lines and the
-// caller's own messages pass through it.
-using Spelling = std::string (*)(const std::string& message);
-void SetSpelling(Spelling spelling);
-std::string Spelled(const std::string& message);
-
-// "contactlaws: warning: SCENE: WHAT" on stderr, WHAT Spelled.
+// "contactlaws: warning: SCENE: WHAT" on stderr.
 void Warn(const std::string& scene, const std::string& what);
 
 // The tags' own warnings (ContactModel::warnings: each names its file and

@@ -4,324 +4,82 @@
 
 #include <unistd.h>
 
-#include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <memory>
-#include <set>
-#include <type_traits>
 
 #include <fmt/format.h>
 
-#include "app/arena.h"
 #include "cli/cluster.h"
 #include "cli/commands.h"
-#include "cli/csv_file.h"
-#include "app/impact_table.h"
-#include "cli/parallel.h"
+#include "cli/mujoco_warnings.h"
 #include "cli/report.h"
-#include "ident/wire.h"
-#include "scene/number.h"
-#include "sim/start_contact.h"
 
 namespace contactlaws::cli {
-namespace {
 
-// The most runs at a time --jobs takes (an int).
-constexpr long kMaxJobs = 1L << 30;
+app::SweepInput InputOf(const SweepArgs& args) {
+  app::SweepInput input;
+  static_cast<app::CommonInput&>(input) = InputOf(static_cast<const CommonArgs&>(args));
+  input.laws = args.laws;
+  input.restitution = ValueOf(args.restitution);
+  input.frictions = args.frictions;
+  input.jobs = ValueOf(args.jobs);
+  return input;
+}
 
-// Progress lines on stderr, only when it is a terminal.
-class Progress {
- public:
-  Progress(int total, bool quiet) : total_(total), enabled_(!quiet && isatty(STDERR_FILENO)) {}
-  ~Progress() { Done(); }
-  // Ends the progress line, before anything else is printed.
-  void Done() {
-    if (enabled_ && started_) fmt::print(stderr, "\r\033[K");
-    started_ = false;
+ProgramMonitor::ProgramMonitor(bool quiet) : progress_(!quiet && isatty(STDERR_FILENO)) {}
+
+ProgramMonitor::~ProgramMonitor() { EndProgress(); }
+
+void ProgramMonitor::EndProgress() {
+  if (progress_ && started_) fmt::print(stderr, "\r\033[K");
+  started_ = false;
+}
+
+void ProgramMonitor::Warn(const std::string& scene, const std::string& what) {
+  EndProgress();
+  cli::Warn(scene, what);
+}
+
+void ProgramMonitor::TagWarning(const std::string& what) {
+  EndProgress();
+  if (WritesOutputs()) fmt::print(stderr, "contactlaws: warning: {}\n", what);
+}
+
+void ProgramMonitor::Note(const std::string& scene, const std::string& what) {
+  EndProgress();
+  fmt::print(stderr, "contactlaws: {}: {}\n", scene, what);
+}
+
+void ProgramMonitor::RunFailed(const std::string& scene, const std::string& run,
+                               const std::string& reason) {
+  EndProgress();
+  if (WritesOutputs()) {
+    fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene, run, reason);
   }
-  void Finished(int k, const std::string& what) {
-    if (!enabled_) return;
-    started_ = true;
-    fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, total_, what);
-    std::fflush(stderr);
-  }
-
- private:
-  int total_;
-  bool enabled_;
-  bool started_ = false;
-};
-
-RunOutput NotRun(const RunSpec& spec) {
-  RunOutput out;
-  out.status = RunOutput::Status::kNotRun;
-  out.reason = "interrupted before it started";
-  out.restitution = spec.restitution;
-  return out;
 }
 
-// One run of a sweep, on any thread. Refused input and divergence make a
-// failed run, not an exception: the sweep goes on.
-RunOutput Execute(const Scene& scene, const SimulationOptions& options, const RunSpec& spec,
-                  const std::vector<TimestepAdvice>& advice, const SweepOptions& sweep) {
-  RunOutput out;
-  out.restitution = spec.restitution;
-  try {
-    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
-    out.restitution = ReportedRestitution(spec.law, sim->contact_model().tags().front().restitution);
-    std::vector<std::string> prefix = {std::string(LawName(spec.law)), Field(out.restitution)};
-    if (spec.friction) prefix.emplace_back(FrictionName(*spec.friction));
-    std::function<void(const std::vector<double>&)> on_row;
-    if (sweep.record && sweep.keep_numbers) {
-      on_row = [&](const std::vector<double>& row) {
-        for (const double v : row) {
-          if (!std::isfinite(v)) {
-            throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
-                                    sim->time()));
-          }
-        }
-        out.rows.insert(out.rows.end(), row.begin(), row.end());
-      };
-    } else if (sweep.record) {
-      on_row = [&](const std::vector<double>& row) {
-        if (!AppendRow(&out.trajectory, prefix, row)) {
-          throw Error(fmt::format("t = {} s: a NaN or infinite value in the trajectory",
-                                  sim->time()));
-        }
-      };
-    }
-    const AdvanceResult result = Advance(sim.get(), sweep.advance, on_row);
-    double end_time = sim->time();
-    if (result.status == AdvanceResult::Status::kDiverged) {
-      out.status = RunOutput::Status::kFailed;
-      out.reason = "diverged at " + DivergenceMessage(*sim, *result.divergence, advice);
-      end_time = result.divergence->time;
-    } else if (result.status == AdvanceResult::Status::kInterrupted) {
-      out.status = RunOutput::Status::kInterrupted;
-      out.reason = fmt::format("interrupted at t = {:.6g} s", end_time);
-      return out;
-    }
-    out.warnings = RunWarnings(*sim, result);
-    if (sweep.record && sweep.keep_numbers) {
-      out.impact_table =
-          app::ImpactTable(*sim, app::ImpactsOf(sim->contacts(), sweep.impact_rows));
-    } else if (sweep.record) {
-      const app::Table impacts =
-          app::ImpactTable(*sim, app::ImpactsOf(sim->contacts(), sweep.impact_rows));
-      for (size_t i = 0; i < impacts.rows(); ++i) {
-        std::vector<std::string> fields = TableFields(impacts, i);
-        // law, restitution, then the friction model as in the trajectories
-        if (spec.friction) fields.emplace(fields.begin() + 2, FrictionName(*spec.friction));
-        AppendFields(&out.impacts, fields);
-      }
-    }
-    for (const Episode& impact : sim->contacts().impacts()) {
-      if (impact.tag == 0) {
-        out.first = impact;
-        break;
-      }
-    }
-    out.summary = Summarize(sim->contacts().impacts(), end_time);
-    out.dissipated = sim->contacts().DissipatedEnergy();
-  } catch (const Error& e) {
-    out.status = RunOutput::Status::kFailed;
-    out.reason = e.what();
-  }
-  return out;
+void ProgramMonitor::RunDone(int k, int count, const std::string& run) {
+  if (!progress_) return;
+  started_ = true;
+  fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, count, run);
+  std::fflush(stderr);
 }
 
-}  // namespace
-
-// RunOutput's fields for the exchange between the ranks of a job.
-template <typename Archive>
-void serialize(Archive& archive, RunOutput& out) {
-  static_assert(sizeof(RunOutput) == 488, "RunOutput changed: name its new field here");
-  archive(out.status, out.reason, out.warnings, out.restitution, out.trajectory, out.impacts,
-          out.rows, out.impact_table, out.summary, out.dissipated, out.first);
+void ProgramMonitor::RunFinished(const Simulation& sim) {
+  // reported with the run's warnings: not again as the program ends
+  for (const MujocoWarning& w : sim.Warnings()) NoteReportedMujocoWarning(w.text);
 }
 
-namespace {
+void ProgramMonitor::SweepDone() { EndProgress(); }
 
-// The runs of a cluster job: this rank's share computed (jobs at a time),
-// then every run's output, in order, on every rank.
-std::vector<RunOutput> RunShare(WorkSpread* spread, int count, int jobs,
-                                const std::function<RunOutput(int)>& work,
-                                const std::function<bool()>& should_stop,
-                                const std::function<RunOutput(int)>& skipped) {
-  std::vector<std::string> items(count);
-  std::vector<double> seconds(count);  // each of this rank's runs'
-  RunInOrder<RunOutput>(
-      count, jobs,
-      [&](int k) {
-        if (!spread->Mine(k, count)) return RunOutput();
-        const double start = ThreadSeconds();
-        RunOutput out = work(k);
-        seconds[k] = ThreadSeconds() - start;
-        return out;
-      },
-      [&](int k, RunOutput& out) {
-        if (spread->Mine(k, count)) items[k] = internal::Written(out);
-      },
-      should_stop, [&](int k) { return spread->Mine(k, count) ? skipped(k) : RunOutput(); });
-  spread->Share(&items, seconds);
-  std::vector<RunOutput> outputs;
-  outputs.reserve(count);
-  for (const std::string& item : items) outputs.push_back(internal::Read<RunOutput>(item));
-  return outputs;
-}
-
-}  // namespace
-
-namespace {
-
-// --laws all: a law that needs a dissipation nobody gave (neither the scene's
-// tags nor --dissipation) is left out with a warning, not refused; named in
-// --laws, it is refused as any bad input is.
-void LeaveOutLawsMissingADissipation(SweepInputs* in) {
-  if (in->common.simulation.overrides.dissipation) return;
-  std::vector<LawId> kept;
-  for (const LawId law : in->laws) {
-    if (ReadsDissipation(law)) {
-      try {
-        RunSpec spec{law, std::nullopt, std::nullopt};
-        in->scene->Make(OptionsFor(in->common.simulation, spec));
-      } catch (const Error&) {
-        Warn(in->scene->path(), fmt::format("--laws all leaves out {}: it needs a dissipation "
-                                            "(give --dissipation, s/m)",
-                                            LawName(law)));
-        continue;
-      }
-    }
-    kept.push_back(law);
-  }
-  in->laws = std::move(kept);
-}
-
-}  // namespace
-
-SweepInputs ReadSweepInputs(const SweepArgs& args, const char* default_restitutions) {
-  SweepInputs in;
-  in.common = ParseCommon(args);
-  in.laws = ParseLawList("--laws", args.laws);
-  if (args.frictions) {
-    if (args.friction) {
-      Refuse("--frictions", *args.frictions,
-             fmt::format("goes without --friction={} (each run takes one of the list)",
-                         *args.friction));
-    }
-    in.frictions = ParseFrictionList("--frictions", *args.frictions);
-  }
-  in.jobs = Jobs(args.jobs);
-  if (args.restitution || default_restitutions) {
-    in.restitutions =
-        ParseRestitutionList("--restitution", args.restitution.value_or(default_restitutions));
-  }
-  in.scene = std::make_unique<Scene>(args.scene,
-                                     app::LoadSizedModel(args.scene, in.common.simulation.overrides));
-  if (args.laws == "all") LeaveOutLawsMissingADissipation(&in);
-  return in;
-}
-
-std::string Describe(const RunSpec& spec) {
-  std::string what = spec.restitution ? fmt::format("{} e={}", LawName(spec.law), *spec.restitution)
-                                      : std::string(LawName(spec.law));
-  if (spec.friction) what += fmt::format(" friction={}", FrictionName(*spec.friction));
-  return what;
-}
-
-SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
-  options.overrides.law = spec.law;
-  options.overrides.restitution = spec.restitution;
-  if (spec.friction) options.overrides.friction = spec.friction;
-  return options;
-}
-
-int Jobs(const std::optional<std::string>& jobs) {
-  if (!jobs) return DefaultJobs();
-  const std::optional<long> n = ParseWholeNumber(*jobs, 1, kMaxJobs);
-  if (!n) Refuse("--jobs", *jobs, "must be a whole number >= 1");
-  return static_cast<int>(*n);
-}
-
-std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
-                                                 const SimulationOptions& options,
-                                                 const std::vector<RunSpec>& specs,
-                                                 bool auto_timestep) {
-  std::set<std::string> warned;
-  std::vector<std::vector<TimestepAdvice>> advices;
-  for (const RunSpec& spec : specs) {
-    std::unique_ptr<Simulation> sim = scene.Make(OptionsFor(options, spec));
-    WarnAboutTags(sim->contact_model(), &warned);
-    // the scene's start, whatever the run: once each
-    const std::vector<StartContact> starts = StartContacts(sim.get());
-    for (const std::string& text : DeepStartWarnings(*sim, starts)) {
-      if (warned.insert(text).second) Warn(scene.path(), text);
-    }
-    advices.push_back(AdviseTimestep(sim.get(), starts));
-    if (auto_timestep) continue;  // the steps will resolve the contacts
-    for (const std::string& text : TimestepWarnings(*sim, advices.back())) {
-      if (warned.insert(text).second) {
-        Warn(scene.path(), specs.size() > 1 ? Describe(spec) + ": " + text : text);
-      }
-    }
-  }
-  return advices;
-}
-
-const char* StatusName(RunOutput::Status status) {
+int ExitStatus(app::SweepStatus status) {
   switch (status) {
-    case RunOutput::Status::kOk: return "ok";
-    case RunOutput::Status::kFailed: return "failed";
-    case RunOutput::Status::kInterrupted: return "interrupted";
-    case RunOutput::Status::kNotRun: return "not run";
+    case app::SweepStatus::kOk: return 0;
+    case app::SweepStatus::kFailed: return kExitIncomplete;
+    case app::SweepStatus::kInterrupted:
+      fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
+      return kExitInterrupted;
   }
-  return "?";
-}
-
-int Sweep(const Scene& scene, const SimulationOptions& options,
-          const std::vector<RunSpec>& specs,
-          const std::vector<std::vector<TimestepAdvice>>& advices, const SweepOptions& sweep,
-          const std::function<void(int, RunOutput&)>& deliver) {
-  Progress progress(static_cast<int>(specs.size()), sweep.quiet);
-  int failed = 0;
-  bool interrupted = false;
-  const int count = static_cast<int>(specs.size());
-  auto work = [&](int k) { return Execute(scene, options, specs[k], advices[k], sweep); };
-  auto handle = [&](int k, RunOutput& out) {
-    progress.Done();  // what deliver or the warnings print starts a line
-    for (const std::string& w : out.warnings) Warn(scene.path(), Describe(specs[k]) + ": " + w);
-    if (out.status == RunOutput::Status::kFailed) {
-      ++failed;
-      if (WritesOutputs()) {
-        fmt::print(stderr, "contactlaws: {}: {}: run failed: {}\n", scene.path(),
-                   Describe(specs[k]), out.reason);
-      }
-    }
-    interrupted = interrupted || out.status == RunOutput::Status::kInterrupted ||
-                  out.status == RunOutput::Status::kNotRun;
-    deliver(k, out);
-    progress.Finished(k, Describe(specs[k]));
-  };
-  auto should_stop = [&] {
-    return sweep.advance.stop && sweep.advance.stop->load(std::memory_order_relaxed);
-  };
-  auto skipped = [&](int k) { return NotRun(specs[k]); };
-  if (WorkSpread* spread = ClusterSpread()) {
-    SetThreadsPerRank(sweep.jobs);
-    std::vector<RunOutput> outputs =
-        RunShare(spread, count, sweep.jobs, work, should_stop, skipped);
-    for (int k = 0; k < count; ++k) handle(k, outputs[k]);
-  } else {
-    RunInOrder<RunOutput>(count, sweep.jobs, work, handle, should_stop, skipped);
-  }
-  progress.Done();
-  if (interrupted) {
-    fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
-    return kExitInterrupted;
-  }
-  return failed ? kExitIncomplete : 0;
+  return kExitIncomplete;
 }
 
 std::string CreateDirectory(const std::string& dir) {

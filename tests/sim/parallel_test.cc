@@ -1,7 +1,7 @@
 // Copyright contactlaws authors.
 //
-// The one pool (sim/parallel.h) and the command line's ordered delivery on
-// it (cli/parallel.h): every item once, each worker on a thread of its own
+// The one pool (sim/parallel.h) and the application's ordered delivery on
+// it (app/parallel.h): every item once, each worker on a thread of its own
 // (worker 0 the caller's), a failure stopping what has not started, and the
 // results delivered in order whatever the order they finish in.
 
@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/parallel.h"
+#include "app/parallel.h"
 
 namespace contactlaws {
 namespace {
@@ -66,7 +66,7 @@ TEST(ParallelForTest, AFailureStopsWhatHasNotStartedAndIsRethrown) {
 TEST(RunInOrderTest, DeliversInOrderWhateverTheOrderTheyFinishIn) {
   constexpr int kCount = 12;
   std::vector<int> delivered;
-  cli::RunInOrder<int>(
+  app::RunInOrder<int>(
       kCount, 3,
       [](int k) {
         // the first items finish last
@@ -84,7 +84,7 @@ TEST(RunInOrderTest, DeliversInOrderWhateverTheOrderTheyFinishIn) {
 
 TEST(RunInOrderTest, AWorksFailureIsRethrownAtItsTurn) {
   std::vector<int> delivered;
-  EXPECT_THROW(cli::RunInOrder<int>(
+  EXPECT_THROW(app::RunInOrder<int>(
                    6, 2,
                    [](int k) {
                      if (k == 2) throw std::runtime_error("run 2");

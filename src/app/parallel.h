@@ -1,11 +1,11 @@
 // Copyright contactlaws authors.
 //
 // Independent runs on several threads, their results delivered in order on
-// the calling thread: what makes `--jobs N` write the same bytes as
-// `--jobs 1`.
+// the calling thread: what makes a sweep on N threads write the same bytes
+// as on one.
 
-#ifndef CONTACTLAWS_CLI_PARALLEL_H_
-#define CONTACTLAWS_CLI_PARALLEL_H_
+#ifndef CONTACTLAWS_APP_PARALLEL_H_
+#define CONTACTLAWS_APP_PARALLEL_H_
 
 #include <algorithm>
 #include <atomic>
@@ -19,13 +19,7 @@
 
 #include "sim/parallel.h"
 
-namespace contactlaws::cli {
-
-// The number of jobs when none is asked for: the cores the machine reports.
-inline int DefaultJobs() {
-  const unsigned cores = std::thread::hardware_concurrency();
-  return cores > 0 ? static_cast<int>(cores) : 1;
-}
+namespace contactlaws::app {
 
 // Calls work(k) for k = 0 .. count-1 on up to `jobs` threads of the pool
 // (internal::ParallelFor; jobs <= 1: on this thread, one after the other),
@@ -99,6 +93,6 @@ void RunInOrder(int count, int jobs, const std::function<Result(int)>& work,
   if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace contactlaws::cli
+}  // namespace contactlaws::app
 
-#endif  // CONTACTLAWS_CLI_PARALLEL_H_
+#endif  // CONTACTLAWS_APP_PARALLEL_H_
