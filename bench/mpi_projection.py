@@ -2,7 +2,8 @@
 """Projects the parallel efficiency of one evaluation of a fit on N nodes (docs/performance.md)
 from a replay's per-trajectory costs and a measured exchange time.
 
-    bench/mpi_projection.py REPLAY_CSV --seconds S --exchange E [--threads 16] [--copies 1]
+    PYTHONPATH=build/python bench/mpi_projection.py REPLAY_CSV --seconds S --exchange E
+        [--threads 16] [--copies 1]
 
 REPLAY_CSV: `contactlaws replay ... --output DIR`'s DIR/replay.csv; a trajectory's cost is taken
 proportional to its `samples` (a fixed timestep: steps per sample are alike), scaled so that the
@@ -11,7 +12,8 @@ seconds of one exchange (barrier + allgathers) per evaluation. --copies repeats 
 (a larger data set of the same costs).
 
 Each node is one rank with --threads threads; items go to ranks by k mod N (the first
-evaluation) or longest first onto the least-loaded rank (the next ones: docs/cluster.md), and a
+evaluation) or longest first onto the least-loaded rank (the next ones: docs/cluster.md; the
+library's own planner, `internal::LongestFirst`, through the Python module), and a
 rank's threads take its items in index order, the next free thread the next item (as
 Replay::Run does). Efficiency = total cost / (nodes x threads x (slowest rank + E)). The costs are
 assumed to repeat exactly from one evaluation to the next (the plan's best case).
@@ -20,6 +22,8 @@ import argparse
 import csv
 import heapq
 
+from contactlaws._contactlaws import _longest_first  # the cluster's own plan
+
 
 def rank_time(costs, threads):
     """Wall time of one rank: its items in order, each to the thread free first."""
@@ -27,18 +31,6 @@ def rank_time(costs, threads):
     for c in costs:
         heapq.heappush(free, heapq.heappop(free) + c)
     return max(free)
-
-
-def longest_first(costs, ranks):
-    """Each item's rank, as cluster_mpi.cc's LongestFirst."""
-    order = sorted(range(len(costs)), key=lambda k: -costs[k])
-    load = [0.0] * ranks
-    owner = [0] * len(costs)
-    for k in order:
-        r = min(range(ranks), key=lambda i: (load[i], i))
-        owner[k] = r
-        load[r] += costs[k]
-    return owner
 
 
 def efficiency(costs, nodes, threads, exchange, owner):
@@ -65,7 +57,7 @@ def main():
     print("|-------|---------|---------------|")
     for nodes in (1, 2, 16, 64):
         modulo = [k % nodes for k in range(len(costs))]
-        planned = longest_first(costs, nodes)
+        planned = _longest_first(costs, nodes)
         print(f"| {nodes} | {efficiency(costs, nodes, args.threads, args.exchange, modulo):.2f} | "
               f"{efficiency(costs, nodes, args.threads, args.exchange, planned):.2f} |")
 

@@ -25,6 +25,7 @@
 #include "app/restitution_job.h"
 #include "app/run_warnings.h"
 #include "bindings.h"
+#include "ident/work_spread.h"
 
 namespace contactlaws::python {
 namespace {
@@ -312,6 +313,8 @@ void BindJobs(py::module_& m) {
   m.def("_fit", &Fit);
   m.def("_check", &Check);
   m.def("_laws", &LawTables);
+  // the cluster's plan of items over processes, for bench/mpi_projection.py
+  m.def("_longest_first", &internal::LongestFirst, py::arg("seconds"), py::arg("processes"));
 }
 
 }  // namespace contactlaws::python

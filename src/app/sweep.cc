@@ -3,11 +3,9 @@
 #include "app/sweep.h"
 
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <memory>
 #include <set>
-#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -15,6 +13,7 @@
 #include "app/csv_text.h"
 #include "app/parallel.h"
 #include "app/run_warnings.h"
+#include "ident/wire.h"
 #include "sim/start_contact.h"
 
 namespace contactlaws::app {
@@ -99,70 +98,17 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
   return out;
 }
 
-// RunOutput as bytes, for the exchange between the ranks of a job.
-template <typename T>
-void Put(std::string* bytes, const T& value) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  bytes->append(reinterpret_cast<const char*>(&value), sizeof value);
+}  // namespace
+
+// RunOutput's fields for the exchange between the ranks of a job.
+template <typename Archive>
+void serialize(Archive& archive, RunOutput& out) {
+  static_assert(sizeof(RunOutput) == 488, "RunOutput changed: name its new field here");
+  archive(out.status, out.reason, out.warnings, out.restitution, out.trajectory, out.impacts,
+          out.rows, out.impact_table, out.summary, out.dissipated, out.first);
 }
 
-void PutText(std::string* bytes, const std::string& text) {
-  Put(bytes, text.size());
-  *bytes += text;
-}
-
-std::string Pack(const RunOutput& out) {
-  std::string bytes;
-  Put(&bytes, out.status);
-  PutText(&bytes, out.reason);
-  Put(&bytes, out.warnings.size());
-  for (const std::string& w : out.warnings) PutText(&bytes, w);
-  Put(&bytes, out.restitution);
-  PutText(&bytes, out.trajectory);
-  PutText(&bytes, out.impacts);
-  Put(&bytes, out.summary);
-  Put(&bytes, out.dissipated);
-  Put(&bytes, out.first);
-  return bytes;
-}
-
-// Reads what Pack wrote, in the same order.
-class Unpacker {
- public:
-  explicit Unpacker(const std::string& bytes) : at_(bytes.data()) {}
-  template <typename T>
-  void Get(T* value) {
-    std::memcpy(value, at_, sizeof *value);
-    at_ += sizeof *value;
-  }
-  void GetText(std::string* text) {
-    size_t n;
-    Get(&n);
-    text->assign(at_, n);
-    at_ += n;
-  }
-
- private:
-  const char* at_;
-};
-
-RunOutput Unpack(const std::string& bytes) {
-  RunOutput out;
-  Unpacker in(bytes);
-  in.Get(&out.status);
-  in.GetText(&out.reason);
-  size_t warnings;
-  in.Get(&warnings);
-  out.warnings.resize(warnings);
-  for (std::string& w : out.warnings) in.GetText(&w);
-  in.Get(&out.restitution);
-  in.GetText(&out.trajectory);
-  in.GetText(&out.impacts);
-  in.Get(&out.summary);
-  in.Get(&out.dissipated);
-  in.Get(&out.first);
-  return out;
-}
+namespace {
 
 // The runs of a cluster job: this rank's share computed (jobs at a time),
 // then every run's output, in order, on every rank.
@@ -182,13 +128,13 @@ std::vector<RunOutput> RunShare(WorkSpread* spread, int count, int jobs,
         return out;
       },
       [&](int k, RunOutput& out) {
-        if (spread->Mine(k, count)) items[k] = Pack(out);
+        if (spread->Mine(k, count)) items[k] = internal::Written(out);
       },
       should_stop, [&](int k) { return spread->Mine(k, count) ? skipped(k) : RunOutput(); });
   spread->Share(&items, seconds);
   std::vector<RunOutput> outputs;
   outputs.reserve(count);
-  for (const std::string& item : items) outputs.push_back(Unpack(item));
+  for (const std::string& item : items) outputs.push_back(internal::Read<RunOutput>(item));
   return outputs;
 }
 

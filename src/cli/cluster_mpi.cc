@@ -23,7 +23,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <numeric>
 #include <optional>
 #include <string>
 #include <thread>
@@ -161,24 +160,6 @@ class Launch {
   int size_ = 0;  // 0 until known
   bool ready_ = false;  // MPI_Init returned and was checked
 };
-
-// Each item's rank: longest first, to the rank with the least seconds so far
-// (the lowest rank on a tie), which is within 4/3 of the best balance
-// (Graham's bound for longest-processing-time-first).
-std::vector<int> LongestFirst(const std::vector<double>& seconds, int ranks) {
-  std::vector<int> order(seconds.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return seconds[a] > seconds[b]; });
-  std::vector<double> load(ranks, 0.0);
-  std::vector<int> owner(seconds.size());
-  for (const int k : order) {
-    const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    owner[k] = r;
-    load[r] += seconds[k];
-  }
-  return owner;
-}
 
 // Items as "1,3,5" (at most 20, then "...").
 std::string ItemList(const std::vector<int>& items) {

@@ -38,6 +38,13 @@ class WorkSpread {
   virtual void Share(std::vector<std::string>* items, const std::vector<double>& seconds) = 0;
 };
 
+// Each of seconds.size() items' process (0 .. processes - 1): longest first,
+// to the process with the least seconds so far (the lowest on a tie), within
+// 4/3 of the best balance (Graham's bound for longest-processing-time-first).
+// Every process computes the same plan from the same costs: no message
+// decides it.
+std::vector<int> LongestFirst(const std::vector<double>& seconds, int processes);
+
 // The CPU time of the calling thread, s: an item's cost for Share, which on a
 // machine shared with other work its wall time would overstate.
 inline double ThreadSeconds() {
@@ -49,6 +56,7 @@ inline double ThreadSeconds() {
 }  // namespace internal
 
 // The names the program's own code (the ranks of src/cli/cluster*) uses.
+using internal::LongestFirst;
 using internal::ThreadSeconds;
 using internal::WorkSpread;
 
