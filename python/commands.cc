@@ -55,10 +55,10 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   std::unique_ptr<Simulation> sim = scene.Make(options);
   // a start deep in contact, whatever the step; a fixed step's own
   const std::vector<StartContact> starts = StartContacts(sim.get());
-  std::vector<std::string> warnings = DeepStartWarnings(*sim, starts);
+  std::vector<std::string> warnings = DeepStartWarnings(*sim, starts, kKeywordSpelling);
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get(), starts);
   if (!common.auto_timestep) {
-    for (std::string& w : TimestepWarnings(*sim, advice)) warnings.push_back(std::move(w));
+    for (std::string& w : TimestepWarnings(*sim, advice, kKeywordSpelling)) warnings.push_back(std::move(w));
   }
 
   const std::vector<std::string> columns = sim->Columns();
@@ -90,7 +90,7 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   }
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   std::string divergence;
-  if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice);
+  if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice, kKeywordSpelling);
   // the library's advice (sim/) names the command line's flags
   for (std::string& w : warnings) w = KeywordSpelling(w);
   divergence = KeywordSpelling(divergence);

@@ -1,14 +1,17 @@
 // Copyright contactlaws authors.
 //
-// The library's own advice spoken to a Python caller. The options' messages
+// The library's errors spoken to a Python caller. The options' messages
 // name the keywords already (the application's grammar, app/options.h, reads
-// them with Python's spelling); the texts of src/sim still name the command
-// line's flags: the timestep advice and the deep start's warning
-// (sim/timestep_advice.h, sim/start_contact.h), a divergence's message and
-// replay's. Those, and contactlaws.Error's message, pass through
-// KeywordSpelling: each --flag becomes the keyword argument of the same
-// name (--max-timestep -> max_timestep, --settle -> settle=True), a few
-// phrases Python's own (--timestep auto -> timestep="auto").
+// them with Python's spelling), and so does the library's advice (the
+// timestep advice, the deep start's warning, a divergence's message, a
+// settling contact's line: written through the caller's Spelling,
+// sim/spelling.h). What still names a flag are a few errors thrown while a
+// simulation or a replay is set up (settling's refusals in sim/settle.cc,
+// replay's --columns and --start refit, the tags' --dissipation): those, as
+// every contactlaws.Error's message, pass through KeywordSpelling: each
+// --flag becomes the keyword argument of the same name (--max-timestep ->
+// max_timestep, --settle -> settle=True), a few phrases Python's own
+// (--timestep auto -> timestep="auto").
 
 #include <algorithm>
 #include <array>

@@ -92,7 +92,8 @@ ComparePlan PlanCompare(const OptionReader& reader, const std::string& scene,
   plan.specs = CompareSpecs(in.laws, in.restitutions, in.frictions);
   plan.frictions = !in.frictions.empty();
   plan.advices =
-      Prepare(*in.scene, options, plan.specs, in.common.auto_timestep.has_value(), monitor);
+      Prepare(*in.scene, options, plan.specs, in.common.auto_timestep.has_value(), reader,
+              monitor);
   plan.first = in.scene->Make(OptionsFor(options, plan.specs.front()));
   if (plan.first->settled()) monitor->Note(plan.first->source(), plan.first->settled()->Line());
   if (plan.frictions && !HasFriction(plan.first->contact_model())) {

@@ -111,17 +111,6 @@ int DefaultJobs() {
   return cores > 0 ? static_cast<int>(cores) : 1;
 }
 
-namespace {
-
-std::string KeywordName(std::string_view key) { return std::string(key); }
-std::string KeywordGiven(std::string_view key, std::string_view word) {
-  return fmt::format("{}=\"{}\"", key, word);
-}
-std::string KeywordSet(std::string_view key) { return fmt::format("{}=True", key); }
-
-}  // namespace
-
-const Spelling kKeywordSpelling = {&KeywordName, &KeywordGiven, &KeywordSet};
 
 void OptionReader::Refuse(std::string_view key, std::string_view value,
                           std::string_view requirement) const {

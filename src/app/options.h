@@ -17,23 +17,13 @@
 #include <vector>
 
 #include "contactlaws/contactlaws.h"
+#include "sim/spelling.h"
 
 namespace contactlaws::app {
 
-// How a front-end names an option in its messages, from its key
-// (snake_case: "max_timestep").
-struct Spelling {
-  // the option: "--max-timestep", "max_timestep"
-  std::string (*name)(std::string_view key);
-  // the option given a word: "--timestep auto", "timestep=\"auto\""
-  std::string (*given)(std::string_view key, std::string_view word);
-  // a switch turned on: "--settle", "settle=True"
-  std::string (*set)(std::string_view key);
-};
-
-// Python's keyword arguments: the key as it is, a word as a str, a switch
-// True.
-extern const Spelling kKeywordSpelling;
+// How a front-end names an option in its messages (sim/spelling.h).
+using contactlaws::kKeywordSpelling;
+using contactlaws::Spelling;
 
 // An option's value as a front-end has it: a number already (Python's float
 // or int), text read by the option's grammar ("auto", "0.1:0.9:0.1",
@@ -101,6 +91,7 @@ class OptionReader {
     return spelling_.given(key, word);
   }
   std::string Set(std::string_view key) const { return spelling_.set(key); }
+  const Spelling& spelling() const { return spelling_; }
 
   // Throws Error "OPTION=VALUE REQUIREMENT".
   [[noreturn]] void Refuse(std::string_view key, std::string_view value,

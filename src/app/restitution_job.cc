@@ -78,7 +78,7 @@ RestitutionPlan PlanRestitution(const OptionReader& reader, const std::string& s
     for (const double e : plan.in.restitutions) plan.specs.push_back({law, e, std::nullopt});
   }
   plan.advices = Prepare(*plan.in.scene, plan.in.common.simulation, plan.specs,
-                         plan.in.common.auto_timestep.has_value(), monitor);
+                         plan.in.common.auto_timestep.has_value(), reader, monitor);
   plan.sweep.advance.duration = plan.in.common.duration;
   plan.sweep.advance.until_first_episode = true;
   plan.sweep.advance.auto_timestep = plan.in.common.auto_timestep;

@@ -28,7 +28,7 @@ std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult&
                                      const OptionReader& options) {
   std::vector<std::string> warnings;
   if (result.energy_growth) warnings.push_back(*result.energy_growth);
-  for (std::string& w : ChainedContactWarnings(sim)) warnings.push_back(std::move(w));
+  for (std::string& w : ChainedContactWarnings(sim, options.spelling())) warnings.push_back(std::move(w));
   const double turn = sim.contacts().contact_steps_worst_turn();
   if (sim.contacts().contact_steps().enabled() && turn > kFrozenTurnWarning) {
     warnings.push_back(fmt::format(

@@ -63,7 +63,8 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     double end_time = sim->time();
     if (result.status == AdvanceResult::Status::kDiverged) {
       out.status = RunOutput::Status::kFailed;
-      out.reason = "diverged at " + DivergenceMessage(*sim, *result.divergence, advice);
+      out.reason =
+          "diverged at " + DivergenceMessage(*sim, *result.divergence, advice, reader.spelling());
       end_time = result.divergence->time;
     } else if (result.status == AdvanceResult::Status::kInterrupted) {
       out.status = RunOutput::Status::kInterrupted;
@@ -210,7 +211,8 @@ SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec) {
 std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
                                                  const SimulationOptions& options,
                                                  const std::vector<RunSpec>& specs,
-                                                 bool auto_timestep, SweepMonitor* monitor) {
+                                                 bool auto_timestep, const OptionReader& reader,
+                                                 SweepMonitor* monitor) {
   std::set<std::string> warned;
   std::vector<std::vector<TimestepAdvice>> advices;
   for (const RunSpec& spec : specs) {
@@ -220,12 +222,12 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
     }
     // the scene's start, whatever the run: once each
     const std::vector<StartContact> starts = StartContacts(sim.get());
-    for (const std::string& text : DeepStartWarnings(*sim, starts)) {
+    for (const std::string& text : DeepStartWarnings(*sim, starts, reader.spelling())) {
       if (warned.insert(text).second) monitor->Warn(scene.path(), text);
     }
     advices.push_back(AdviseTimestep(sim.get(), starts));
     if (auto_timestep) continue;  // the steps will resolve the contacts
-    for (const std::string& text : TimestepWarnings(*sim, advices.back())) {
+    for (const std::string& text : TimestepWarnings(*sim, advices.back(), reader.spelling())) {
       if (warned.insert(text).second) {
         monitor->Warn(scene.path(), specs.size() > 1 ? Describe(spec) + ": " + text : text);
       }

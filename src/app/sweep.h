@@ -92,12 +92,14 @@ std::string Describe(const RunSpec& spec);
 SimulationOptions OptionsFor(SimulationOptions options, const RunSpec& spec);
 
 // Before any run: every run's tags are validated (bad input costs nothing),
-// and a timestep too coarse for a tag's estimated contact is named once.
-// Returns each run's advice, for its divergence message.
+// and a timestep too coarse for a tag's estimated contact is named once,
+// the options spelled as reader does. Returns each run's advice, for its
+// divergence message.
 std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
                                                  const SimulationOptions& options,
                                                  const std::vector<RunSpec>& specs,
-                                                 bool auto_timestep, SweepMonitor* monitor);
+                                                 bool auto_timestep, const OptionReader& reader,
+                                                 SweepMonitor* monitor);
 
 // What one run of a sweep leaves for the thread that delivers, in order.
 struct RunOutput {

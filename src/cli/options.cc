@@ -33,20 +33,10 @@ std::optional<app::Value> ValueOf(const std::optional<std::string>& text) {
   return app::Value(*text);
 }
 
-std::string FlagSpelling(std::string_view key) {
-  std::string flag = "--" + std::string(key);
-  std::replace(flag.begin(), flag.end(), '_', '-');
-  return flag;
-}
-
-namespace {
-std::string FlagGiven(std::string_view key, std::string_view word) {
-  return FlagSpelling(key) + " " + std::string(word);
-}
-}  // namespace
+std::string FlagSpelling(std::string_view key) { return kCommandLineSpelling.name(key); }
 
 const app::OptionReader& Flags() {
-  static const app::OptionReader flags({&FlagSpelling, &FlagGiven, &FlagSpelling});
+  static const app::OptionReader flags(kCommandLineSpelling);
   return flags;
 }
 

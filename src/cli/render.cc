@@ -108,10 +108,10 @@ int RenderCommand(const RenderArgs& args) {
   }
   ReportSettle(*sim);
   const std::vector<StartContact> starts = StartContacts(sim.get());
-  for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);
+  for (const std::string& w : DeepStartWarnings(*sim, starts, kCommandLineSpelling)) Warn(scene.path(), w);
   const std::vector<TimestepAdvice> advice = AdviseTimestep(sim.get(), starts);
   if (!plan.common.auto_timestep) {
-    for (const std::string& w : TimestepWarnings(*sim, advice)) Warn(scene.path(), w);
+    for (const std::string& w : TimestepWarnings(*sim, advice, kCommandLineSpelling)) Warn(scene.path(), w);
   }
 
   AdvanceOptions advance;
@@ -164,7 +164,7 @@ int RenderCommand(const RenderArgs& args) {
                  : "");
   if (result.divergence) {
     fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
-               DivergenceMessage(*sim, *result.divergence, advice));
+               DivergenceMessage(*sim, *result.divergence, advice, kCommandLineSpelling));
     return kExitIncomplete;
   }
   return 0;

@@ -88,7 +88,7 @@ int RunCommand(const RunArgs& args) {
   if (args.impacts) impacts.emplace(*args.impacts);
 
   const std::vector<StartContact> starts = StartContacts(sim.get());
-  for (const std::string& w : DeepStartWarnings(*sim, starts)) Warn(scene.path(), w);
+  for (const std::string& w : DeepStartWarnings(*sim, starts, kCommandLineSpelling)) Warn(scene.path(), w);
   // the timestep's advice at the start: its warnings, for a fixed step
   // without contact steps; otherwise only a divergence's message reads it,
   // and it is taken then, from a new start (its look-ahead steps the scene
@@ -96,7 +96,7 @@ int RunCommand(const RunArgs& args) {
   std::optional<std::vector<TimestepAdvice>> advice;
   if (!auto_timestep && !sim->contacts().contact_steps().enabled()) {
     advice = AdviseTimestep(sim.get(), starts);
-    for (const std::string& w : TimestepWarnings(*sim, *advice)) Warn(scene.path(), w);
+    for (const std::string& w : TimestepWarnings(*sim, *advice, kCommandLineSpelling)) Warn(scene.path(), w);
   } else {
     mj_forward(sim->model(), sim->data());  // as AdviseTimestep leaves the data
   }
@@ -131,7 +131,7 @@ int RunCommand(const RunArgs& args) {
       advice = AdviseTimestep(start.get(), StartContacts(start.get()));
     }
     fmt::print(stderr, "contactlaws: {}: run stopped: diverged at {}\n", scene.path(),
-               DivergenceMessage(*sim, *result.divergence, *advice));
+               DivergenceMessage(*sim, *result.divergence, *advice, kCommandLineSpelling));
     return kExitIncomplete;
   }
   return 0;

@@ -50,7 +50,7 @@ bool SettledUnderLoad(const Simulation& sim, const Episode& c) {
 
 }  // namespace
 
-std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
+std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spelling& spelling) {
   // the library handles any rise (Episode::max_approach_velocity); a chained
   // contact is one a warning should name, once per tag: many pairs of a tag
   // (balls on a box, a cradle) say one thing
@@ -98,10 +98,10 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim) {
     warnings.push_back(fmt::format(
         "{} contact{} touching at rest sank into {} spring{} under the load, up to {:.4g} m/s "
         "against the law's v0 of {:.3g} m/s ({}, t = {:.6g} s): no impact and no push; "
-        "--settle starts the bodies at the depth their contacts carry them",
+        "{} starts the bodies at the depth their contacts carry them",
         settling, settling == 1 ? "" : "s", settling == 1 ? "its" : "their",
         settling == 1 ? "" : "s", fastest->max_approach_velocity, fastest->touch_v0,
-        PairName(sim, fastest->pair), fastest->time_contact));
+        PairName(sim, fastest->pair), fastest->time_contact, spelling.set("settle")));
   }
   return warnings;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/spelling.h"
 #include "contactlaws/simulation.h"
 
 namespace contactlaws {
@@ -20,8 +21,9 @@ namespace contactlaws {
 // impact that touched slower than its law's floor of v0 and compressed no
 // faster than twice the speed its bodies' weight sinks them to its depth
 // (bodies placed touching, or come to rest, settling into their springs) is
-// no push: such impacts make one line for the scene, pointing to --settle.
-std::vector<std::string> ChainedContactWarnings(const Simulation& sim);
+// no push: such impacts make one line for the scene, pointing to settling
+// (the option spelled by spelling, the caller's front-end).
+std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spelling& spelling);
 
 }  // namespace contactlaws
 

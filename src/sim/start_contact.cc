@@ -109,7 +109,8 @@ std::vector<StartContact> StartContacts(Simulation* sim) {
 }
 
 std::vector<std::string> DeepStartWarnings(const Simulation& sim,
-                                           const std::vector<StartContact>& starts) {
+                                           const std::vector<StartContact>& starts,
+                                           const Spelling& spelling) {
   const ContactModel& cm = sim.contact_model();
   std::vector<std::string> warnings;
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
@@ -137,9 +138,10 @@ std::vector<std::string> DeepStartWarnings(const Simulation& sim,
     warnings.push_back(fmt::format(
         "{}{}: starts {:.4g} m deep in contact: its law pushes with {:.4g} N against the {:.4g} "
         "N that presses it ({}): the spring throws the bodies apart at t = 0, and its damper "
-        "needs a shorter step there (contactlaws check); --settle moves the bodies in contact "
-        "into the static equilibrium of their contacts before t = 0",
-        PairName(sim, worst->pair), others, worst->depth, worst->force, worst->load, against));
+        "needs a shorter step there ({}); {} moves the bodies in contact into the static "
+        "equilibrium of their contacts before t = 0",
+        PairName(sim, worst->pair), others, worst->depth, worst->force, worst->load, against,
+        spelling.command("check"), spelling.set("settle")));
   }
   return warnings;
 }

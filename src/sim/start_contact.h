@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/spelling.h"
 #include "contactlaws/simulation.h"
 #include "sim/estimate.h"
 
@@ -51,9 +52,11 @@ std::vector<StartContact> StartContacts(Simulation* sim);
 
 // One line per tag with a deep start: its pair of the largest force per
 // load, its depth, force and load, and how many more pairs of the tag start
-// deep; what follows, and --settle.
+// deep; what follows, and settling (the option and command spelled by
+// spelling, the caller's front-end).
 std::vector<std::string> DeepStartWarnings(const Simulation& sim,
-                                           const std::vector<StartContact>& starts);
+                                           const std::vector<StartContact>& starts,
+                                           const Spelling& spelling);
 
 }  // namespace contactlaws
 

@@ -64,16 +64,27 @@ std::vector<TimestepAdvice> AdviseTimestep(Simulation* sim,
   return advice;
 }
 
-std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
-  return fmt::format(
-      "{}: timestep {} s puts {:.3g} steps in the estimated contact duration {:.4g} s "
-      "(>= {} needed): use --timestep {:.3g} or smaller (see contactlaws check)",
-      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.steps,
-      advice.shortest.estimate.contact_duration, kStepsPerContact,
-      advice.shortest.estimate.timestep());
+namespace {
+
+// "--timestep 6.66e-05", "timestep=6.66e-05"
+std::string Timestep(const Spelling& spelling, double step) {
+  return spelling.valued("timestep", fmt::format("{:.3g}", step));
 }
 
-std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+}  // namespace
+
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                  const Spelling& spelling) {
+  return fmt::format(
+      "{}: timestep {} s puts {:.3g} steps in the estimated contact duration {:.4g} s "
+      "(>= {} needed): use {} or smaller (see {})",
+      PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.steps,
+      advice.shortest.estimate.contact_duration, kStepsPerContact,
+      Timestep(spelling, advice.shortest.estimate.timestep()), spelling.command("check"));
+}
+
+std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                      const Spelling& spelling) {
   const TangentialEstimate& t = advice.tangential;
   const double dt = sim.model()->opt.timestep;
   const std::string needs =
@@ -81,47 +92,54 @@ std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvic
                                     2 * t.duration / dt, t.Span(), t.what, kStepsPerContact)
                       : fmt::format("is longer than the {} of its {} (a step each)", t.Span(),
                                     t.what);
-  return fmt::format("{}: timestep {} s {}: use --timestep {:.3g} or smaller (see contactlaws check)",
-                     PairName(sim, advice.shortest.pair), dt, needs, t.timestep());
+  return fmt::format("{}: timestep {} s {}: use {} or smaller (see {})",
+                     PairName(sim, advice.shortest.pair), dt, needs,
+                     Timestep(spelling, t.timestep()), spelling.command("check"));
 }
 
-std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                   const Spelling& spelling) {
   const LawParams& law = sim.contact_model().pairs()[advice.shortest.pair].params;
   return fmt::format(
       "{}: timestep {} s is longer than 2 lags of its law's damping at rest (lag {:.3g} s: {} "
       "under the weight {:.4g} N at the v0 floor min_impact_velocity {} m/s): a resting contact "
-      "would hang or chatter: use --timestep {:.3g} or smaller, or raise min_impact_velocity",
+      "would hang or chatter: use {} or smaller, or raise min_impact_velocity",
       PairName(sim, advice.shortest.pair), sim.model()->opt.timestep, advice.resting.lag,
-      LawName(law.law), advice.resting.load, law.min_impact_velocity, advice.resting.timestep());
+      LawName(law.law), advice.resting.load, law.min_impact_velocity,
+      Timestep(spelling, advice.resting.timestep()));
 }
 
-std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& advice) {
+std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                 const Spelling& spelling) {
   const StartContact& s = *advice.start;
   return fmt::format(
       "{}: timestep {} s is longer than {} lags of its law's damping where it starts (lag {:.3g} "
       "s at the depth {:.4g} m, its law's force {:.4g} N against the load {:.4g} N): use "
-      "--timestep {:.3g} or smaller, or --settle",
+      "{} or smaller, or {}",
       PairName(sim, s.pair), sim.model()->opt.timestep, kFixedStepDamperLags, s.lag, s.depth,
-      s.force, s.load, s.timestep());
+      s.force, s.load, Timestep(spelling, s.timestep()), spelling.set("settle"));
 }
 
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
-                                          const std::vector<TimestepAdvice>& advice) {
+                                          const std::vector<TimestepAdvice>& advice,
+                                          const Spelling& spelling) {
   std::vector<std::string> warnings;
   // contacts integrated inside the step resolve the normal law's duration,
   // the tangential friction's period and their dampers in their sub-steps
   const bool inner = sim.contacts().contact_steps().enabled();
   for (const TimestepAdvice& a : advice) {
-    if (a.coarse && !inner) warnings.push_back(CoarseTimestepWarning(sim, a));
-    if (a.tangential_coarse && !inner) warnings.push_back(TangentialTimestepWarning(sim, a));
-    if (a.resting_coarse && !inner) warnings.push_back(RestingTimestepWarning(sim, a));
-    if (a.start_coarse && !inner) warnings.push_back(StartTimestepWarning(sim, a));
+    if (a.coarse && !inner) warnings.push_back(CoarseTimestepWarning(sim, a, spelling));
+    if (a.tangential_coarse && !inner) {
+      warnings.push_back(TangentialTimestepWarning(sim, a, spelling));
+    }
+    if (a.resting_coarse && !inner) warnings.push_back(RestingTimestepWarning(sim, a, spelling));
+    if (a.start_coarse && !inner) warnings.push_back(StartTimestepWarning(sim, a, spelling));
   }
   return warnings;
 }
 
 std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
-                              const std::vector<TimestepAdvice>& advice) {
+                              const std::vector<TimestepAdvice>& advice, const Spelling& spelling) {
   std::string where = divergence.pair >= 0
                           ? fmt::format("{}: depth {:.4g} m, depth rate {:.4g} m/s",
                                         PairName(sim, divergence.pair), divergence.depth,
@@ -144,9 +162,9 @@ std::string DivergenceMessage(const Simulation& sim, const Divergence& divergenc
     const StartContact& s = *cause->start;
     likely = fmt::format(
         "likely cause: the timestep {} s is longer than {} lags of the law's damping where {} "
-        "starts, {:.3g} s at the depth {:.4g} m (--timestep {:.3g}, or --settle)",
+        "starts, {:.3g} s at the depth {:.4g} m ({}, or {})",
         sim.model()->opt.timestep, kFixedStepDamperLags, PairName(sim, s.pair), s.lag, s.depth,
-        s.timestep());
+        Timestep(spelling, s.timestep()), spelling.set("settle"));
   } else if (cause && std::isfinite(cause->steps)) {
     const ContactEstimate& e = cause->shortest.estimate;
     const double limit = sim.contact_model().pairs()[cause->shortest.pair].depth_limit;
@@ -161,14 +179,16 @@ std::string DivergenceMessage(const Simulation& sim, const Divergence& divergenc
           "{:.4g} s of {}{}",
           sim.model()->opt.timestep, cause->steps, e.contact_duration,
           PairName(sim, cause->shortest.pair),
-          cause->coarse ? fmt::format(" (>= {} needed: --timestep {:.3g})", kStepsPerContact,
-                                      e.timestep())
+          cause->coarse ? fmt::format(" (>= {} needed: {})", kStepsPerContact,
+                                      Timestep(spelling, e.timestep()))
                         : std::string(" (enough for the estimate: check the stiffness, masses "
                                       "and speeds against the scene)"));
     }
   } else {
-    likely = "likely cause: a timestep too coarse for the contact (the contact duration could "
-             "not be estimated at the start: see contactlaws check --impact-velocity)";
+    likely = fmt::format(
+        "likely cause: a timestep too coarse for the contact (the contact duration could not be "
+        "estimated at the start: see {} {})",
+        spelling.command("check"), spelling.name("impact_velocity"));
   }
   return fmt::format("t = {:.6g} s: {}: {}; {}", divergence.time, where, divergence.what,
                      likely);

@@ -12,6 +12,7 @@
 
 #include "memory/contact_memory.h"
 #include "sim/estimate.h"
+#include "sim/spelling.h"
 #include "sim/start_contact.h"
 #include "contactlaws/simulation.h"
 
@@ -53,35 +54,43 @@ const StartContact* ShorterStartLag(const ContactModel& cm, int tag,
 
 // "contactlaw:TAG (g1, g2): timestep H s puts S steps in the estimated
 // contact duration T s (>= 20 needed): use --timestep H' or smaller".
-std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+std::string CoarseTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                  const Spelling& spelling);
 
 // "contactlaw:TAG (g1, g2): timestep H s puts S steps in the period P s of
 // its stick spring (coulomb, k_t ...) (>= 20 needed): use --timestep H' or
 // smaller".
-std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+std::string TangentialTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                      const Spelling& spelling);
 
 // "contactlaw:TAG (g1, g2): timestep H s is longer than 2 lags of its law's
 // damping at rest ...: use --timestep H' or smaller, or raise
 // min_impact_velocity".
-std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+std::string RestingTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                   const Spelling& spelling);
 
 // "contactlaw:TAG (g1, g2): timestep H s is longer than 2 lags of its law's
 // damping where it starts (lag L s at the depth D m ...): use --timestep H'
 // or smaller, or --settle".
-std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& advice);
+std::string StartTimestepWarning(const Simulation& sim, const TimestepAdvice& advice,
+                                 const Spelling& spelling);
+
+// The options and commands each warning names are spelled by spelling (the
+// caller's front-end).
 
 // Every warning of advice (a fixed timestep's): CoarseTimestepWarning,
 // TangentialTimestepWarning, RestingTimestepWarning and StartTimestepWarning
 // of each tag that needs them.
 std::vector<std::string> TimestepWarnings(const Simulation& sim,
-                                          const std::vector<TimestepAdvice>& advice);
+                                          const std::vector<TimestepAdvice>& advice,
+                                          const Spelling& spelling);
 
 // "t = T s: contactlaw:TAG (g1, g2): depth D m, depth rate R m/s: WHAT;
 // likely cause: ..." for a run stopped at divergence; advice from before the
 // run names the timestep against the damper's lag where a pair starts, or
 // against the estimated contact duration.
 std::string DivergenceMessage(const Simulation& sim, const Divergence& divergence,
-                              const std::vector<TimestepAdvice>& advice);
+                              const std::vector<TimestepAdvice>& advice, const Spelling& spelling);
 
 // "contactlaw:TAG (g1, g2)": a pair as messages name it.
 std::string PairName(const Simulation& sim, int pair_index);

@@ -110,7 +110,7 @@ TEST_F(CradleTest, ADissipativeLawKeepsMomentumAndLosesNoMoreThanItsRestitutionA
     }
     EXPECT_GE(chained, balls - 2) << balls;
     // one line for the tag's pairs, with their count
-    const std::vector<std::string> warnings = ChainedContactWarnings(sim);
+    const std::vector<std::string> warnings = ChainedContactWarnings(sim, kCommandLineSpelling);
     ASSERT_EQ(warnings.size(), 1u) << balls;
     if (chained > 1) {
       EXPECT_NE(warnings[0].find(fmt::format("and {} more pair", chained - 1)),

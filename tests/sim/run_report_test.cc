@@ -59,7 +59,7 @@ TEST_F(RunReportTest, BodiesPlacedTouchingThatSettleAreNoChain) {
     settled += point.max_approach_velocity > kChainFactor * point.touch_v0;
   }
   EXPECT_EQ(settled, 8);  // the box's four corners, the four balls
-  EXPECT_EQ(ChainedContactWarnings(sim), std::vector<std::string>());
+  EXPECT_EQ(ChainedContactWarnings(sim, kCommandLineSpelling), std::vector<std::string>());
 }
 
 // SimBenchmark's rolling test as issue 34 ran it (mjcf/rolling.xml with the
@@ -86,7 +86,7 @@ TEST_F(RunReportTest, BodiesPlacedTouchingMakeOneLineThatPointsToSettle) {
   int chained = 0;
   for (const Episode& c : sim.contacts().impacts()) chained += c.chained();
   EXPECT_GT(chained, 1);
-  const std::vector<std::string> w = ChainedContactWarnings(sim);
+  const std::vector<std::string> w = ChainedContactWarnings(sim, kCommandLineSpelling);
   ASSERT_EQ(w.size(), 1u);
   std::printf("%s\n", w[0].c_str());
   EXPECT_NE(w[0].find(fmt::format("{} contacts touching at rest", chained)), std::string::npos)
@@ -119,7 +119,7 @@ TEST_F(RunReportTest, APushThroughAContactThereAtTheStartTouchedAtZero) {
 </mujoco>)");
   while (sim.time() < 0.35) sim.Step();
   std::string push;
-  for (const std::string& w : ChainedContactWarnings(sim)) {
+  for (const std::string& w : ChainedContactWarnings(sim, kCommandLineSpelling)) {
     if (w.find("contactlaw:block") != std::string::npos) push = w;
   }
   ASSERT_FALSE(push.empty());

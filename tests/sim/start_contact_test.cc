@@ -55,7 +55,7 @@ TEST_F(StartContactTest, ABlockPlacedDeepIsADeepStartWithAShortLag) {
   // shorter: 1.8e-6 s against 3.68e-5 s)
   EXPECT_NEAR(s.lag, RestLag(sim) * kWeight / force, kLagTolerance * s.lag);
 
-  const std::vector<std::string> w = DeepStartWarnings(sim, starts);
+  const std::vector<std::string> w = DeepStartWarnings(sim, starts, kCommandLineSpelling);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].rfind("contactlaw:block-floor (block, floor): starts 0.0001 m deep in contact: "
                        "its law pushes with 40 N against the 1.962 N that presses it (20.4 "
@@ -76,7 +76,7 @@ TEST_F(StartContactTest, TheBlockAtItsStaticDepthIsNot) {
   EXPECT_NEAR(starts[0].load, kWeight, kRounding * kWeight);
   EXPECT_FALSE(starts[0].deep);
   EXPECT_NEAR(starts[0].lag, RestLag(sim), kLagTolerance * starts[0].lag);
-  EXPECT_TRUE(DeepStartWarnings(sim, starts).empty());
+  EXPECT_TRUE(DeepStartWarnings(sim, starts, kCommandLineSpelling).empty());
 }
 
 // Three 1 kg cubes stacked on a floor at d = 0 (settle_test's stack).
@@ -112,7 +112,7 @@ TEST_F(StartContactTest, ASettledStackIsNotAndEachPairCarriesWhatIsAboveIt) {
     EXPECT_NEAR(s.force, above, 1e-5 * above);
     EXPECT_FALSE(s.deep);
   }
-  EXPECT_TRUE(DeepStartWarnings(sim, starts).empty());
+  EXPECT_TRUE(DeepStartWarnings(sim, starts, kCommandLineSpelling).empty());
 }
 
 TEST_F(StartContactTest, BodiesPlacedTouchingAreNoStartContact) {
@@ -138,7 +138,7 @@ TEST_F(StartContactTest, TwoBallsOverlappingWithoutGravityHaveNoLoad) {
   ASSERT_EQ(starts.size(), 1u);
   EXPECT_NEAR(starts[0].load, 0, kRounding * starts[0].force);
   EXPECT_TRUE(starts[0].deep);
-  const std::vector<std::string> w = DeepStartWarnings(sim, starts);
+  const std::vector<std::string> w = DeepStartWarnings(sim, starts, kCommandLineSpelling);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("(nothing presses it: at rest it would not touch)"), std::string::npos)
       << w[0];
