@@ -2,16 +2,14 @@
 //
 // The library's errors spoken to a Python caller. The options' messages
 // name the keywords already (the application's grammar, app/options.h, reads
-// them with Python's spelling), and so does the library's advice (the
-// timestep advice, the deep start's warning, a divergence's message, a
-// settling contact's line: written through the caller's Spelling,
-// sim/spelling.h). What still names a flag are a few errors thrown while a
-// simulation or a replay is set up (settling's refusals in sim/settle.cc,
-// replay's --columns and --start refit, the tags' --dissipation): those, as
-// every contactlaws.Error's message, pass through KeywordSpelling: each
-// --flag becomes the keyword argument of the same name (--max-timestep ->
-// max_timestep, --settle -> settle=True), a few phrases Python's own
-// (--timestep auto -> timestep="auto").
+// them with Python's spelling), and so does the library's advice (written
+// through the caller's Spelling, sim/spelling.h) and an OptionError's
+// message (settling's refusals, replay's columns and start, the tags'
+// dissipation override: spelled from its mentions). KeywordSpelling is left
+// for any other contactlaws.Error that names a flag: each --flag becomes the
+// keyword argument of the same name (--max-timestep -> max_timestep,
+// --settle -> settle=True), a few phrases Python's own (--timestep auto ->
+// timestep="auto").
 
 #include <algorithm>
 #include <array>
@@ -20,6 +18,7 @@
 #include <utility>
 
 #include "bindings.h"
+#include "sim/spelling.h"
 
 namespace contactlaws::python {
 namespace {
@@ -71,6 +70,8 @@ void BindKeywordSpelling(pybind11::module_& m) {
   pybind11::register_exception_translator([](std::exception_ptr raised) {
     try {
       if (raised) std::rethrow_exception(raised);
+    } catch (const OptionError& e) {
+      error(Spelled(e, kKeywordSpelling).c_str());
     } catch (const Error& e) {
       error(KeywordSpelling(e.what()).c_str());
     }

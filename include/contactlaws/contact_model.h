@@ -35,6 +35,34 @@ class Error : public std::runtime_error {
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An Error about an option the caller gave: its message names the option by
+// its key, as a C++ caller sets it ("settle: body 'box' tips ...",
+// SimulationOptions::settle). A front-end that names its options otherwise
+// (the command line's --settle, Python's settle=True) takes text() and
+// writes each mention its own way.
+class OptionError : public Error {
+ public:
+  // How a mention names the option: by name, as a switch turned on, or
+  // given a word ("--columns bodies,joints").
+  enum class Form { kName, kSet, kGiven };
+  struct Mention {
+    Form form = Form::kName;
+    std::string key;   // snake_case: "settle", "impact_velocity"
+    std::string word;  // kGiven's
+  };
+  // Where a mention stands in text, in order.
+  static constexpr char kMark = '\x1f';
+
+  OptionError(std::string text, std::vector<Mention> mentions);
+
+  const std::string& text() const { return text_; }
+  const std::vector<Mention>& mentions() const { return mentions_; }
+
+ private:
+  std::string text_;
+  std::vector<Mention> mentions_;
+};
+
 // ---------------------------------------------------------------------------
 // Owning handles for mjModel and mjData, and MJCF loading with messages that
 // name the file.

@@ -92,6 +92,9 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
     }
     out.summary = Summarize(sim->contacts().impacts(), end_time);
     out.dissipated = sim->contacts().DissipatedEnergy();
+  } catch (const OptionError& e) {
+    out.status = RunOutput::Status::kFailed;
+    out.reason = Spelled(e, reader.spelling());
   } catch (const Error& e) {
     out.status = RunOutput::Status::kFailed;
     out.reason = e.what();

@@ -27,6 +27,7 @@
 #include "cli/commands.h"
 #include "cli/mujoco_warnings.h"
 #include "contactlaws/contactlaws.h"
+#include "sim/spelling.h"
 
 namespace contactlaws::cli {
 namespace {
@@ -351,6 +352,9 @@ int Dispatch(const Commands& c) {
     if (Parsed(c.render_cmd)) return RenderCommand(c.render);
     if (Parsed(c.replay_cmd)) return ReplayCommand(c.replay);
     if (Parsed(c.fit_cmd)) return FitCommand(c.fit);
+  } catch (const OptionError& e) {
+    fmt::print(stderr, "contactlaws: {}\n", Spelled(e, kCommandLineSpelling));
+    return kExitRefused;
   } catch (const Error& e) {
     fmt::print(stderr, "contactlaws: {}\n", e.what());
     return kExitRefused;

@@ -145,8 +145,9 @@ int Binding::StartSample(int i, const ReplayOptions& options) const {
   if (options.start == StartRule::kFirst) return 0;
   const auto free = std::find_if(bodies_.begin(), bodies_.end(), [](const MeasuredBody& b) { return b.free; });
   if (free == bodies_.end()) {
-    throw Error(fmt::format("{}: --start refit needs a measured body with a free joint",
-                            data_.source));
+    throw OptionError(fmt::format("{}: {} needs a measured body with a free joint",
+                                  data_.source, OptionError::kMark),
+                      {{OptionError::Form::kGiven, "start", "refit"}});
   }
   const MeasuredBody& body = *free;
   const MeasuredTrajectory& t = data_.trajectories[i];

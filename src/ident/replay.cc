@@ -117,9 +117,10 @@ class Replay::Rollout {
     for (const std::string& name : replay.data_.columns) {
       const auto it = std::find(columns.begin(), columns.end(), name);
       if (it == columns.end()) {
-        throw Error(fmt::format("{}: column '{}' is not one the scene's trajectory has (run "
-                                "--columns bodies,joints)",
-                                replay.data_.source, name));
+        throw OptionError(fmt::format("{}: column '{}' is not one the scene's trajectory has "
+                                      "(run {})",
+                                      replay.data_.source, name, OptionError::kMark),
+                          {{OptionError::Form::kGiven, "columns", "bodies,joints"}});
       }
       place_.push_back(static_cast<int>(it - columns.begin()));
     }

@@ -121,13 +121,14 @@ LawParams ResolveLaw(const PairTagSpec& spec, const Overrides& overrides,
     if (!base.dissipation) {
       // a law given by an override (--law, --laws) cannot find it in the tag
       // of another law: say where it can come from
-      resolve.Fail(fmt::format("missing key dissipation (law={} takes: {}){}", LawName(base.law),
-                               Law(base.law).parameters,
-                               overrides.law && *overrides.law != *spec.law
-                                   ? fmt::format("; the tag's law={} does not read it: give the "
-                                                 "dissipation override (--dissipation)",
-                                                 LawName(*spec.law))
-                                   : ""));
+      const std::string what =
+          fmt::format("missing key dissipation (law={} takes: {})", LawName(base.law),
+                      Law(base.law).parameters);
+      if (!overrides.law || *overrides.law == *spec.law) resolve.Fail(what);
+      throw OptionError(resolve.Message(fmt::format("{}; the tag's law={} does not read it: "
+                                                    "give the dissipation override ({})",
+                                                    what, LawName(*spec.law), OptionError::kMark)),
+                        {{OptionError::Form::kName, "dissipation", ""}});
     }
   }
   base.restitution = restitution.value_or(1.0);

@@ -20,6 +20,9 @@
 namespace contactlaws {
 namespace {
 
+// The option settling is refused under (SimulationOptions::settle).
+const OptionError::Mention kSettle{OptionError::Form::kSet, "settle", ""};
+
 // The movable bodies of tagged pairs touching at sim's state (1 per body),
 // with the depth their contacts allow (the largest GeomPair::depth_limit)
 // and the normals of their contacts.
@@ -45,11 +48,13 @@ Touching FindTouching(const Simulation& sim) {
     for (const int b : {0, 1}) {
       const int body = pair.body[b];
       if (cm.FindDrive(body)) {
-        throw Error(fmt::format(
-            "{}: --settle: body '{}' touches the driven body '{}' at t = 0: a driven body "
-            "moves, so no static equilibrium holds",
-            sim.source(), ObjectName(m, mjOBJ_BODY, pair.body[1 - b]),
-            ObjectName(m, mjOBJ_BODY, body)));
+        throw OptionError(
+            fmt::format("{}: {}: body '{}' touches the driven body '{}' at t = 0: a driven "
+                        "body moves, so no static equilibrium holds",
+                        sim.source(), OptionError::kMark,
+                        ObjectName(m, mjOBJ_BODY, pair.body[1 - b]),
+                        ObjectName(m, mjOBJ_BODY, body)),
+            {kSettle});
       }
       if (Immovable(cm, body)) continue;
       t.count += !t.body[body];
@@ -88,11 +93,12 @@ void RefuseUnsupported(const Simulation& sim, const Touching& touching) {
     SettleDirections::Load(m, d, b, load);
     const double carried = touching.directions.Carried(b, load);
     if (carried < kSettleCarried) {
-      throw Error(fmt::format(
-          "{}: --settle: no contact carries body '{}': its load ({:.3g} N) lies along its "
-          "contact with '{}' ({:.3g} of it along the normal): it would fall",
-          sim.source(), ObjectName(m, mjOBJ_BODY, b), mju_norm3(load),
-          ObjectName(m, mjOBJ_BODY, touching.other[b]), carried));
+      throw OptionError(
+          fmt::format("{}: {}: no contact carries body '{}': its load ({:.3g} N) lies along "
+                      "its contact with '{}' ({:.3g} of it along the normal): it would fall",
+                      sim.source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, b),
+                      mju_norm3(load), ObjectName(m, mjOBJ_BODY, touching.other[b]), carried),
+          {kSettle});
     }
   }
 }
@@ -167,11 +173,13 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
                                                            xquat0.data() + 4 * b, 4)));
       report.angle = std::max(report.angle, 2 * std::acos(cosine));
       if (distance > touching.limit[b]) {
-        throw Error(fmt::format(
-            "{}: --settle: no contact holds body '{}': it moved {:.3g} m in {:.3g} s of "
-            "relaxation, farther than its contacts can compress ({:.3g} m): it would fall",
-            sim->source(), ObjectName(m, mjOBJ_BODY, b), distance, d->time - start,
-            touching.limit[b]));
+        throw OptionError(
+            fmt::format("{}: {}: no contact holds body '{}': it moved {:.3g} m in {:.3g} s of "
+                        "relaxation, farther than its contacts can compress ({:.3g} m): it "
+                        "would fall",
+                        sim->source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, b),
+                        distance, d->time - start, touching.limit[b]),
+            {kSettle});
       }
     }
   };
@@ -194,9 +202,10 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
     while (!converged && d->time - start < kSettleDuration) {
       sim->Step();
       if (sim->contacts().divergence()) {
-        throw Error(fmt::format("{}: --settle: the relaxation diverged at t = {:.6g} s: {}",
-                                sim->source(), d->time - start,
-                                sim->contacts().divergence()->what));
+        throw OptionError(fmt::format("{}: {}: the relaxation diverged at t = {:.6g} s: {}",
+                                      sim->source(), OptionError::kMark, d->time - start,
+                                      sim->contacts().divergence()->what),
+                          {kSettle});
       }
       for (int j = 0; j < m->njnt; ++j) {
         if (moving[j]) continue;
@@ -243,17 +252,22 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
       }
     }
     if (tipping >= 0) {
-      throw Error(fmt::format(
-          "{}: --settle: body '{}' tips: its contacts carry its weight but not its turn (it "
-          "still turns at {:.3g} rad/s^2 after {} s of relaxation), so it has no resting pose "
-          "to start from; start it without --settle, or where it rests",
-          sim->source(), ObjectName(m, mjOBJ_BODY, tipping), turn, kSettleDuration));
+      throw OptionError(
+          fmt::format("{}: {}: body '{}' tips: its contacts carry its weight but not its turn "
+                      "(it still turns at {:.3g} rad/s^2 after {} s of relaxation), so it has "
+                      "no resting pose to start from; start it without {}, or where it rests",
+                      sim->source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, tipping),
+                      turn, kSettleDuration, OptionError::kMark),
+          {kSettle, kSettle});
     }
-    throw Error(fmt::format(
-        "{}: --settle: no equilibrium along the contacts' normals: the bodies in contact still "
-        "accelerate at {:.3g} m/s^2 after {} s of relaxation (body '{}' moved {:.3g} m)",
-        sim->source(), Residual(m, d, moving, touching.directions), kSettleDuration,
-        report.body, report.distance));
+    throw OptionError(
+        fmt::format("{}: {}: no equilibrium along the contacts' normals: the bodies in contact "
+                    "still accelerate at {:.3g} m/s^2 after {} s of relaxation (body '{}' "
+                    "moved {:.3g} m)",
+                    sim->source(), OptionError::kMark,
+                    Residual(m, d, moving, touching.directions), kSettleDuration, report.body,
+                    report.distance),
+        {kSettle});
   }
   bool sliding = false;
   std::vector<PointEvaluation> contacts = StartFriction(*sim, touching.directions, &sliding);

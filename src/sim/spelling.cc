@@ -35,4 +35,22 @@ const Spelling kCommandLineSpelling = {&Flag, &FlagGiven, &Flag, &FlagGiven, &Co
 const Spelling kKeywordSpelling = {&Keyword, &KeywordGiven, &KeywordSet, &KeywordValued,
                                    &Function};
 
+std::string Spelled(const OptionError& e, const Spelling& spelling) {
+  std::string message;
+  size_t next = 0;
+  for (const char c : e.text()) {
+    if (c != OptionError::kMark || next >= e.mentions().size()) {
+      message += c;
+      continue;
+    }
+    const OptionError::Mention& m = e.mentions()[next++];
+    switch (m.form) {
+      case OptionError::Form::kName: message += spelling.name(m.key); break;
+      case OptionError::Form::kSet: message += spelling.set(m.key); break;
+      case OptionError::Form::kGiven: message += spelling.given(m.key, m.word); break;
+    }
+  }
+  return message;
+}
+
 }  // namespace contactlaws

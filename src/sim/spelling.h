@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include "contactlaws/contact_model.h"
+
 namespace contactlaws {
 
 struct Spelling {
@@ -32,6 +34,9 @@ extern const Spelling kCommandLineSpelling;
 // Python's keyword arguments (the key as it is, a word as a str, a switch
 // True) and functions.
 extern const Spelling kKeywordSpelling;
+
+// e's message with each option it mentions as spelling names it.
+std::string Spelled(const OptionError& e, const Spelling& spelling);
 
 }  // namespace contactlaws
 

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "sim/spelling.h"
 #include "contactlaws/auto_timestep.h"
 #include "mujoco_test_util.h"
 #include "sim/friction_scenes.h"
@@ -184,10 +185,14 @@ TEST_F(SettleTest, ABodyNoContactCarriesIsRefusedNamingIt) {
   try {
     MakeSimulation(xml, options);
     ADD_FAILURE() << "settled a ball beside a wall";
-  } catch (const Error& e) {
+  } catch (const OptionError& e) {
+    // the library names the option by its key; the command line by its flag
     const std::string what = e.what();
     std::printf("%s\n", what.c_str());
-    EXPECT_NE(what.find("--settle: no contact carries body 'ball'"), std::string::npos) << what;
+    EXPECT_NE(what.find(": settle: no contact carries body 'ball'"), std::string::npos) << what;
+    const std::string flagged = Spelled(e, kCommandLineSpelling);
+    EXPECT_NE(flagged.find(": --settle: no contact carries body 'ball'"), std::string::npos)
+        << flagged;
     EXPECT_NE(what.find("it would fall"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
@@ -218,10 +223,14 @@ TEST_F(SettleTest, ABodyThatTipsIsRefusedSayingSo) {
   try {
     MakeSimulation(with_tilt("12"), options);
     ADD_FAILURE() << "settled a domino on its edge";
-  } catch (const Error& e) {
+  } catch (const OptionError& e) {
     const std::string what = e.what();
     std::printf("%s\n", what.c_str());
-    EXPECT_NE(what.find("--settle: body 'domino' tips"), std::string::npos) << what;
+    EXPECT_NE(what.find(": settle: body 'domino' tips"), std::string::npos) << what;
+    // both mentions spelled: Python's "start it without settle=True"
+    const std::string spoken = Spelled(e, kKeywordSpelling);
+    EXPECT_NE(spoken.find(": settle=True: body 'domino' tips"), std::string::npos) << spoken;
+    EXPECT_NE(spoken.find("start it without settle=True,"), std::string::npos) << spoken;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
   Simulation& upright = MakeSimulation(with_tilt("0"), options);
