@@ -13,8 +13,6 @@
 
 namespace contactlaws::internal {
 
-using RowMatrix = Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
 namespace {
 
 // The dofs [first, end) of the kinematic tree of body (the world's child it
@@ -55,81 +53,99 @@ void Tangents(const mjtNum n[3], mjtNum t[6]) {
 }  // namespace
 
 struct DamperRate::Workspace {
-  RowMatrix rows;    // 3 per point: sqrt(c) P J, one row per world axis
-  RowMatrix solved;  // D^-1/2 L^-T rows^T (M = L^T D L), one row per row
-  RowMatrix jac[2];  // a point's Jacobian on each body
-  RowMatrix columns; // solved's columns of the two bodies' trees' dofs
-  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic> product;
+  // Rate's, row by row (vectors: their capacity stays): 3 rows per point,
+  // sqrt(c) P J, one per world axis; their halves D^-1/2 L^-T of M^-1
+  // (M = L^T D L); a point's Jacobian on each body; the two bodies' trees'
+  // dofs
+  std::vector<mjtNum> rows, solved, jac[2];
+  std::vector<int> dofs;
+  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic> product;  // its lower triangle
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic>> solver;
   // Bound's: sqrt(c) (J1 - J0)^T u per point and direction u, and their halves
-  // D^-1/2 L^-T of M^-1, row by row (vectors: their capacity stays)
+  // D^-1/2 L^-T of M^-1, row by row
   std::vector<mjtNum> forces, halves;
 };
 
 DamperRate::DamperRate() : w_(std::make_unique<Workspace>()) {}
 DamperRate::~DamperRate() = default;
 
-double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair,
-                                  int points, const mjtNum* pos, const mjtNum* normal,
-                                  const double* damping, DamperDirection direction) {
+double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                        const mjtNum* pos, const mjtNum* normal, const double* damping,
+                        DamperDirection direction) {
   const int nv = m->nv;
   const int n = 3 * points;
   if (nv == 0 || n == 0) return 0;
   Workspace& w = *w_;
-  w.rows.resize(n, nv);
-  w.solved.resize(n, nv);
-  for (RowMatrix& jac : w.jac) jac.resize(3, nv);
+  // the two bodies' trees' dofs, each tree once: M is block diagonal over the
+  // world's children, so the rows' halves are 0 outside them (a ball among
+  // 64 free ones: 12 of 384 dofs), and a body outside every tree (the world,
+  // or welded to it) has a Jacobian of 0
+  const std::pair<int, int> trees[2] = {TreeDofs(m, pair.body[0]), TreeDofs(m, pair.body[1])};
+  w.dofs.clear();
+  for (int t = 0; t < 2; ++t) {
+    if (t == 1 && trees[1] == trees[0]) break;
+    for (int i = trees[t].first; i < trees[t].second; ++i) w.dofs.push_back(i);
+  }
+  const int dofs = static_cast<int>(w.dofs.size());
+  if (dofs == 0) return 0;
+  const size_t size = static_cast<size_t>(n) * nv;
+  w.rows.assign(size, 0.0);
+  w.solved.resize(size);
+  for (int b = 0; b < 2; ++b) w.jac[b].assign(3 * static_cast<size_t>(nv), 0.0);
+  const bool along = direction == DamperDirection::kNormal;
   for (int j = 0; j < points; ++j) {
+    for (int b = 0; b < 2; ++b) {
+      if (trees[b].first < trees[b].second) {
+        mj_jac(m, d, w.jac[b].data(), nullptr, pos + 3 * j, pair.body[b]);
+      }
+    }
     // the relative velocity at the point per dof, its tangential part
     // (I - n n^T) (J1 - J0) or its normal part n n^T (J1 - J0), scaled by
     // sqrt(c)
-    for (int b = 0; b < 2; ++b) {
-      mj_jac(m, d, w.jac[b].data(), nullptr, pos + 3 * j, pair.body[b]);
+    const mjtNum* unit = normal + 3 * j;
+    const double scale = std::sqrt(std::max(damping[j], 0.0));
+    mjtNum* row = w.rows.data() + static_cast<size_t>(3 * j) * nv;
+    for (const int i : w.dofs) {
+      mjtNum relative[3];
+      for (int a = 0; a < 3; ++a) relative[a] = w.jac[1][a * nv + i] - w.jac[0][a * nv + i];
+      const mjtNum normal_part = mju_dot3(unit, relative);
+      for (int a = 0; a < 3; ++a) {
+        row[a * nv + i] =
+            scale * (along ? unit[a] * normal_part : relative[a] - unit[a] * normal_part);
+      }
     }
-    const Eigen::Map<const Eigen::Vector3<mjtNum>> unit(normal + 3 * j);
-    const Eigen::Matrix3<mjtNum> along = unit * unit.transpose();
-    const Eigen::Matrix3<mjtNum> plane = direction == DamperDirection::kNormal
-                                             ? along
-                                             : Eigen::Matrix3<mjtNum>(
-                                                   Eigen::Matrix3<mjtNum>::Identity() - along);
-    w.rows.middleRows(3 * j, 3).noalias() =
-        std::sqrt(std::max(damping[j], 0.0)) * plane * (w.jac[1] - w.jac[0]);
   }
-  // half of M^-1 for each row: solved, whose Gram matrix solved solved^T
-  // (n x n) is rows M^-1 rows^T. M is block diagonal over the world's
-  // children: solved is 0 outside the two bodies' trees' dofs, so only those
-  // columns count (a ball among 64 free ones: 12 of 384 dofs).
+  // half of M^-1 for each row: the rows S (n x dofs) whose Gram matrix S S^T
+  // is rows M^-1 rows^T
   mj_solveM2(m, d, w.solved.data(), w.rows.data(), n);
-  const std::pair<int, int> trees[2] = {TreeDofs(m, pair.body[0]), TreeDofs(m, pair.body[1])};
-  int dofs = 0;
-  for (int t = 0; t < 2; ++t) {
-    const auto [first, end] = trees[t];
-    if (t == 1 && trees[1] == trees[0]) continue;
-    dofs += end - first;
-  }
-  if (dofs == 0) return 0;
   // its largest eigenvalue (its others are not needed, nor its vectors),
-  // from the smaller of the two Gram matrices of those columns S: S S^T
-  // (n x n) and S^T S (dofs x dofs) have the same nonzero eigenvalues (a
-  // cube's four corners: 6 x 6 rather than 12 x 12, an eighth of the
-  // solve's work)
+  // from the smaller of S's two Gram matrices: S S^T (n x n) and S^T S
+  // (dofs x dofs) have the same nonzero eigenvalues (a cube's four corners:
+  // 6 x 6 rather than 12 x 12, an eighth of the solve's work). The solver
+  // reads the lower triangle.
+  const mjtNum* solved = w.solved.data();
   if (dofs < n) {
-    w.columns.resize(n, dofs);
-    int column = 0;
-    for (int t = 0; t < 2; ++t) {
-      const auto [first, end] = trees[t];
-      if (first == end || (t == 1 && trees[1] == trees[0])) continue;
-      w.columns.middleCols(column, end - first) = w.solved.middleCols(first, end - first);
-      column += end - first;
+    w.product.resize(dofs, dofs);
+    for (int p = 0; p < dofs; ++p) {
+      for (int q = p; q < dofs; ++q) {
+        mjtNum sum = 0;
+        for (int r = 0; r < n; ++r) {
+          sum += solved[static_cast<size_t>(r) * nv + w.dofs[p]] *
+                 solved[static_cast<size_t>(r) * nv + w.dofs[q]];
+        }
+        w.product(q, p) = sum;
+      }
     }
-    w.product.noalias() = w.columns.transpose() * w.columns;
   } else {
-    w.product.setZero(n, n);
-    for (int t = 0; t < 2; ++t) {
-      const auto [first, end] = trees[t];
-      if (first == end || (t == 1 && trees[1] == trees[0])) continue;
-      const auto block = w.solved.middleCols(first, end - first);
-      w.product.noalias() += block * block.transpose();
+    w.product.resize(n, n);
+    for (int r = 0; r < n; ++r) {
+      for (int s = r; s < n; ++s) {
+        mjtNum sum = 0;
+        for (const int i : w.dofs) {
+          sum += solved[static_cast<size_t>(r) * nv + i] * solved[static_cast<size_t>(s) * nv + i];
+        }
+        w.product(s, r) = sum;
+      }
     }
   }
   w.solver.compute(w.product, Eigen::EigenvaluesOnly);

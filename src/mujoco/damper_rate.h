@@ -40,7 +40,9 @@ class DamperRate {
   // pos[3 j ..] with unit normals normal[3 j ..] of pair, j < points, at d's
   // state: its positions' Jacobians and its factorized mass matrix (qLD:
   // after mj_forward or a step). 0 when nothing can move. Allocates only
-  // when a pair has more points than any before (so does Bound).
+  // when a pair has more points than any before or when the size of the
+  // matrix it solves changes (the smaller of 3 points and the two bodies'
+  // trees' dofs); Bound only in the first case.
   double Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
               const mjtNum* pos, const mjtNum* normal, const double* damping,
               DamperDirection direction = DamperDirection::kTangential);
