@@ -53,112 +53,24 @@ void Tangents(const mjtNum n[3], mjtNum t[6]) {
 }  // namespace
 
 struct DamperRate::Workspace {
-  // Rate's, row by row (vectors: their capacity stays): 3 rows per point,
-  // sqrt(c) P J, one per world axis; their halves D^-1/2 L^-T of M^-1
-  // (M = L^T D L); a point's Jacobian on each body; the two bodies' trees'
-  // dofs
-  std::vector<mjtNum> rows, solved, jac[2];
-  std::vector<int> dofs;
-  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic> product;  // its lower triangle
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic>> solver;
-  // Bound's: sqrt(c) (J1 - J0)^T u per point and direction u, and their halves
-  // D^-1/2 L^-T of M^-1, row by row
+  // sqrt(c) (J1 - J0)^T u per point and direction u, and their halves
+  // D^-1/2 L^-T of M^-1 (M = L^T D L), row by row (vectors: their capacity
+  // stays); the two bodies' trees' dofs
   std::vector<mjtNum> forces, halves;
+  std::vector<int> dofs;
+  Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic> product;  // Rate's: its lower triangle
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic>> solver;
 };
 
 DamperRate::DamperRate() : w_(std::make_unique<Workspace>()) {}
 DamperRate::~DamperRate() = default;
 
-double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
-                        const mjtNum* pos, const mjtNum* normal, const double* damping,
-                        DamperDirection direction) {
-  const int nv = m->nv;
-  const int n = 3 * points;
-  if (nv == 0 || n == 0) return 0;
-  Workspace& w = *w_;
-  // the two bodies' trees' dofs, each tree once: M is block diagonal over the
-  // world's children, so the rows' halves are 0 outside them (a ball among
-  // 64 free ones: 12 of 384 dofs), and a body outside every tree (the world,
-  // or welded to it) has a Jacobian of 0
-  const std::pair<int, int> trees[2] = {TreeDofs(m, pair.body[0]), TreeDofs(m, pair.body[1])};
-  w.dofs.clear();
-  for (int t = 0; t < 2; ++t) {
-    if (t == 1 && trees[1] == trees[0]) break;
-    for (int i = trees[t].first; i < trees[t].second; ++i) w.dofs.push_back(i);
-  }
-  const int dofs = static_cast<int>(w.dofs.size());
-  if (dofs == 0) return 0;
-  const size_t size = static_cast<size_t>(n) * nv;
-  w.rows.assign(size, 0.0);
-  w.solved.resize(size);
-  for (int b = 0; b < 2; ++b) w.jac[b].assign(3 * static_cast<size_t>(nv), 0.0);
-  const bool along = direction == DamperDirection::kNormal;
-  for (int j = 0; j < points; ++j) {
-    for (int b = 0; b < 2; ++b) {
-      if (trees[b].first < trees[b].second) {
-        mj_jac(m, d, w.jac[b].data(), nullptr, pos + 3 * j, pair.body[b]);
-      }
-    }
-    // the relative velocity at the point per dof, its tangential part
-    // (I - n n^T) (J1 - J0) or its normal part n n^T (J1 - J0), scaled by
-    // sqrt(c)
-    const mjtNum* unit = normal + 3 * j;
-    const double scale = std::sqrt(std::max(damping[j], 0.0));
-    mjtNum* row = w.rows.data() + static_cast<size_t>(3 * j) * nv;
-    for (const int i : w.dofs) {
-      mjtNum relative[3];
-      for (int a = 0; a < 3; ++a) relative[a] = w.jac[1][a * nv + i] - w.jac[0][a * nv + i];
-      const mjtNum normal_part = mju_dot3(unit, relative);
-      for (int a = 0; a < 3; ++a) {
-        row[a * nv + i] =
-            scale * (along ? unit[a] * normal_part : relative[a] - unit[a] * normal_part);
-      }
-    }
-  }
-  // half of M^-1 for each row: the rows S (n x dofs) whose Gram matrix S S^T
-  // is rows M^-1 rows^T
-  mj_solveM2(m, d, w.solved.data(), w.rows.data(), n);
-  // its largest eigenvalue (its others are not needed, nor its vectors),
-  // from the smaller of S's two Gram matrices: S S^T (n x n) and S^T S
-  // (dofs x dofs) have the same nonzero eigenvalues (a cube's four corners:
-  // 6 x 6 rather than 12 x 12, an eighth of the solve's work). The solver
-  // reads the lower triangle.
-  const mjtNum* solved = w.solved.data();
-  if (dofs < n) {
-    w.product.resize(dofs, dofs);
-    for (int p = 0; p < dofs; ++p) {
-      for (int q = p; q < dofs; ++q) {
-        mjtNum sum = 0;
-        for (int r = 0; r < n; ++r) {
-          sum += solved[static_cast<size_t>(r) * nv + w.dofs[p]] *
-                 solved[static_cast<size_t>(r) * nv + w.dofs[q]];
-        }
-        w.product(q, p) = sum;
-      }
-    }
-  } else {
-    w.product.resize(n, n);
-    for (int r = 0; r < n; ++r) {
-      for (int s = r; s < n; ++s) {
-        mjtNum sum = 0;
-        for (const int i : w.dofs) {
-          sum += solved[static_cast<size_t>(r) * nv + i] * solved[static_cast<size_t>(s) * nv + i];
-        }
-        w.product(s, r) = sum;
-      }
-    }
-  }
-  w.solver.compute(w.product, Eigen::EigenvaluesOnly);
-  return std::max(w.solver.eigenvalues().maxCoeff(), 0.0);
-}
-
-double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int points,
-                         const mjtNum* pos, const mjtNum* normal, const double* damping,
-                         DamperDirection direction) {
+int DamperRate::Halves(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                       const mjtNum* pos, const mjtNum* normal, const double* damping,
+                       DamperDirection direction) {
   const int nv = m->nv;
   const int per_point = direction == DamperDirection::kNormal ? 1 : 2;
   const int k = per_point * points;
-  if (nv == 0 || k == 0) return 0;
   Workspace& w = *w_;
   w.forces.resize(static_cast<size_t>(k) * nv);
   w.halves.resize(static_cast<size_t>(k) * nv);
@@ -177,20 +89,81 @@ double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int 
       for (int i = 0; i < nv; ++i) row[i] *= scale;
     }
   }
-  // the k x k matrix halves halves^T over the two bodies' trees' dofs (as
-  // Rate), its squared entries and its trace
   mj_solveM2(m, d, w.halves.data(), w.forces.data(), k);
+  // the two bodies' trees' dofs, each tree once: M is block diagonal over
+  // the world's children, so the halves are 0 outside them (a ball among 64
+  // free ones: 12 of 384 dofs)
   std::pair<int, int> trees[2] = {TreeDofs(m, pair.body[0]), TreeDofs(m, pair.body[1])};
   if (trees[1] == trees[0]) trees[1] = {0, 0};
+  w.dofs.clear();
+  for (const auto& [first, end] : trees) {
+    for (int i = first; i < end; ++i) w.dofs.push_back(i);
+  }
+  return k;
+}
+
+double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                        const mjtNum* pos, const mjtNum* normal, const double* damping,
+                        DamperDirection direction) {
+  const int nv = m->nv;
+  if (nv == 0 || points == 0) return 0;
+  // the halves S (k x dofs) of the rows sqrt(c) u^T (J1 - J0): the rate's
+  // matrix C^(1/2) P J M^-1 J^T P C^(1/2) has the nonzero eigenvalues of
+  // S S^T (P = t1 t1^T + t2 t2^T for two tangents t, or n n^T)
+  const int k = Halves(m, d, pair, points, pos, normal, damping, direction);
+  Workspace& w = *w_;
+  const int dofs = static_cast<int>(w.dofs.size());
+  if (dofs == 0) return 0;
+  // its largest eigenvalue (its others are not needed, nor its vectors),
+  // from the smaller of S's two Gram matrices, which have the same nonzero
+  // eigenvalues: S S^T (k x k) or S^T S (dofs x dofs) (a cube's four
+  // corners: 6 x 6 rather than 8 x 8; the solver's work grows as the cube
+  // of the size). The solver reads the lower triangle.
+  const mjtNum* halves = w.halves.data();
+  if (dofs < k) {
+    w.product.resize(dofs, dofs);
+    for (int p = 0; p < dofs; ++p) {
+      for (int q = p; q < dofs; ++q) {
+        mjtNum sum = 0;
+        for (int r = 0; r < k; ++r) {
+          const mjtNum* row = halves + static_cast<size_t>(r) * nv;
+          sum += row[w.dofs[p]] * row[w.dofs[q]];
+        }
+        w.product(q, p) = sum;
+      }
+    }
+  } else {
+    w.product.resize(k, k);
+    for (int r = 0; r < k; ++r) {
+      const mjtNum* row_r = halves + static_cast<size_t>(r) * nv;
+      for (int s = r; s < k; ++s) {
+        const mjtNum* row_s = halves + static_cast<size_t>(s) * nv;
+        mjtNum sum = 0;
+        for (const int i : w.dofs) sum += row_r[i] * row_s[i];
+        w.product(s, r) = sum;
+      }
+    }
+  }
+  w.solver.compute(w.product, Eigen::EigenvaluesOnly);
+  return std::max(w.solver.eigenvalues().maxCoeff(), 0.0);
+}
+
+double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                         const mjtNum* pos, const mjtNum* normal, const double* damping,
+                         DamperDirection direction) {
+  const int nv = m->nv;
+  if (nv == 0 || points == 0) return 0;
+  const int k = Halves(m, d, pair, points, pos, normal, damping, direction);
+  Workspace& w = *w_;
+  // the k x k matrix halves halves^T over the two bodies' trees' dofs (as
+  // Rate), its squared entries and its trace
   double squares = 0, trace = 0;
   for (int a = 0; a < k; ++a) {
     const mjtNum* row_a = w.halves.data() + static_cast<size_t>(a) * nv;
     for (int b = a; b < k; ++b) {
       const mjtNum* row_b = w.halves.data() + static_cast<size_t>(b) * nv;
       double entry = 0;
-      for (const auto& [first, end] : trees) {
-        for (int i = first; i < end; ++i) entry += row_a[i] * row_b[i];
-      }
+      for (const int i : w.dofs) entry += row_a[i] * row_b[i];
       squares += (a == b ? 1 : 2) * entry * entry;
       if (a == b) trace += entry;
     }

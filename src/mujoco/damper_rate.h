@@ -41,8 +41,9 @@ class DamperRate {
   // state: its positions' Jacobians and its factorized mass matrix (qLD:
   // after mj_forward or a step). 0 when nothing can move. Allocates only
   // when a pair has more points than any before or when the size of the
-  // matrix it solves changes (the smaller of 3 points and the two bodies'
-  // trees' dofs); Bound only in the first case.
+  // matrix it solves changes (the smaller of the points' rows, one per
+  // point and damped direction, and the two bodies' trees' dofs); Bound only
+  // in the first case.
   double Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
               const mjtNum* pos, const mjtNum* normal, const double* damping,
               DamperDirection direction = DamperDirection::kTangential);
@@ -60,6 +61,13 @@ class DamperRate {
                DamperDirection direction);
 
  private:
+  // The rows sqrt(c_j) (J1 - J0)^T u, u the normal or two tangents at each
+  // point (k of them, returned), and their halves D^-1/2 L^-T of M^-1, row by
+  // row, in the workspace; with the two bodies' trees' dofs, the columns
+  // outside which the halves are 0.
+  int Halves(const mjModel* m, mjData* d, const GeomPair& pair, int points, const mjtNum* pos,
+             const mjtNum* normal, const double* damping, DamperDirection direction);
+
   struct Workspace;
   std::unique_ptr<Workspace> w_;
 };
