@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <Eigen/Core>
@@ -27,6 +28,14 @@ std::pair<int, int> TreeDofs(const mjModel* m, int body) {
     end = std::max(end, m->body_dofadr[b] + m->body_dofnum[b]);
   }
   return first < end ? std::make_pair(first, end) : std::make_pair(0, 0);
+}
+
+// Whether body is a free body alone in its tree (its own free joint, from the
+// world, no bodies below it): its inertia is its own.
+bool SingleFreeBody(const mjModel* m, int body) {
+  return body > 0 && m->body_parentid[body] == 0 && m->body_jntnum[body] == 1 &&
+         m->jnt_type[m->body_jntadr[body]] == mjJNT_FREE &&
+         (body + 1 == m->nbody || m->body_rootid[body + 1] != body);
 }
 
 // Bound's margin, a share of the matrix's trace (>= its Frobenius norm): the
@@ -169,6 +178,39 @@ double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int 
     }
   }
   return std::sqrt(squares) + kBoundMargin * trace;
+}
+
+double DamperRate::InertiaBound(const mjModel* m, const mjData* d, const GeomPair& pair,
+                                int points, const mjtNum* pos, const double* damping,
+                                DamperDirection direction) const {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const int per_point = direction == DamperDirection::kNormal ? 1 : 2;
+  // each body's inverse mass and inverse smallest principal moment; a static
+  // body takes no part
+  double inverse_mass[2] = {0, 0}, inverse_moment[2] = {0, 0};
+  for (int b = 0; b < 2; ++b) {
+    const int body = pair.body[b];
+    const std::pair<int, int> tree = TreeDofs(m, body);
+    if (tree.first == tree.second) continue;
+    if (!SingleFreeBody(m, body) || (b == 1 && pair.body[0] == body)) return kInfinity;
+    const mjtNum* inertia = m->body_inertia + 3 * body;
+    const double smallest = std::min({inertia[0], inertia[1], inertia[2]});
+    if (!(m->body_mass[body] > 0 && smallest > 0)) return kInfinity;
+    inverse_mass[b] = 1 / m->body_mass[body];
+    inverse_moment[b] = 1 / smallest;
+  }
+  double trace = 0;
+  for (int j = 0; j < points; ++j) {
+    double inverse_inertia = 0;  // the point's, along any direction, at most
+    for (int b = 0; b < 2; ++b) {
+      if (inverse_mass[b] == 0) continue;
+      mjtNum r[3];
+      mju_sub3(r, pos + 3 * j, d->xipos + 3 * pair.body[b]);
+      inverse_inertia += inverse_mass[b] + mju_dot3(r, r) * inverse_moment[b];
+    }
+    trace += per_point * std::max(damping[j], 0.0) * inverse_inertia;
+  }
+  return (1 + kBoundMargin) * trace;
 }
 
 }  // namespace contactlaws::internal

@@ -60,6 +60,17 @@ class DamperRate {
                const mjtNum* pos, const mjtNum* normal, const double* damping,
                DamperDirection direction);
 
+  // An upper bound of Bound's trace, so of Rate's lambda_max, for pairs whose
+  // bodies are each static or a single free body (infinite otherwise), from
+  // the points' distances alone (no Jacobian, no solve): a free body's
+  // inverse inertia at a point r from its centre of mass, 1/m + [r]x I^-1
+  // [r]x^T, acts on any direction at most by 1/m + |r|^2 / I_min, so
+  // lambda_max <= sum_j c_j (rows per point) sum_bodies (1/m + |r_j|^2 /
+  // I_min), with Bound's margin. For a caller to try before Bound.
+  double InertiaBound(const mjModel* m, const mjData* d, const GeomPair& pair, int points,
+                      const mjtNum* pos, const double* damping,
+                      DamperDirection direction) const;
+
  private:
   // The rows sqrt(c_j) (J1 - J0)^T u, u the normal or two tangents at each
   // point (k of them, returned), and their halves D^-1/2 L^-T of M^-1, row by

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -152,6 +153,35 @@ TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
   }
 }
 
+TEST_F(DamperRateTest, TheInertiaBoundTakesEachPointsDistanceOnTheSmallestMoment) {
+  // the cube's four bottom corners, at sqrt(3) a from its centre, I = 2/3 m
+  // a^2: each point moves at most by 1/m + 3 a^2 / I = 5.5 / m per unit
+  // force; the normal dampers' bound 4 x 5.5 c / m (above the rate, 6 c / m),
+  // friction's twice that (two rows per point), and Bound's margin
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  BottomCorners(kHalf, &pos, &normal);
+  const std::vector<double> damping(4, kDamping);
+  DamperRate rate;
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
+                                DamperDirection::kNormal),
+              22 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
+                                DamperDirection::kTangential),
+              44 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
+  // a body hinged to another: its inertia is not its own, no bound
+  model_ = Load(R"(<mujoco><worldbody><body pos="0 0 1"><freejoint/>
+    <geom type="box" size="0.01 0.01 0.01" mass="0.01"/>
+    <body pos="0.02 0 0"><joint type="hinge"/><geom type="sphere" size="0.01" mass="0.01"/>
+    </body></body></worldbody></mujoco>)");
+  mjData* hinged = MakeData(model_.get());
+  mj_forward(model_.get(), hinged);
+  EXPECT_EQ(rate.InertiaBound(model_.get(), hinged, pair_, 4, pos.data(), damping.data(),
+                              DamperDirection::kNormal),
+            std::numeric_limits<double>::infinity());
+}
+
 TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
   // balls 0 and 4 of a row of 6 free balls (their dofs apart, others'
   // between), touching along x: a normal damper between their centres
@@ -227,6 +257,11 @@ TEST_F(DamperRateTest, AgreesWithTheDefinitionsSolveOnRandomPointsOfOneAndTwoBod
       EXPECT_NEAR(rate.Rate(model_.get(), d, pair, points, pos.data(), normal.data(),
                             damping.data(), direction),
                   exact, kAgreement * exact)
+          << "trial " << trial << ", " << points << " points";
+      // the bound from the bodies' inertia is above it
+      EXPECT_GE(rate.InertiaBound(model_.get(), d, pair, points, pos.data(), damping.data(),
+                                  direction),
+                exact)
           << "trial " << trial << ", " << points << " points";
       const int rows = (direction == DamperDirection::kNormal ? 1 : 2) * points;
       smaller += rows > (pair.body[0] == 0 ? 6 : 12);
