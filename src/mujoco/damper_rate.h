@@ -40,7 +40,10 @@ class DamperRate {
   // pos[3 j ..] with unit normals normal[3 j ..] of pair, j < points, at d's
   // state: its positions' Jacobians and its factorized mass matrix (qLD:
   // after mj_forward or a step). 0 when nothing can move. Allocates only
-  // when a pair has more points than any before (so does Bound).
+  // when a pair has more points than any before or when the size of the
+  // matrix it solves changes (the smaller of the points' rows, one per
+  // point and damped direction, and the two bodies' trees' dofs); Bound only
+  // in the first case.
   double Rate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
               const mjtNum* pos, const mjtNum* normal, const double* damping,
               DamperDirection direction = DamperDirection::kTangential);
@@ -57,7 +60,25 @@ class DamperRate {
                const mjtNum* pos, const mjtNum* normal, const double* damping,
                DamperDirection direction);
 
+  // An upper bound of Bound's trace, so of Rate's lambda_max, for pairs whose
+  // bodies are each static or a single free body (infinite otherwise), from
+  // the points' distances alone (no Jacobian, no solve): a free body's
+  // inverse inertia at a point r from its centre of mass, 1/m + [r]x I^-1
+  // [r]x^T, acts on any direction at most by 1/m + |r|^2 / I_min, so
+  // lambda_max <= sum_j c_j (rows per point) sum_bodies (1/m + |r_j|^2 /
+  // I_min), with Bound's margin. For a caller to try before Bound.
+  double InertiaBound(const mjModel* m, const mjData* d, const GeomPair& pair, int points,
+                      const mjtNum* pos, const double* damping,
+                      DamperDirection direction) const;
+
  private:
+  // The rows sqrt(c_j) (J1 - J0)^T u, u the normal or two tangents at each
+  // point (k of them, returned), and their halves D^-1/2 L^-T of M^-1, row by
+  // row, in the workspace; with the two bodies' trees' dofs, the columns
+  // outside which the halves are 0.
+  int Halves(const mjModel* m, mjData* d, const GeomPair& pair, int points, const mjtNum* pos,
+             const mjtNum* normal, const double* damping, DamperDirection direction);
+
   struct Workspace;
   std::unique_ptr<Workspace> w_;
 };

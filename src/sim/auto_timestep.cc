@@ -193,9 +193,14 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
   // box's friction): its bound is not tried.
   uint8_t& bound_last = binding_[2 * points[first].pair + static_cast<int>(direction)];
   if (!bound_last) {
-    const double bound =
-        damper_rate_->Bound(contacts_.model().model(), d, pair, count, point_pos_.data(),
-                            point_normal_.data(), point_damping_.data(), direction);
+    // first the bound from the bodies' inertia alone, then Bound's
+    const mjModel* m = contacts_.model().model();
+    const double inertia_bound = damper_rate_->InertiaBound(
+        m, d, pair, count, point_pos_.data(), point_damping_.data(), direction);
+    if (lags / inertia_bound >= pace) return lags / inertia_bound;
+    const double bound = damper_rate_->Bound(m, d, pair, count, point_pos_.data(),
+                                             point_normal_.data(), point_damping_.data(),
+                                             direction);
     if (lags / bound >= pace) return lags / bound;
   }
   const double rate =

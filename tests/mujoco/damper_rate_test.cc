@@ -6,9 +6,15 @@
 
 #include "mujoco/damper_rate.h"
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -17,6 +23,32 @@
 
 namespace contactlaws::internal {
 namespace {
+
+// The definition's rate: the largest eigenvalue of the n x n matrix
+// C^(1/2) P J M^-1 J^T P C^(1/2) over all of the model's dofs, n = 3 points,
+// J the points' relative Jacobians, P the projections.
+double DefinitionRate(const mjModel* m, mjData* d, const GeomPair& pair, int points,
+                      const mjtNum* pos, const mjtNum* normal, const double* damping,
+                      DamperDirection direction) {
+  using Matrix = Eigen::Matrix<mjtNum, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const int nv = m->nv, n = 3 * points;
+  Matrix rows(n, nv), jac[2] = {Matrix(3, nv), Matrix(3, nv)};
+  for (int j = 0; j < points; ++j) {
+    for (int b = 0; b < 2; ++b) mj_jac(m, d, jac[b].data(), nullptr, pos + 3 * j, pair.body[b]);
+    const Eigen::Map<const Eigen::Vector3<mjtNum>> unit(normal + 3 * j);
+    Eigen::Matrix3<mjtNum> projection = unit * unit.transpose();
+    if (direction == DamperDirection::kTangential) {
+      projection = Eigen::Matrix3<mjtNum>::Identity() - projection;
+    }
+    rows.middleRows(3 * j, 3) = std::sqrt(damping[j]) * projection * (jac[1] - jac[0]);
+  }
+  Matrix inverse_rows(n, nv);  // M^-1 rows^T, row by row
+  mj_solveM(m, d, inverse_rows.data(), rows.data(), n);
+  const Eigen::MatrixX<mjtNum> product = rows * inverse_rows.transpose();
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixX<mjtNum>>(product, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
 
 class DamperRateTest : public testing::MujocoTest {
  protected:
@@ -121,6 +153,35 @@ TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
   }
 }
 
+TEST_F(DamperRateTest, TheInertiaBoundTakesEachPointsDistanceOnTheSmallestMoment) {
+  // the cube's four bottom corners, at sqrt(3) a from its centre, I = 2/3 m
+  // a^2: each point moves at most by 1/m + 3 a^2 / I = 5.5 / m per unit
+  // force; the normal dampers' bound 4 x 5.5 c / m (above the rate, 6 c / m),
+  // friction's twice that (two rows per point), and Bound's margin
+  constexpr double kHalf = 0.01;
+  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
+  std::vector<mjtNum> pos, normal;
+  BottomCorners(kHalf, &pos, &normal);
+  const std::vector<double> damping(4, kDamping);
+  DamperRate rate;
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
+                                DamperDirection::kNormal),
+              22 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
+                                DamperDirection::kTangential),
+              44 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
+  // a body hinged to another: its inertia is not its own, no bound
+  model_ = Load(R"(<mujoco><worldbody><body pos="0 0 1"><freejoint/>
+    <geom type="box" size="0.01 0.01 0.01" mass="0.01"/>
+    <body pos="0.02 0 0"><joint type="hinge"/><geom type="sphere" size="0.01" mass="0.01"/>
+    </body></body></worldbody></mujoco>)");
+  mjData* hinged = MakeData(model_.get());
+  mj_forward(model_.get(), hinged);
+  EXPECT_EQ(rate.InertiaBound(model_.get(), hinged, pair_, 4, pos.data(), damping.data(),
+                              DamperDirection::kNormal),
+            std::numeric_limits<double>::infinity());
+}
+
 TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
   // balls 0 and 4 of a row of 6 free balls (their dofs apart, others'
   // between), touching along x: a normal damper between their centres
@@ -143,6 +204,72 @@ TEST_F(DamperRateTest, TwoBallsAmongOthersActOnTheirTwoMassesAlone) {
   EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, pos, normal, &kDamping,
                         DamperDirection::kNormal),
               2 * kDamping / kMass, 1e-9 * kDamping / kMass);
+}
+
+TEST_F(DamperRateTest, AgreesWithTheDefinitionsSolveOnRandomPointsOfOneAndTwoBodies) {
+  // Rate solves the smaller of the two Gram matrices of the points' rows,
+  // one per point and damped direction, over the two bodies' trees' dofs (a
+  // cube's 4 corners: 6 x 6, not the definition's 12 x 12).
+  // Two backward-stable symmetric eigenvalue solves of matrices equal in
+  // exact arithmetic agree to some n eps lambda_max each (Weyl: a perturbed
+  // symmetric matrix's eigenvalues move by at most the perturbation's norm;
+  // the products' roundings are of the same order), n <= 18 here: a few
+  // hundred roundings at most; 1e-12 of lambda_max is thousands.
+  constexpr double kAgreement = 1e-12;
+  model_ = Load(R"(<mujoco>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body pos="0 0 1" quat="0.9 0.3 -0.2 0.1"><freejoint/>
+      <geom type="box" size="0.05 0.03 0.02" mass="0.37"/></body>
+    <body pos="0.3 0 1"><freejoint/><geom type="sphere" size="0.05" mass="0.2"/></body>
+    <body pos="0.6 0 1"><freejoint/><geom type="box" size="0.04 0.04 0.04" mass="1.3"/></body>
+  </worldbody>
+</mujoco>)");
+  mjData* d = MakeData(model_.get());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1), positive(0.1, 100);
+  int smaller = 0;  // the solves where the Gram matrix of the dofs is the smaller
+  for (int trial = 0; trial < 200; ++trial) {
+    // a random state: positions moved, orientations turned
+    for (int i = 0; i < model_->nq; ++i) d->qpos[i] = model_->qpos0[i] + 0.3 * unit(random);
+    mj_normalizeQuat(model_.get(), d->qpos);
+    mj_forward(model_.get(), d);
+    // a body on the floor (6 dofs) or against another body (12), 1 to 6 points
+    GeomPair pair;
+    pair.body = trial % 2 ? std::array<int, 2>{0, 1 + trial / 2 % 3}
+                          : std::array<int, 2>{1 + trial / 2 % 3, 1 + (trial / 2 + 1) % 3};
+    const int points = 1 + trial / 6 % 6;
+    std::vector<mjtNum> pos, normal;
+    std::vector<double> damping;
+    for (int j = 0; j < points; ++j) {
+      Eigen::Vector3<mjtNum> n(unit(random), unit(random), unit(random));
+      n.normalize();
+      for (int i = 0; i < 3; ++i) {
+        pos.push_back(d->xpos[3 * pair.body[1] + i] + 0.05 * unit(random));
+        normal.push_back(n[i]);
+      }
+      damping.push_back(positive(random));
+    }
+    for (DamperDirection direction : {DamperDirection::kTangential, DamperDirection::kNormal}) {
+      const double exact = DefinitionRate(model_.get(), d, pair, points, pos.data(),
+                                          normal.data(), damping.data(), direction);
+      DamperRate rate;
+      EXPECT_NEAR(rate.Rate(model_.get(), d, pair, points, pos.data(), normal.data(),
+                            damping.data(), direction),
+                  exact, kAgreement * exact)
+          << "trial " << trial << ", " << points << " points";
+      // the bound from the bodies' inertia is above it
+      EXPECT_GE(rate.InertiaBound(model_.get(), d, pair, points, pos.data(), damping.data(),
+                                  direction),
+                exact)
+          << "trial " << trial << ", " << points << " points";
+      const int rows = (direction == DamperDirection::kNormal ? 1 : 2) * points;
+      smaller += rows > (pair.body[0] == 0 ? 6 : 12);
+    }
+  }
+  // both solves were tried (400 in all)
+  EXPECT_GT(smaller, 20);
+  EXPECT_LT(smaller, 380);
 }
 
 }  // namespace
