@@ -320,7 +320,7 @@ struct ReplayOptions {
 };
 
 struct ReplayedTrajectory {
-  enum class Status { kComplete, kDiverged, kInterrupted };
+  using Status = RunStatus;  // kComplete, kDiverged or kInterrupted
   Status status = Status::kComplete;
   int start = 0;  // the sample the simulation started from
   // Against samples start .. last; a diverged simulation keeps its last

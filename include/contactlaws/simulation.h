@@ -258,13 +258,20 @@ struct AdvanceOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// How a run ended: a call of Advance, a trajectory's replay
+// (ReplayedTrajectory), a run of a sweep (the application's compare and
+// restitution), a sweep as a whole.
+enum class RunStatus {
+  kComplete,     // reached its end (the duration, or the first episode's end)
+  kDiverged,     // stopped at a divergence
+  kFailed,       // refused or failed (a sweep's run: its reason says why)
+  kInterrupted,  // stopped by a stop request (AdvanceOptions::stop, Ctrl-C)
+  kNotRun,       // never started: its sweep was stopped first
+};
+
 // How a call of Advance ended.
 struct AdvanceResult {
-  enum class Status {
-    kComplete,     // reached the duration (or the first episode's end)
-    kDiverged,     // stopped at divergence (see divergence)
-    kInterrupted,  // stopped by AdvanceOptions::stop
-  };
+  using Status = RunStatus;  // kComplete, kDiverged or kInterrupted
   Status status = Status::kComplete;
   std::optional<Divergence> divergence;
   // Set when the total energy of an undriven scene grew beyond

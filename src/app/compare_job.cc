@@ -65,8 +65,8 @@ std::string CompareTableText(const std::vector<CompareRow>& rows, bool frictions
                  "dissipated (J)");
   for (const CompareRow& r : rows) {
     const std::string cells = RunCells(r.spec, Field(r.restitution), frictions);
-    if (r.status != RunOutput::Status::kOk) {
-      fmt::format_to(out, "{} {}\n", cells, StatusName(r.status));
+    if (r.status != RunOutput::Status::kComplete) {
+      fmt::format_to(out, "{} {}\n", cells, SweepRunStatusName(r.status));
       continue;
     }
     fmt::format_to(out, "{} {:>10} {:>12} {:>14.6g} {:>14.6g} {:>13} {:>13} {:>15.6g}\n", cells,
@@ -150,7 +150,7 @@ void CompareTables::Add(const RunSpec& spec, RunOutput& out) {
                               out.restitution ? Number(*out.restitution) : Unknown()};
   if (frictions_) prefix.push_back(Text(std::string(FrictionName(*spec.friction))));
   const bool rows_valid =
-      out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed;
+      out.status == RunOutput::Status::kComplete || out.status == RunOutput::Status::kFailed;
   if (rows_valid) {
     // a failed run's rows up to its divergence are valid; an interrupted
     // run's are not kept
@@ -172,7 +172,7 @@ void CompareTables::Add(const RunSpec& spec, RunOutput& out) {
   std::vector<Cell> cells = prefix;
   const RunSummary& r = out.summary;
   auto known = [](const std::optional<double>& v) { return v ? Number(*v) : Unknown(); };
-  if (out.status == RunOutput::Status::kOk) {
+  if (out.status == RunOutput::Status::kComplete) {
     for (Cell c : {Count(r.impacts), known(r.restitution_post), Number(r.max_depth),
                    Number(r.max_force), known(r.contact_duration), known(r.time_to_rest),
                    Number(out.dissipated), Text("ok"), Text("")}) {
@@ -181,7 +181,7 @@ void CompareTables::Add(const RunSpec& spec, RunOutput& out) {
   } else {
     // a failed run's numbers are not to be trusted: only its status
     for (int i = 0; i < 7; ++i) cells.push_back(Unknown());
-    cells.push_back(Text(StatusName(out.status)));
+    cells.push_back(Text(SweepRunStatusName(out.status)));
     cells.push_back(Text(out.reason));
   }
   summary_.AddRow(cells);

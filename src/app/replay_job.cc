@@ -105,16 +105,18 @@ Table ScoresTable(const ReplayScores& s) {
   for (size_t i = 0; i < s.trajectory.size(); ++i) {
     table.AddRow({Text(s.trajectory[i]), Count(s.samples[i]), Count(s.start[i]), Number(s.e_q[i]),
                   Number(s.position_rms[i]), Number(s.angle_rms[i]), Number(s.joint_rms[i]),
-                  Number(s.weighted[i]), Text(StatusName(s.status[i]))});
+                  Number(s.weighted[i]), Text(ReplayStatusName(s.status[i]))});
   }
   return table;
 }
 
-const char* StatusName(ReplayedTrajectory::Status status) {
+const char* ReplayStatusName(RunStatus status) {
   switch (status) {
-    case ReplayedTrajectory::Status::kComplete: return "complete";
-    case ReplayedTrajectory::Status::kDiverged: return "diverged";
-    case ReplayedTrajectory::Status::kInterrupted: return "interrupted";
+    case RunStatus::kComplete: return "complete";
+    case RunStatus::kDiverged: return "diverged";
+    case RunStatus::kFailed: return "failed";
+    case RunStatus::kInterrupted: return "interrupted";
+    case RunStatus::kNotRun: return "not run";
   }
   return "";
 }

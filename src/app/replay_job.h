@@ -76,8 +76,9 @@ SimulatedSamples SimulatedOf(const MeasuredData& data,
 // e_q, position_rms, angle_rms, joint_rms, weighted, status.
 Table ScoresTable(const ReplayScores& scores);
 
-// "complete", "diverged" or "interrupted".
-const char* StatusName(ReplayedTrajectory::Status status);
+// A trajectory's status in replay's tables: "complete", "diverged" or
+// "interrupted" (the others are not a replay's).
+const char* ReplayStatusName(RunStatus status);
 
 class ReplayJob {
  public:

@@ -22,7 +22,7 @@ struct FirstEpisode {
 
 FirstEpisode FirstEpisodeOf(const RunSpec& spec, const RunOutput& run) {
   FirstEpisode episode{spec, std::nullopt, false};
-  if (run.status == RunOutput::Status::kOk && run.first) {
+  if (run.status == RunOutput::Status::kComplete && run.first) {
     episode.first = run.first;
     episode.closed = !run.first->open;
   }
@@ -102,7 +102,7 @@ RestitutionResult RunRestitution(const RestitutionPlan& plan, const OptionReader
       scene, plan.in.common.simulation, plan.specs, plan.advices, plan.sweep, reader, monitor,
       [&](int k, RunOutput& run) {
         const FirstEpisode episode = FirstEpisodeOf(plan.specs[k], run);
-        if (run.status == RunOutput::Status::kOk && !episode.closed) {
+        if (run.status == RunOutput::Status::kComplete && !episode.closed) {
           ++result.incomplete;
           monitor->Warn(scene.path(),
                         fmt::format("{}: {} within {}={} s", Describe(plan.specs[k]),
@@ -110,7 +110,7 @@ RestitutionResult RunRestitution(const RestitutionPlan& plan, const OptionReader
                                     reader.Name("duration"), plan.in.common.duration));
         }
         // an interrupted run leaves no row; a failed one a row not known
-        if (run.status != RunOutput::Status::kOk && run.status != RunOutput::Status::kFailed) {
+        if (run.status != RunOutput::Status::kComplete && run.status != RunOutput::Status::kFailed) {
           return;
         }
         result.table.AddRow(Cells(episode));

@@ -39,7 +39,7 @@ struct RestitutionResult {
   Table table;
   // the printed table: a line per row, each with its closed-form e_post
   std::string text;
-  SweepStatus status = SweepStatus::kOk;
+  SweepStatus status = SweepStatus::kComplete;
   // runs whose first contact did not end within the duration (each warned)
   int incomplete = 0;
 };

@@ -239,12 +239,13 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
   return advices;
 }
 
-const char* StatusName(RunOutput::Status status) {
+const char* SweepRunStatusName(RunStatus status) {
   switch (status) {
-    case RunOutput::Status::kOk: return "ok";
-    case RunOutput::Status::kFailed: return "failed";
-    case RunOutput::Status::kInterrupted: return "interrupted";
-    case RunOutput::Status::kNotRun: return "not run";
+    case RunStatus::kComplete: return "ok";
+    case RunStatus::kDiverged: return "diverged";
+    case RunStatus::kFailed: return "failed";
+    case RunStatus::kInterrupted: return "interrupted";
+    case RunStatus::kNotRun: return "not run";
   }
   return "?";
 }
@@ -286,7 +287,7 @@ SweepStatus Sweep(const Scene& scene, const SimulationOptions& options,
   }
   monitor->SweepDone();
   if (interrupted) return SweepStatus::kInterrupted;
-  return failed ? SweepStatus::kFailed : SweepStatus::kOk;
+  return failed ? SweepStatus::kFailed : SweepStatus::kComplete;
 }
 
 }  // namespace contactlaws::app

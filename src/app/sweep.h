@@ -103,8 +103,8 @@ std::vector<std::vector<TimestepAdvice>> Prepare(const Scene& scene,
 
 // What one run of a sweep leaves for the thread that delivers, in order.
 struct RunOutput {
-  enum class Status { kOk, kFailed, kInterrupted, kNotRun };
-  Status status = Status::kOk;
+  using Status = RunStatus;  // kComplete, kFailed, kInterrupted or kNotRun
+  Status status = Status::kComplete;
   std::string reason;                 // failed, interrupted
   std::vector<std::string> warnings;  // for the monitor
   std::optional<double> restitution;  // as reported (1 for Hertz, none when not read)
@@ -119,8 +119,9 @@ struct RunOutput {
   std::optional<Episode> first;        // the first episode of the first tag
 };
 
-// "ok", "failed", "interrupted", "not run".
-const char* StatusName(RunOutput::Status status);
+// A run's status in a sweep's outputs: "ok" (kComplete), "failed" (a run
+// that diverged fails, its reason says where), "interrupted", "not run".
+const char* SweepRunStatusName(RunStatus status);
 
 // How the runs of a sweep go and what they record.
 struct SweepOptions {
@@ -139,7 +140,7 @@ struct SweepOptions {
 };
 
 // How a sweep ended.
-enum class SweepStatus { kOk, kFailed, kInterrupted };
+using SweepStatus = RunStatus;  // kComplete, kFailed or kInterrupted
 
 // Runs every spec (jobs at a time; in a cluster job, each rank its share)
 // and hands each output to deliver, in order, on every rank. The runs'

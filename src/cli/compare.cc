@@ -18,7 +18,7 @@ namespace {
 
 using app::RunOutput;
 using app::RunSpec;
-using app::StatusName;
+using app::SweepRunStatusName;
 using app::SummaryColumns;
 
 // law, restitution, and friction when the runs compare friction models.
@@ -57,21 +57,21 @@ class CompareFiles {
 
   void Write(const RunSpec& spec, const RunOutput& out) {
     std::vector<std::string> fields = RunFields(spec, out.restitution);
-    if (out.status == RunOutput::Status::kOk || out.status == RunOutput::Status::kFailed) {
+    if (out.status == RunOutput::Status::kComplete || out.status == RunOutput::Status::kFailed) {
       // a failed run's rows up to its divergence are valid; an interrupted
       // run's are not written at all
       trajectories_.Write(out.trajectory);
       impacts_.Write(out.impacts);
     }
     const RunSummary& s = out.summary;
-    if (out.status == RunOutput::Status::kOk) {
+    if (out.status == RunOutput::Status::kComplete) {
       fields.insert(fields.end(), {Field(s.impacts), Field(s.restitution_post),
                                    Field(s.max_depth), Field(s.max_force),
                                    Field(s.contact_duration), Field(s.time_to_rest),
                                    Field(out.dissipated), "ok", ""});
     } else {
       // a failed run's numbers are not to be trusted: only its status
-      fields.insert(fields.end(), {"", "", "", "", "", "", "", StatusName(out.status), out.reason});
+      fields.insert(fields.end(), {"", "", "", "", "", "", "", SweepRunStatusName(out.status), out.reason});
     }
     summary_.Fields(fields);
     trajectories_.Flush();

@@ -73,7 +73,7 @@ void ProgramMonitor::SweepDone() { EndProgress(); }
 
 int ExitStatus(app::SweepStatus status) {
   switch (status) {
-    case app::SweepStatus::kOk: return 0;
+    case app::SweepStatus::kComplete: return 0;
     case app::SweepStatus::kFailed: return kExitIncomplete;
     case app::SweepStatus::kInterrupted:
       fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
