@@ -2,16 +2,13 @@
 
 #include "cli/csv_file.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 
 #include <filesystem>
 
 #include <fmt/format.h>
 
-#include "cli/cluster.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws::cli {
@@ -30,23 +27,13 @@ bool SamePath(const std::string& a, const std::string& b) {
 CsvFile::CsvFile(std::string path) : path_(std::move(path)) {
   if (path_ == "-") {
     file_ = stdout;
-    is_stdout_ = true;
     return;
   }
-  if (!WritesOutputs()) return;  // another rank of the job writes it
-  temp_ = path_ + ".tmp";
-  file_ = std::fopen(temp_.c_str(), "w");
-  if (!file_) {
-    throw Error(fmt::format("{}: cannot write ({})", path_, std::strerror(errno)));
-  }
+  pending_.emplace(path_, "w");
+  file_ = pending_->get();
 }
 
-CsvFile::~CsvFile() {
-  if (file_ && !is_stdout_) {
-    std::fclose(file_);
-    std::remove(temp_.c_str());
-  }
-}
+CsvFile::~CsvFile() = default;
 
 void CsvFile::Fields(const std::vector<std::string>& fields) {
   line_.clear();
@@ -72,19 +59,12 @@ void CsvFile::Flush() {
 }
 
 void CsvFile::Commit() {
-  if (is_stdout_) {
+  if (!pending_) {
     std::fflush(stdout);
     return;
   }
-  if (!file_) return;
-  const bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
-  std::fclose(file_);
   file_ = nullptr;
-  if (!ok || std::rename(temp_.c_str(), path_.c_str()) != 0) {
-    const int error = errno;
-    std::remove(temp_.c_str());
-    throw Error(fmt::format("{}: cannot write ({})", path_, std::strerror(error)));
-  }
+  pending_->Commit();
 }
 
 

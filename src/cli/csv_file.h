@@ -16,6 +16,7 @@
 
 #include "app/csv_text.h"
 #include "app/table.h"
+#include "cli/pending_file.h"
 
 namespace contactlaws::cli {
 
@@ -63,9 +64,8 @@ class CsvFile {
 
  private:
   std::string path_;
-  std::string temp_;
-  std::FILE* file_ = nullptr;
-  bool is_stdout_ = false;
+  std::optional<PendingFile> pending_;  // none: standard output
+  std::FILE* file_ = nullptr;           // stdout, the pending file's, or none
   std::string line_;
 };
 

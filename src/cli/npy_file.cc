@@ -13,7 +13,6 @@
 
 #include <fmt/format.h>
 
-#include "cli/cluster.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws::cli {
@@ -85,52 +84,35 @@ std::string NpyHeader(const std::vector<std::string>& columns, size_t rows, size
   return header;
 }
 
-NpyFile::NpyFile(std::string path) : path_(std::move(path)) {
-  if (!WritesOutputs()) return;  // another rank of the job writes it
-  temp_ = path_ + ".tmp";
-  file_ = std::fopen(temp_.c_str(), "wb");
-  if (!file_) {
-    throw Error(fmt::format("{}: cannot write ({})", path_, std::strerror(errno)));
-  }
-}
-
-NpyFile::~NpyFile() {
-  if (file_) {
-    std::fclose(file_);
-    std::remove(temp_.c_str());
-  }
-}
+NpyFile::NpyFile(std::string path) : file_(std::move(path), "wb") {}
 
 void NpyFile::Header(const std::vector<std::string>& columns) {
   columns_ = columns;
   const std::string header = NpyHeader(columns_, 0);
   header_length_ = header.size();
-  if (file_) std::fwrite(header.data(), 1, header.size(), file_);
+  if (file_.get()) std::fwrite(header.data(), 1, header.size(), file_.get());
 }
 
 void NpyFile::Row(const std::vector<double>& values) {
   for (const double v : values) {
     if (!std::isfinite(v)) {
-      throw Error(fmt::format("{}: refusing to write a non-finite value", path_));
+      throw Error(fmt::format("{}: refusing to write a non-finite value", file_.path()));
     }
   }
   ++rows_;
-  if (file_) std::fwrite(values.data(), sizeof(double), values.size(), file_);
+  if (file_.get()) std::fwrite(values.data(), sizeof(double), values.size(), file_.get());
 }
 
 void NpyFile::Commit() {
-  if (!file_) return;
-  const std::string header = NpyHeader(columns_, rows_, header_length_);
-  bool ok = std::fseek(file_, 0, SEEK_SET) == 0 &&
-            std::fwrite(header.data(), 1, header.size(), file_) == header.size();
-  ok = std::fflush(file_) == 0 && !std::ferror(file_) && ok;
-  std::fclose(file_);
-  file_ = nullptr;
-  if (!ok || std::rename(temp_.c_str(), path_.c_str()) != 0) {
-    const int error = errno;
-    std::remove(temp_.c_str());
-    throw Error(fmt::format("{}: cannot write ({})", path_, std::strerror(error)));
+  if (std::FILE* f = file_.get()) {
+    // the row count, now known, into the header's room for it
+    const std::string header = NpyHeader(columns_, rows_, header_length_);
+    if (std::fseek(f, 0, SEEK_SET) != 0 ||
+        std::fwrite(header.data(), 1, header.size(), f) != header.size()) {
+      throw Error(fmt::format("{}: cannot write ({})", file_.path(), std::strerror(errno)));
+    }
   }
+  file_.Commit();
 }
 
 }  // namespace contactlaws::cli

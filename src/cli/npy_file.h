@@ -15,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/pending_file.h"
+
 namespace contactlaws::cli {
 
 // Whether path names a NumPy file (ends in ".npy").
@@ -33,10 +35,6 @@ class NpyFile {
   // Throws Error "PATH: cannot write (reason)". Writes PATH.tmp, renamed to
   // PATH by Commit; an uncommitted file is removed.
   explicit NpyFile(std::string path);
-  ~NpyFile();
-
-  NpyFile(const NpyFile&) = delete;
-  NpyFile& operator=(const NpyFile&) = delete;
 
   void Header(const std::vector<std::string>& columns);
   // One record; NaN/inf are refused (Error), as the CSV refuses them.
@@ -46,9 +44,7 @@ class NpyFile {
   void Commit();
 
  private:
-  std::string path_;
-  std::string temp_;
-  std::FILE* file_ = nullptr;
+  PendingFile file_;
   std::vector<std::string> columns_;
   size_t header_length_ = 0;
   size_t rows_ = 0;
