@@ -67,16 +67,11 @@ TEST_F(EulerLedgerTest, TheDissipatedEnergyIsWhatTheBodiesLost) {
   EXPECT_GT(std::abs(coarse / fine), kLeastOrderRatio);
 }
 
-// A plank hinged at one end falls from level onto the floor, its far end's
-// two corners landing and bouncing: under --timestep auto (its steps as
-// coarse as the default accuracy allows) the ledger's total after the
-// landings, the plank at rest, is the start's.
-class HingedPlankTest : public testing::MujocoTest,
-                        public ::testing::WithParamInterface<const char*> {};
-
-TEST_P(HingedPlankTest, ItsLandingsUnderAutoBookWhatTheyTook) {
-  const std::string friction = GetParam();
-  Simulation& sim = MakeSimulation(fmt::format(R"(<mujoco>
+// A plank (1 m, 0.5 kg) hinged at one end, level 0.3 m above the floor,
+// Euler: it falls onto the floor, its far end's two corners landing and
+// bouncing. friction: the tag's friction keys.
+std::string PlankOnAPivot(const std::string& friction) {
+  return fmt::format(R"(<mujoco>
   <option timestep="1e-4" integrator="Euler"/>
   <worldbody>
     <geom name="floor" type="plane" size="2 2 0.1"/>
@@ -85,7 +80,19 @@ TEST_P(HingedPlankTest, ItsLandingsUnderAutoBookWhatTheyTook) {
   </worldbody>
   <custom><text name="contactlaw:plank-floor" data="geom1=plank geom2=floor law=hunt-crossley
     restitution=0.3 stiffness=1e7 friction={}"/></custom>
-</mujoco>)", friction == "none" ? "none" : "coulomb mu=0.5"));
+</mujoco>)",
+                     friction);
+}
+
+// Under --timestep auto (its steps as coarse as the default accuracy
+// allows) the ledger's total after the plank's landings, the plank at rest,
+// is the start's.
+class HingedPlankTest : public testing::MujocoTest,
+                        public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(HingedPlankTest, ItsLandingsUnderAutoBookWhatTheyTook) {
+  const std::string friction = GetParam();
+  Simulation& sim = MakeSimulation(PlankOnAPivot(friction == "none" ? "none" : "coulomb mu=0.5"));
   AutoTimestep stepper(sim.contacts());
   sim.Step(stepper.Next(sim.data(), 1.0));
   const double start = sim.Energy().total();
@@ -112,16 +119,7 @@ TEST_F(EulerLedgerTest, AnAutoRunThatGainsEnergyIsToldOfItsAccuracy) {
   if (std::getenv(kTestContactStepsVariable)) {
     GTEST_SKIP() << "contact steps resolve the landings inside the step: no energy gained";
   }
-  Simulation& sim = MakeSimulation(R"(<mujoco>
-  <option timestep="1e-4" integrator="Euler"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="2 2 0.1"/>
-    <body name="plank" pos="0 0 0.3"><joint name="pivot" type="hinge" axis="0 1 0"/>
-      <geom name="plank" type="box" pos="0.5 0 0" size="0.5 0.05 0.01" mass="0.5"/></body>
-  </worldbody>
-  <custom><text name="contactlaw:plank-floor" data="geom1=plank geom2=floor law=hunt-crossley
-    restitution=0.3 stiffness=1e7 friction=none"/></custom>
-</mujoco>)");
+  Simulation& sim = MakeSimulation(PlankOnAPivot("none"));
   AdvanceOptions options;
   options.duration = 1.0;
   options.auto_timestep = AutoTimestepOptions{};
