@@ -295,14 +295,16 @@ void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& poi
     }
     // kHeldForce (held_ filled at the last commit): the end's half is the
     // start's forces at the end's rates, for the points in contact at both
-    for (const PointEvaluation& e : points) {
-      if (e.touch || e.episode < 0) continue;
-      for (const HeldForce& held : held_) {
-        if (held.episode != e.episode) continue;
-        const double power = held.damping * e.depth_rate -
-                             Dot3(held.friction, e.slip) - Dot3(held.torque, e.spin);
-        dissipated_ += 0.5 * h * (power - e.dissipated_power - e.friction_power);
-        break;
+    if (!held_.empty()) {
+      for (const PointEvaluation& e : points) {
+        if (e.touch || e.episode < 0) continue;
+        const auto held = std::lower_bound(
+            held_.begin(), held_.end(), e.episode,
+            [](const HeldForce& f, int episode) { return f.episode < episode; });
+        if (held == held_.end() || held->episode != e.episode) continue;
+        const double held_power = held->damping * e.depth_rate -
+                                  Dot3(held->friction, e.slip) - Dot3(held->torque, e.spin);
+        dissipated_ += 0.5 * h * (held_power - e.dissipated_power - e.friction_power);
       }
     }
   }
@@ -317,6 +319,9 @@ void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& poi
                      {e.friction_torque[0], e.friction_torque[1], e.friction_torque[2]}};
       held_.push_back(held);
     }
+    // by episode, for the next commit's lookups (a pile of 216 points)
+    std::sort(held_.begin(), held_.end(),
+              [](const HeldForce& a, const HeldForce& b) { return a.episode < b.episode; });
   }
   has_committed_ = true;
   committed_time_ = t;
