@@ -120,6 +120,14 @@ double DamperRate::Rate(const mjModel* m, mjData* d, const GeomPair& pair, int p
   // matrix C^(1/2) P J M^-1 J^T P C^(1/2) has the nonzero eigenvalues of
   // S S^T (P = t1 t1^T + t2 t2^T for two tangents t, or n n^T)
   const int k = Halves(m, d, pair, points, pos, normal, damping, direction);
+  return LargestEigenvalue(k, nv);
+}
+
+double DamperRate::RateAfterBound(const mjModel* m) {
+  return m->nv == 0 || rows_ == 0 ? 0.0 : LargestEigenvalue(rows_, m->nv);
+}
+
+double DamperRate::LargestEigenvalue(int k, int nv) {
   Workspace& w = *w_;
   const int dofs = static_cast<int>(w.dofs.size());
   if (dofs == 0) return 0;
@@ -161,8 +169,10 @@ double DamperRate::Bound(const mjModel* m, mjData* d, const GeomPair& pair, int 
                          const mjtNum* pos, const mjtNum* normal, const double* damping,
                          DamperDirection direction) {
   const int nv = m->nv;
+  rows_ = 0;
   if (nv == 0 || points == 0) return 0;
   const int k = Halves(m, d, pair, points, pos, normal, damping, direction);
+  rows_ = k;
   Workspace& w = *w_;
   // the k x k matrix halves halves^T over the two bodies' trees' dofs (as
   // Rate), its squared entries and its trace

@@ -67,6 +67,11 @@ class DamperRate {
   // [r]x^T, acts on any direction at most by 1/m + |r|^2 / I_min, so
   // lambda_max <= sum_j c_j (rows per point) sum_bodies (1/m + |r_j|^2 /
   // I_min), with Bound's margin. For a caller to try before Bound.
+  // Rate of the dampers the last Bound took, at the same state: Bound's rows
+  // and halves reused (a caller whose bound did not decide goes on to the
+  // exact rate without forming them again).
+  double RateAfterBound(const mjModel* m);
+
   double InertiaBound(const mjModel* m, const mjData* d, const GeomPair& pair, int points,
                       const mjtNum* pos, const double* damping,
                       DamperDirection direction) const;
@@ -76,11 +81,14 @@ class DamperRate {
   // point (k of them, returned), and their halves D^-1/2 L^-T of M^-1, row by
   // row, in the workspace; with the two bodies' trees' dofs, the columns
   // outside which the halves are 0.
+  // The largest eigenvalue of the halves' Gram matrix (k rows of nv).
+  double LargestEigenvalue(int k, int nv);
   int Halves(const mjModel* m, mjData* d, const GeomPair& pair, int points, const mjtNum* pos,
              const mjtNum* normal, const double* damping, DamperDirection direction);
 
   struct Workspace;
   std::unique_ptr<Workspace> w_;
+  int rows_ = 0;  // the rows of the last Bound (RateAfterBound)
 };
 
 }  // namespace contactlaws::internal

@@ -192,9 +192,10 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
   // whose lag bound the last step is likely to bind this one (a resting
   // box's friction): its bound is not tried.
   uint8_t& bound_last = binding_[2 * points[first].pair + static_cast<int>(direction)];
+  const mjModel* m = contacts_.model().model();
+  bool bounded = false;  // Bound's rows formed at this state
   if (!bound_last) {
     // first the bound from the bodies' inertia alone, then Bound's
-    const mjModel* m = contacts_.model().model();
     const double inertia_bound = damper_rate_->InertiaBound(
         m, d, pair, count, point_pos_.data(), point_damping_.data(), direction);
     if (lags / inertia_bound >= pace) return lags / inertia_bound;
@@ -202,10 +203,12 @@ double AutoTimestep::DampersLag(mjData* d, size_t first, size_t end,
                                              point_normal_.data(), point_damping_.data(),
                                              direction);
     if (lags / bound >= pace) return lags / bound;
+    bounded = true;
   }
-  const double rate =
-      damper_rate_->Rate(contacts_.model().model(), d, pair, count, point_pos_.data(),
-                         point_normal_.data(), point_damping_.data(), direction);
+  const double rate = bounded ? damper_rate_->RateAfterBound(m)
+                              : damper_rate_->Rate(m, d, pair, count, point_pos_.data(),
+                                                   point_normal_.data(),
+                                                   point_damping_.data(), direction);
   const double lag = rate > 0 ? lags / rate : kInfinity;
   bound_last = lag < pace;
   return lag;

@@ -150,6 +150,8 @@ TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
                                          damping.data(), DamperDirection::kTangential);
     EXPECT_GE(tangential, exact);
     EXPECT_LE(tangential, std::sqrt(6.0) * exact * (1 + 1e-8));
+    // the exact rate from Bound's rows: Rate's, to the bit
+    EXPECT_EQ(rate.RateAfterBound(model_.get()), exact);
   }
 }
 
