@@ -152,7 +152,10 @@ TEST_F(EstimateTest, APlankOnAPivotIsSteppedAheadToItsLanding) {
   // (w' lever h ~ 2e-3 m/s at 1e-4 s)
   constexpr double kLookAheadTolerance = 3e-3;  // m/s
   EXPECT_NEAR(e.impact_velocity, w * lever, kLookAheadTolerance);
-  EXPECT_NEAR(e.effective_mass, inertia / (lever * lever), 1e-3);
+  // read a step before the touch, at the nearest points MuJoCo's collider
+  // gives: measured 4.6e-4 kg (2.5e-3) from the closed form; twice that
+  constexpr double kEffectiveMassTolerance = 1e-3;  // kg, of 0.18 kg
+  EXPECT_NEAR(e.effective_mass, inertia / (lever * lever), kEffectiveMassTolerance);
 }
 
 }  // namespace
