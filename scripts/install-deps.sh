@@ -27,6 +27,7 @@ packages=(
   libegl-dev          # contactlaws render: an OpenGL context without a display (EGL)
   libegl-mesa0        # Mesa's EGL: the surfaceless platform, software rendering (llvmpipe)
   libpng-dev          # contactlaws render DIR/: the PNG files, and the render test reads them
+  zlib1g-dev          # run --output FILE.npz: the archive's CRC-32s
   ffmpeg              # contactlaws render FILE.mp4|FILE.gif, and ffprobe for its test
   libopenmpi-dev      # CONTACTLAWS_MPI: replay and fit over the ranks of a job (docs/cluster.md)
   openmpi-bin         # mpirun, for mpi_test

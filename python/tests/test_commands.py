@@ -323,17 +323,37 @@ def test_messages_name_the_keyword_arguments(capfd):
             == "use impacts_per_point=True or settle=True; see contactlaws.check()")
 
 
-def test_run_writes_numpy_records_that_hold_the_csvs_doubles(tmp_path):
-    """run --output FILE.npy: numpy.load gives one float64 field per CSV
-    column, each number the CSV's double (the CSV writes -0 as 0)."""
+def test_run_writes_a_numpy_archive_that_holds_the_csvs_doubles(tmp_path):
+    """run --output FILE.npz: numpy.load gives the rows (float64) and the
+    column names, each number the CSV's double (the CSV writes -0 as 0)."""
     import numpy as np
     args = ["run", BALL, "--duration", "0.5", "--friction", "coulomb"]
     cli(*args, "--output", str(tmp_path / "ball.csv"))
-    cli(*args, "--output", str(tmp_path / "ball.npy"))
-    records = np.load(tmp_path / "ball.npy")
-    frame = pd.DataFrame(records)
+    cli(*args, "--output", str(tmp_path / "ball.npz"))
+    archive = np.load(tmp_path / "ball.npz")
+    assert sorted(archive.files) == ["columns", "rows"]
+    assert archive["rows"].dtype == np.float64
+    frame = pd.DataFrame(archive["rows"], columns=archive["columns"])
     expected = read(tmp_path / "ball.csv").astype(np.float64)  # a column of 0s reads as ints
     assert list(frame.columns) == list(expected.columns)
-    assert all(records.dtype[name] == np.float64 for name in records.dtype.names)
     assert len(frame) == 501
     pd.testing.assert_frame_equal(frame + 0.0, expected, check_exact=True)
+
+
+def test_a_numpy_archive_of_many_bodies_loads_with_numpys_default_limits(tmp_path):
+    """64 balls: 10 columns each, more names than a .npy header may hold
+    (numpy.load refuses one beyond 10000 bytes); the archive loads as is, and
+    a .npy is refused before the run, naming the .npz."""
+    import numpy as np
+    scene = os.path.join(os.environ["CONTACTLAWS_MJCF"], "ball_box_64.xml")
+    cli("run", scene, "--duration", "1e-4", "--sample-rate", "1e5",
+        "--output", str(tmp_path / "box.npz"))
+    archive = np.load(tmp_path / "box.npz")
+    names = list(archive["columns"])
+    assert len(names) > 640 and names[0] == "time"
+    assert sum(len(repr((n, "<f8"))) for n in names) > 10000  # a .npy's descr alone
+    assert archive["rows"].shape == (11, len(names))
+    refused = cli("run", scene, "--output", str(tmp_path / "box.npy"), check=False)
+    assert refused.returncode != 0
+    assert refused.stderr.count("\n") == 1 and "give FILE.npz" in refused.stderr
+    assert not (tmp_path / "box.npy").exists()

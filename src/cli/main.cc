@@ -94,8 +94,9 @@ void AddRun(CLI::App* app, Commands* c) {
   AddCommon(c->run_cmd, &c->run, true);
   AddOverrides(c->run_cmd, &c->run.law, &c->run.restitution);
   c->run_cmd->add_option("--output", c->run.output,
-                         "trajectory CSV ('-' for stdout), or NumPy records for FILE.npy "
-                         "(numpy.load; the same doubles, no digits); none if absent");
+                         "trajectory CSV ('-' for stdout), or NumPy's archive for FILE.npz "
+                         "(numpy.load: rows and columns; the same doubles, no digits); none if "
+                         "absent");
   c->run_cmd->add_option("--impacts", c->run.impacts,
                          "impact log CSV, one row per collision of a pair");
   c->run_cmd->add_flag("--impacts-per-point", c->run.impacts_per_point,

@@ -14,7 +14,7 @@
 #include "app/arena.h"
 #include "app/impact_table.h"
 #include "cli/csv_file.h"
-#include "cli/npy_file.h"
+#include "cli/npz_file.h"
 #include "cli/report.h"
 #include "sim/start_contact.h"
 #include "sim/summary.h"
@@ -36,29 +36,29 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
   }
 }
 
-// The impact log of sim, in rows, committed.
-// The trajectory's file: NumPy's records for a path ending in .npy, CSV
+// The trajectory's file: NumPy's archive for a path ending in .npz, CSV
 // otherwise.
 class TrajectoryFile {
  public:
   explicit TrajectoryFile(const std::string& path) {
-    if (IsNpyPath(path)) {
-      npy_.emplace(path);
+    if (HasExtension(path, ".npz")) {
+      npz_.emplace(path);
     } else {
       csv_.emplace(path);
     }
   }
   void Header(const std::vector<std::string>& columns) {
-    npy_ ? npy_->Header(columns) : csv_->Header(columns);
+    npz_ ? npz_->Header(columns) : csv_->Header(columns);
   }
-  void Row(const std::vector<double>& values) { npy_ ? npy_->Row(values) : csv_->Row(values); }
-  void Commit() { npy_ ? npy_->Commit() : csv_->Commit(); }
+  void Row(const std::vector<double>& values) { npz_ ? npz_->Row(values) : csv_->Row(values); }
+  void Commit() { npz_ ? npz_->Commit() : csv_->Commit(); }
 
  private:
-  std::optional<NpyFile> npy_;
+  std::optional<NpzFile> npz_;
   std::optional<CsvFile> csv_;
 };
 
+// The impact log of sim, in rows, committed.
 void WriteImpacts(const Simulation& sim, app::ImpactRows rows, CsvFile* impacts) {
   WriteTable(app::ImpactTable(sim, app::ImpactsOf(sim.contacts(), rows)), impacts);
   impacts->Commit();
@@ -70,6 +70,13 @@ int RunCommand(const RunArgs& args) {
   // one file is written by one writer
   if (args.output && args.impacts && SamePath(*args.output, *args.impacts)) {
     Refuse("--impacts", *args.impacts, "is the --output path too: give the two files two paths");
+  }
+  // a .npy would name every column in its header, which numpy.load refuses
+  // beyond 10000 bytes (49 balls' columns)
+  if (args.output && HasExtension(*args.output, ".npy")) {
+    Refuse("--output", *args.output,
+           "is refused: give FILE.npz, NumPy's archive (a .npy's header names every column, "
+           "which numpy.load refuses for many bodies)");
   }
   const CommonOptions common = ParseCommon(args);
   SimulationOptions options = common.simulation;
