@@ -74,10 +74,13 @@ void ProgramMonitor::SweepDone() { EndProgress(); }
 int ExitStatus(app::SweepStatus status) {
   switch (status) {
     case app::SweepStatus::kComplete: return 0;
-    case app::SweepStatus::kFailed: return kExitIncomplete;
     case app::SweepStatus::kInterrupted:
       fmt::print(stderr, "contactlaws: interrupted: the finished runs are written\n");
       return kExitInterrupted;
+    // a sweep ends complete, failed or interrupted (Sweep); its runs diverge
+    case app::SweepStatus::kFailed:
+    case app::SweepStatus::kDiverged:
+    case app::SweepStatus::kNotRun: return kExitIncomplete;
   }
   return kExitIncomplete;
 }

@@ -32,9 +32,14 @@ std::string BracketedGiven(std::string_view key, std::string_view word) {
   return "<" + std::string(key) + " " + std::string(word) + ">";
 }
 std::string BracketedSet(std::string_view key) { return "<" + std::string(key) + "!>"; }
+std::string BracketedValued(std::string_view key, std::string_view number) {
+  return "<" + std::string(key) + "=" + std::string(number) + ">";
+}
+std::string BracketedCommand(std::string_view name) { return "<" + std::string(name) + "()>"; }
 
 const OptionReader kKeywords(kKeywordSpelling);
-const OptionReader kBracketed({&Bracketed, &BracketedGiven, &BracketedSet});
+const OptionReader kBracketed(
+    {&Bracketed, &BracketedGiven, &BracketedSet, &BracketedValued, &BracketedCommand});
 
 TEST(OptionGrammarTest, ANumberReadsAsItsText) {
   EXPECT_EQ(kKeywords.Positive("timestep", 2.5e-4, "s"),
