@@ -112,6 +112,13 @@ struct Episode {
   // rates mix its points: a second corner that lands faster than the first
   // touched raises its largest approach, and is no chain.
   bool points_chained = false;
+  // Its depth exceeded, at some commit, what the coordinates resolve at its
+  // point (DepthResolution, contact_memory.h). An episode that never did is
+  // rounding, not a contact (bodies placed exactly touching, nudged by
+  // forces of 1e-17 N that no position can show): a closed impact of that
+  // kind is dropped from impacts(), and point_episodes() keeps such points
+  // for their memory but the reports leave them out.
+  bool resolved = false;
   // A contact there when the run began (PointEvaluation::at_start): the
   // largest approach rate of its first compression, m/s: the bodies placed
   // touching sinking into their contact's spring, which is neither an

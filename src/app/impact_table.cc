@@ -2,12 +2,21 @@
 
 #include "app/impact_table.h"
 
+#include <map>
 #include <string>
 
 namespace contactlaws::app {
 
-const std::vector<Episode>& ImpactsOf(const ContactData& contacts, ImpactRows rows) {
-  return rows == ImpactRows::kPointEpisodes ? contacts.point_episodes() : contacts.impacts();
+std::vector<Episode> ImpactsOf(const ContactData& contacts, ImpactRows rows) {
+  if (rows == ImpactRows::kImpacts) return contacts.impacts();
+  std::vector<Episode> points;
+  std::map<int, int> count;  // tag -> its points so far
+  for (const Episode& point : contacts.point_episodes()) {
+    if (!point.open && !point.resolved) continue;
+    points.push_back(point);
+    points.back().index = ++count[point.tag];
+  }
+  return points;
 }
 
 Table ImpactTable(const Simulation& sim, const std::vector<Episode>& impacts) {

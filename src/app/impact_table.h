@@ -18,8 +18,10 @@ namespace contactlaws::app {
 // episode of each point (--impacts-per-point).
 enum class ImpactRows { kImpacts, kPointEpisodes };
 
-// The impacts of contacts in those rows.
-const std::vector<Episode>& ImpactsOf(const ContactData& contacts, ImpactRows rows);
+// The impacts of contacts in those rows: the point episodes without those
+// that closed with their depth never resolved (Episode::resolved), each
+// tag's numbered again, as the impacts are.
+std::vector<Episode> ImpactsOf(const ContactData& contacts, ImpactRows rows);
 
 // law, restitution, pair, geom1, geom2, index, points, time_contact (s),
 // time_separation (s), impact_velocity, separation_velocity,

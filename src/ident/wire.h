@@ -49,7 +49,7 @@ void serialize(Archive& archive, Episode& e) {
   static_assert(sizeof(Episode) == 184, "Episode changed: name its new field here");
   archive(e.tag, e.pair, e.index, e.points, e.time_contact, e.impact_velocity, e.open,
           e.time_separation, e.separation_velocity, e.max_depth, e.max_force,
-          e.max_approach_velocity, e.touch_v0, e.points_chained, e.settling_velocity,
+          e.max_approach_velocity, e.touch_v0, e.points_chained, e.resolved, e.settling_velocity,
           e.tangential_impact_velocity, e.tangential_separation_velocity, e.spin_before,
           e.spin_after, e.tangent, e.normal);
 }

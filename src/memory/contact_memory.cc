@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace contactlaws {
 
@@ -58,6 +59,14 @@ double TouchTime(const PointEvaluation& e, double t, double previous) {
   if (e.at_start) return t;
   const double mean_rate = 0.5 * (e.depth_rate + e.touch_velocity);
   return mean_rate > 0 ? std::clamp(t - e.depth / mean_rate, std::min(previous, t), t) : t;
+}
+
+double DepthResolution(const PointEvaluation& e) {
+  double size = 0;
+  for (int i = 0; i < 3; ++i) {
+    size = std::max({size, std::abs(e.pos[i]), std::abs(e.local[0][i]), std::abs(e.local[1][i])});
+  }
+  return 4 * std::numeric_limits<double>::epsilon() * size;
 }
 
 double DissipatedPower(const std::vector<PointEvaluation>& points) {
@@ -158,6 +167,7 @@ void EpisodeLog::Commit(double t, const std::vector<PointEvaluation>& points) {
     Episode& episode = episodes_[index];
     Track& track = tracks_[index];
     episode.max_depth = std::max(episode.max_depth, e.depth);
+    episode.resolved = episode.resolved || e.depth > DepthResolution(e);
     track.force.Add(t, e.force);
     episode.max_force = track.force.peak();
     episode.max_approach_velocity = std::max(episode.max_approach_velocity, e.max_approach);
@@ -230,6 +240,7 @@ void ImpactLog::Commit(double t, const std::vector<PointEvaluation>& points,
       const PointEvaluation& e = points[end];
       force += e.force;
       impact.max_depth = std::max(impact.max_depth, e.depth);
+      impact.resolved = impact.resolved || e.depth > DepthResolution(e);
       impact.max_approach_velocity = std::max(impact.max_approach_velocity, e.max_approach);
       // the points that open it: the earliest touch, the fastest approach
       if (opening && e.touch) {
@@ -269,11 +280,25 @@ void ImpactLog::Commit(double t, const std::vector<PointEvaluation>& points,
             std::max(impact.separation_velocity, point.separation_velocity);
       }
       // (its last points closed in this commit: the episodes' own close)
+      const int closed = open_[pair];
       open_[pair] = -1;
+      if (!impact.resolved) Drop(closed);
     }
     seen_[pair] = 0;
   }
   previous_commit_ = t;
+}
+
+void ImpactLog::Drop(int index) {
+  const int tag = impacts_[index].tag;
+  for (size_t k = index + 1; k < impacts_.size(); ++k) {
+    if (impacts_[k].tag == tag) --impacts_[k].index;
+  }
+  --tag_count_[tag];
+  impacts_.erase(impacts_.begin() + index);
+  for (int& open : open_) {
+    if (open > index) --open;
+  }
 }
 
 // ---------------------------------------------------------------------------

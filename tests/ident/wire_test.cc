@@ -69,6 +69,7 @@ TEST(WireTest, AnEpisodeArrivesWithEveryField) {
   sent.max_approach_velocity = value();
   sent.touch_v0 = value();
   sent.points_chained = true;
+  sent.resolved = true;
   sent.settling_velocity = value();
   sent.tangential_impact_velocity = value();
   sent.tangential_separation_velocity = value();
@@ -83,6 +84,7 @@ TEST(WireTest, AnEpisodeArrivesWithEveryField) {
   EXPECT_EQ(got.points, 6);
   EXPECT_FALSE(got.open);
   EXPECT_TRUE(got.points_chained);
+  EXPECT_TRUE(got.resolved);
   const std::vector<double> doubles_sent = {
       sent.time_contact, sent.impact_velocity, sent.time_separation, sent.separation_velocity,
       sent.max_depth, sent.max_force, sent.max_approach_velocity, sent.touch_v0,
