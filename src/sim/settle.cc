@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "contactlaws/auto_timestep.h"
 #include "contactlaws/contact_model.h"
 #include "sim/estimate.h"
 #include "contactlaws/simulation.h"
@@ -191,6 +192,12 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
   // dynamics, friction's springs holding them). Whether it converged.
   const SettleDirections anywhere;
   std::vector<mjtNum> mv(m->nv);
+  // its steps: the run's, and no longer than the auto timestep's rules let
+  // the laws' explicit forces go (a scene at MuJoCo's 2 ms, whose run takes
+  // auto steps or integrates its contacts inside the step, relaxes too);
+  // the run's own wherever those allow it (a scene at its fine step)
+  const double timestep = sim->contacts().options().timestep;
+  AutoTimestep steps(sim->contacts());
   auto relax = [&](const SettleDirections& directions) {
     mju_copy(d->qfrc_applied, applied.data(), m->nv);
     mju_zero(d->qvel, m->nv);
@@ -199,8 +206,9 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
     mj_forward(m, d);
     double previous = 0;
     bool converged = Residual(m, d, moving, directions) < kSettleResidual;
+    steps.Reset();
     while (!converged && d->time - start < kSettleDuration) {
-      sim->Step();
+      sim->Step(std::min(timestep, steps.Next(d, kSettleDuration - (d->time - start))));
       if (sim->contacts().divergence()) {
         throw OptionError(fmt::format("{}: {}: the relaxation diverged at t = {:.6g} s: {}",
                                       sim->source(), OptionError::kMark, d->time - start,
