@@ -95,13 +95,17 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spe
     if (!fastest || c.max_approach_velocity > fastest->max_approach_velocity) fastest = &c;
   }
   if (fastest) {
+    // a settled run's resting contacts came to rest in it: no advice
+    const std::string advice =
+        sim.settled() ? ""
+                      : fmt::format("; {} starts the bodies at the depth their contacts carry them",
+                                    spelling.set("settle"));
     warnings.push_back(fmt::format(
         "{} contact{} touching at rest sank into {} spring{} under the load, up to {:.4g} m/s "
-        "against the law's v0 of {:.3g} m/s ({}, t = {:.6g} s): no impact and no push; "
-        "{} starts the bodies at the depth their contacts carry them",
+        "against the law's v0 of {:.3g} m/s ({}, t = {:.6g} s): no impact and no push{}",
         settling, settling == 1 ? "" : "s", settling == 1 ? "its" : "their",
         settling == 1 ? "" : "s", fastest->max_approach_velocity, fastest->touch_v0,
-        PairName(sim, fastest->pair), fastest->time_contact, spelling.set("settle")));
+        PairName(sim, fastest->pair), fastest->time_contact, advice));
   }
   return warnings;
 }

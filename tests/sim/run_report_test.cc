@@ -95,6 +95,27 @@ TEST_F(RunReportTest, BodiesPlacedTouchingMakeOneLineThatPointsToSettle) {
   EXPECT_EQ(w[0].find("pulse"), std::string::npos) << w[0];
 }
 
+// Settled, then struck: box_stack.xml's top cube lands on the two settled
+// ones, and the bottom one, bounced, comes to rest on the floor again at
+// 0.149 s: a contact touching at rest that sinks under its load, said in one
+// line, which cannot point to --settle: the run was settled.
+TEST_F(RunReportTest, ASettledRunIsNotToldToSettle) {
+  SimulationOptions options;
+  options.settle = true;
+  options.timestep = 2e-3;
+  options.integrator = mjINT_EULER;
+  options.contact_steps.substeps = kContactStepsAuto;
+  Simulation& sim = MakeSceneSimulation("box_stack.xml", options);
+  while (sim.time() < 0.5) sim.Step();
+  const std::vector<std::string> w = ChainedContactWarnings(sim, kCommandLineSpelling);
+  bool resting = false;
+  for (const std::string& line : w) {
+    resting = resting || line.find("touching at rest") != std::string::npos;
+    EXPECT_EQ(line.find("--settle"), std::string::npos) << line;
+  }
+  EXPECT_TRUE(resting);
+}
+
 // A seesaw: a block resting on one end of a hinged plank (there at t = 0),
 // a ball dropped onto the other end. The plank flings the block: a push
 // through a contact that was there at the start, named with the speed it
