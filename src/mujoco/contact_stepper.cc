@@ -99,6 +99,47 @@ double TimeToSurface(double d, double r, double b, double limit) {
   return r > 0 ? std::min(limit, -d / r) : limit;
 }
 
+// The first time (s, in (0, limit]) at which a depth d <= 0 at rate r,
+// acceleration a and jerk j (d'' = a + j t) is above 0, or infinity: the
+// first crossing of the cubic d + r t + a t^2 / 2 + j t^3 / 6, looked for on
+// each piece where it is monotone (between the roots of its rate).
+double FirstCrossing(double d, double r, double a, double j, double limit) {
+  const auto depth = [&](double t) { return d + t * (r + t * (a / 2 + t * j / 6)); };
+  double ends[4] = {0, limit, limit, limit};
+  int count = 1;
+  // the rate's roots, r + a t + j t^2 / 2 = 0, inside (0, limit)
+  double roots[2];
+  int found = 0;
+  if (j != 0) {
+    const double discriminant = a * a - 2 * j * r;
+    if (discriminant >= 0) {
+      const double s = std::sqrt(discriminant);
+      roots[0] = (-a - s) / j;
+      roots[1] = (-a + s) / j;
+      found = 2;
+    }
+  } else if (a != 0) {
+    roots[0] = -r / a;
+    found = 1;
+  }
+  std::sort(roots, roots + found);
+  for (int k = 0; k < found; ++k) {
+    if (roots[k] > 0 && roots[k] < limit) ends[count++] = roots[k];
+  }
+  ends[count++] = limit;
+  for (int k = 1; k < count; ++k) {
+    double lo = ends[k - 1], hi = ends[k];
+    if (!(depth(hi) > 0)) continue;
+    // bisection on a monotone piece whose start is not in contact
+    for (int it = 0; it < 100 && hi - lo > kEndTolerance * limit * 1e-3; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (depth(mid) > 0 ? hi : lo) = mid;
+    }
+    return hi;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 // The Cholesky factor L of the SPD n x n matrix s, in place (its lower
 // triangle), each row from its first nonzero entry on (first; its envelope,
 // which L keeps): the rows of points of bodies that share no chain are zero
@@ -681,7 +722,30 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // the sub-step, ended just past a touch within it (as the auto timestep
     // does), so that a force that jumps at d = 0+ acts from the touch on
     double step = std::min(delta, h_ - t);
-    for (int i = 0; i < n; ++i) {
+    // no point in contact: the rows move freely, x'' = b + t b1 - D P with P
+    // held, a cubic that RK4 takes exactly in one sub-step: the whole sub-steps
+    // before the first touch in one (the touch's own sub-step, below, then
+    // starts where sub-steps of delta would have started it)
+    bool free = true;
+    for (int i = 0; i < n && free; ++i) free = !(x[i] > 0);
+    if (free) {
+      free_acc_.assign(b_.begin(), b_.end());
+      if (moving_) {
+        zero_force_.assign(rows, 0.0);
+        AddMovingJacobian(t, zero_force_.data(), impulse_.data(), free_acc_.data());
+      }
+      double touch = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < n; ++i) {
+        touch = std::min(touch, FirstCrossing(x[i], rate[i], free_acc_[i],
+                                              moving_ ? b1_[i] : 0.0, h_ - t));
+      }
+      if (touch > delta) {
+        step = std::isinf(touch) ? h_ - t : (std::ceil(touch / delta) - 1) * delta;
+      } else {
+        free = false;
+      }
+    }
+    for (int i = 0; !free && i < n; ++i) {
       if (x[i] > 0 || x[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
       const double touch = TimeToSurface(x[i], rate[i], b_[i], step);
       step = std::min(step, std::max(touch * (1 + kPastTouch), kShortestSubStep * delta));

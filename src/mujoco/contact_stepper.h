@@ -189,6 +189,8 @@ class ContactStepper {
   bool moving_ = false;            // some J' is not zero
   std::vector<double> moved_;      // AddMovingJacobian's three nv vectors
   std::vector<double> stage_impulse_;  // Rk4SubStep's P at a stage
+  std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
+  std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
   // minus the friction force on body[1] along the tangent)
   std::vector<double> impulse_;    // per row: P at the step's end, N s
