@@ -387,6 +387,26 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
     b_[r] += velocity;
     b1_[r] = 2 * free;
   }
+  if (!moving_) return;
+  // D = J' M^-1 J^T and C = D + D^T, once a step, over where the spans of
+  // J'_i and M^-1 J_j^T overlap; D kept transposed, so that Acceleration
+  // reads D's column j contiguously
+  d_transposed_.assign(static_cast<size_t>(rows) * rows, 0.0);
+  c_.assign(d_transposed_.size(), 0.0);
+  for (int i = 0; i < rows; ++i) {
+    if (jdot_span_[2 * i + 1] <= jdot_span_[2 * i]) continue;
+    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
+    for (int j = 0; j < rows; ++j) {
+      const int lo = std::max(jdot_span_[2 * i], span_[4 * j + 2]);
+      const int hi = std::min(jdot_span_[2 * i + 1], span_[4 * j + 3]);
+      double dot = 0;
+      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
+      for (int k = lo; k < hi; ++k) dot += di[k] * mj[k];
+      d_transposed_[static_cast<size_t>(j) * rows + i] = dot;
+      c_[static_cast<size_t>(j) * rows + i] += dot;
+      c_[static_cast<size_t>(i) * rows + j] += dot;
+    }
+  }
 }
 
 double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
@@ -410,41 +430,25 @@ double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
   return rate;
 }
 
-void ContactStepper::AddMovingJacobian(double t, const double* f, const double* impulse,
-                                       double* acc) {
-  // - t C f - D P(t), C = D + D^T, D = J' M^-1 J^T: through three nv
-  // vectors, M^-1 J^T f, J'^T f and M^-1 J^T P
-  const int nv = static_cast<int>(a_free_.size());
+void ContactStepper::Acceleration(double t, const double* f, const double* impulse,
+                                  double* acc) const {
+  // acc = b + t b1 - (A + t C) f - D P, over the rows with a force or an
+  // impulse (columns of the symmetric A and C, and of D^T)
   const int rows = rows_;
-  moved_.assign(static_cast<size_t>(3) * nv, 0.0);
-  double* minv_f = moved_.data();
-  double* jdot_f = minv_f + nv;
-  double* minv_p = jdot_f + nv;
-  bool pushed_back = false;  // J'^T f is not zero
+  for (int i = 0; i < rows; ++i) acc[i] = moving_ ? b_[i] + t * b1_[i] : b_[i];
   for (int j = 0; j < rows; ++j) {
-    if (f[j] == 0 && impulse[j] == 0) continue;
-    const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-    const double* dj = jdot_.data() + static_cast<size_t>(j) * nv;
-    for (int k = span_[4 * j + 2]; k < span_[4 * j + 3]; ++k) {
-      minv_f[k] += mj[k] * f[j];
-      minv_p[k] += mj[k] * impulse[j];
+    const double fj = f[j];
+    const double pj = moving_ ? impulse[j] : 0.0;
+    if (fj == 0 && pj == 0) continue;
+    const double* a = a_.data() + static_cast<size_t>(j) * rows;
+    if (!moving_) {
+      for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj;
+      continue;
     }
-    if (f[j] == 0) continue;
-    for (int k = jdot_span_[2 * j]; k < jdot_span_[2 * j + 1]; ++k) jdot_f[k] += dj[k] * f[j];
-    pushed_back = pushed_back || jdot_span_[2 * j + 1] > jdot_span_[2 * j];
-  }
-  for (int i = 0; i < rows; ++i) {
-    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
-    double along = 0, back = 0, pushed = 0;
-    for (int k = jdot_span_[2 * i]; k < jdot_span_[2 * i + 1]; ++k) {
-      along += di[k] * minv_f[k];
-      pushed += di[k] * minv_p[k];
-    }
-    if (pushed_back) {
-      const double* mi = minv_jt_.data() + static_cast<size_t>(i) * nv;
-      for (int k = span_[4 * i + 2]; k < span_[4 * i + 3]; ++k) back += mi[k] * jdot_f[k];
-    }
-    acc[i] += t * b1_[i] - t * (along + back) - pushed;
+    const double* c = c_.data() + static_cast<size_t>(j) * rows;
+    const double* dt = d_transposed_.data() + static_cast<size_t>(j) * rows;
+    const double tf = t * fj;
+    for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj + c[i] * tf + dt[i] * pj;
   }
 }
 
@@ -729,11 +733,9 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     bool free = true;
     for (int i = 0; i < n && free; ++i) free = !(x[i] > 0);
     if (free) {
-      free_acc_.assign(b_.begin(), b_.end());
-      if (moving_) {
-        zero_force_.assign(rows, 0.0);
-        AddMovingJacobian(t, zero_force_.data(), impulse_.data(), free_acc_.data());
-      }
+      free_acc_.resize(rows);
+      zero_force_.assign(rows, 0.0);
+      Acceleration(t, zero_force_.data(), impulse_.data(), free_acc_.data());
       double touch = std::numeric_limits<double>::infinity();
       for (int i = 0; i < n; ++i) {
         touch = std::min(touch, FirstCrossing(x[i], rate[i], free_acc_[i],
@@ -1042,23 +1044,12 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       }
     }
-    // (A f), A symmetric, over the rows with a force, summed in acc[s]
-    double* pushed = acc[s];
-    for (int i = 0; i < rows; ++i) pushed[i] = 0;
-    for (int j = 0; j < rows; ++j) {
-      if (f[s][j] == 0) continue;
-      const double* a = a_.data() + static_cast<size_t>(j) * rows;
-      for (int i = 0; i < rows; ++i) pushed[i] += a[i] * f[s][j];
+    // the impulse at the stage, as RK4 takes P' = f, and x''
+    stage_impulse_.resize(rows);
+    for (int i = 0; moving_ && i < rows; ++i) {
+      stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
     }
-    for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed[i];
-    if (moving_) {
-      // the impulse at the stage, as RK4 takes P' = f
-      stage_impulse_.resize(rows);
-      for (int i = 0; i < rows; ++i) {
-        stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
-      }
-      AddMovingJacobian(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
-    }
+    Acceleration(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose
