@@ -99,6 +99,47 @@ double TimeToSurface(double d, double r, double b, double limit) {
   return r > 0 ? std::min(limit, -d / r) : limit;
 }
 
+// The first time (s, in (0, limit]) at which a depth d <= 0 at rate r,
+// acceleration a and jerk j (d'' = a + j t) is above 0, or infinity: the
+// first crossing of the cubic d + r t + a t^2 / 2 + j t^3 / 6, looked for on
+// each piece where it is monotone (between the roots of its rate).
+double FirstCrossing(double d, double r, double a, double j, double limit) {
+  const auto depth = [&](double t) { return d + t * (r + t * (a / 2 + t * j / 6)); };
+  double ends[4] = {0, limit, limit, limit};
+  int count = 1;
+  // the rate's roots, r + a t + j t^2 / 2 = 0, inside (0, limit)
+  double roots[2];
+  int found = 0;
+  if (j != 0) {
+    const double discriminant = a * a - 2 * j * r;
+    if (discriminant >= 0) {
+      const double s = std::sqrt(discriminant);
+      roots[0] = (-a - s) / j;
+      roots[1] = (-a + s) / j;
+      found = 2;
+    }
+  } else if (a != 0) {
+    roots[0] = -r / a;
+    found = 1;
+  }
+  std::sort(roots, roots + found);
+  for (int k = 0; k < found; ++k) {
+    if (roots[k] > 0 && roots[k] < limit) ends[count++] = roots[k];
+  }
+  ends[count++] = limit;
+  for (int k = 1; k < count; ++k) {
+    double lo = ends[k - 1], hi = ends[k];
+    if (!(depth(hi) > 0)) continue;
+    // bisection on a monotone piece whose start is not in contact
+    for (int it = 0; it < 100 && hi - lo > kEndTolerance * limit * 1e-3; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (depth(mid) > 0 ? hi : lo) = mid;
+    }
+    return hi;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 // The Cholesky factor L of the SPD n x n matrix s, in place (its lower
 // triangle), each row from its first nonzero entry on (first; its envelope,
 // which L keeps): the rows of points of bodies that share no chain are zero
@@ -346,6 +387,26 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
     b_[r] += velocity;
     b1_[r] = 2 * free;
   }
+  if (!moving_) return;
+  // D = J' M^-1 J^T and C = D + D^T, once a step, over where the spans of
+  // J'_i and M^-1 J_j^T overlap; D kept transposed, so that Acceleration
+  // reads D's column j contiguously
+  d_transposed_.assign(static_cast<size_t>(rows) * rows, 0.0);
+  c_.assign(d_transposed_.size(), 0.0);
+  for (int i = 0; i < rows; ++i) {
+    if (jdot_span_[2 * i + 1] <= jdot_span_[2 * i]) continue;
+    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
+    for (int j = 0; j < rows; ++j) {
+      const int lo = std::max(jdot_span_[2 * i], span_[4 * j + 2]);
+      const int hi = std::min(jdot_span_[2 * i + 1], span_[4 * j + 3]);
+      double dot = 0;
+      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
+      for (int k = lo; k < hi; ++k) dot += di[k] * mj[k];
+      d_transposed_[static_cast<size_t>(j) * rows + i] = dot;
+      c_[static_cast<size_t>(j) * rows + i] += dot;
+      c_[static_cast<size_t>(i) * rows + j] += dot;
+    }
+  }
 }
 
 double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
@@ -369,41 +430,25 @@ double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
   return rate;
 }
 
-void ContactStepper::AddMovingJacobian(double t, const double* f, const double* impulse,
-                                       double* acc) {
-  // - t C f - D P(t), C = D + D^T, D = J' M^-1 J^T: through three nv
-  // vectors, M^-1 J^T f, J'^T f and M^-1 J^T P
-  const int nv = static_cast<int>(a_free_.size());
+void ContactStepper::Acceleration(double t, const double* f, const double* impulse,
+                                  double* acc) const {
+  // acc = b + t b1 - (A + t C) f - D P, over the rows with a force or an
+  // impulse (columns of the symmetric A and C, and of D^T)
   const int rows = rows_;
-  moved_.assign(static_cast<size_t>(3) * nv, 0.0);
-  double* minv_f = moved_.data();
-  double* jdot_f = minv_f + nv;
-  double* minv_p = jdot_f + nv;
-  bool pushed_back = false;  // J'^T f is not zero
+  for (int i = 0; i < rows; ++i) acc[i] = moving_ ? b_[i] + t * b1_[i] : b_[i];
   for (int j = 0; j < rows; ++j) {
-    if (f[j] == 0 && impulse[j] == 0) continue;
-    const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-    const double* dj = jdot_.data() + static_cast<size_t>(j) * nv;
-    for (int k = span_[4 * j + 2]; k < span_[4 * j + 3]; ++k) {
-      minv_f[k] += mj[k] * f[j];
-      minv_p[k] += mj[k] * impulse[j];
+    const double fj = f[j];
+    const double pj = moving_ ? impulse[j] : 0.0;
+    if (fj == 0 && pj == 0) continue;
+    const double* a = a_.data() + static_cast<size_t>(j) * rows;
+    if (!moving_) {
+      for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj;
+      continue;
     }
-    if (f[j] == 0) continue;
-    for (int k = jdot_span_[2 * j]; k < jdot_span_[2 * j + 1]; ++k) jdot_f[k] += dj[k] * f[j];
-    pushed_back = pushed_back || jdot_span_[2 * j + 1] > jdot_span_[2 * j];
-  }
-  for (int i = 0; i < rows; ++i) {
-    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
-    double along = 0, back = 0, pushed = 0;
-    for (int k = jdot_span_[2 * i]; k < jdot_span_[2 * i + 1]; ++k) {
-      along += di[k] * minv_f[k];
-      pushed += di[k] * minv_p[k];
-    }
-    if (pushed_back) {
-      const double* mi = minv_jt_.data() + static_cast<size_t>(i) * nv;
-      for (int k = span_[4 * i + 2]; k < span_[4 * i + 3]; ++k) back += mi[k] * jdot_f[k];
-    }
-    acc[i] += t * b1_[i] - t * (along + back) - pushed;
+    const double* c = c_.data() + static_cast<size_t>(j) * rows;
+    const double* dt = d_transposed_.data() + static_cast<size_t>(j) * rows;
+    const double tf = t * fj;
+    for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj + c[i] * tf + dt[i] * pj;
   }
 }
 
@@ -681,7 +726,28 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // the sub-step, ended just past a touch within it (as the auto timestep
     // does), so that a force that jumps at d = 0+ acts from the touch on
     double step = std::min(delta, h_ - t);
-    for (int i = 0; i < n; ++i) {
+    // no point in contact: the rows move freely, x'' = b + t b1 - D P with P
+    // held, a cubic that RK4 takes exactly in one sub-step: the whole sub-steps
+    // before the first touch in one (the touch's own sub-step, below, then
+    // starts where sub-steps of delta would have started it)
+    bool free = true;
+    for (int i = 0; i < n && free; ++i) free = !(x[i] > 0);
+    if (free) {
+      free_acc_.resize(rows);
+      zero_force_.assign(rows, 0.0);
+      Acceleration(t, zero_force_.data(), impulse_.data(), free_acc_.data());
+      double touch = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < n; ++i) {
+        touch = std::min(touch, FirstCrossing(x[i], rate[i], free_acc_[i],
+                                              moving_ ? b1_[i] : 0.0, h_ - t));
+      }
+      if (touch > delta) {
+        step = std::isinf(touch) ? h_ - t : (std::ceil(touch / delta) - 1) * delta;
+      } else {
+        free = false;
+      }
+    }
+    for (int i = 0; !free && i < n; ++i) {
       if (x[i] > 0 || x[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
       const double touch = TimeToSurface(x[i], rate[i], b_[i], step);
       step = std::min(step, std::max(touch * (1 + kPastTouch), kShortestSubStep * delta));
@@ -978,23 +1044,12 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       }
     }
-    // (A f), A symmetric, over the rows with a force, summed in acc[s]
-    double* pushed = acc[s];
-    for (int i = 0; i < rows; ++i) pushed[i] = 0;
-    for (int j = 0; j < rows; ++j) {
-      if (f[s][j] == 0) continue;
-      const double* a = a_.data() + static_cast<size_t>(j) * rows;
-      for (int i = 0; i < rows; ++i) pushed[i] += a[i] * f[s][j];
+    // the impulse at the stage, as RK4 takes P' = f, and x''
+    stage_impulse_.resize(rows);
+    for (int i = 0; moving_ && i < rows; ++i) {
+      stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
     }
-    for (int i = 0; i < rows; ++i) acc[s][i] = b_[i] - pushed[i];
-    if (moving_) {
-      // the impulse at the stage, as RK4 takes P' = f
-      stage_impulse_.resize(rows);
-      for (int i = 0; i < rows; ++i) {
-        stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
-      }
-      AddMovingJacobian(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
-    }
+    Acceleration(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose

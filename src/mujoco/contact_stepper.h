@@ -120,7 +120,7 @@ class ContactStepper {
   int SubSteps(double h) const;
   // One RK4 sub-step, starting t0 s into the step, of the rows' positions
   // and rates (b - A f(x, x'), and the terms of the moving J:
-  // AddMovingJacobian), from the forces at its start; adds to impulse_ and
+  // Acceleration), from the forces at its start; adds to impulse_ and
   // impulse_sum_.
   void Rk4SubStep(double t0, double step, const std::vector<double>& start_force,
                   const std::vector<double>& v0, std::vector<double>* x,
@@ -159,9 +159,9 @@ class ContactStepper {
   // The rate (rad/s) at which point e's rows turn at d's state: its bodies'
   // largest spin; two spheres' |v_t| / s.
   double RowTurn(const mjModel* m, const mjData* d, const PointEvaluation& e) const;
-  // acc += t b1 - t C f - D P (BuildJacobianRates) for the rows' forces f and
-  // impulse P at t s into the step.
-  void AddMovingJacobian(double t, const double* f, const double* impulse, double* acc);
+  // acc = b + t b1 - (A + t C) f - D P (BuildJacobianRates; without J',
+  // b - A f) for the rows' forces f and impulse P at t s into the step.
+  void Acceleration(double t, const double* f, const double* impulse, double* acc) const;
 
   const ContactModel& model_;
   ContactStepsOptions options_;
@@ -187,8 +187,11 @@ class ContactStepper {
   std::vector<int> jdot_span_;     // per row: [lo, hi) of its J' row
   std::vector<double> b1_;         // per row: 2 J' a_free, m/s^3
   bool moving_ = false;            // some J' is not zero
-  std::vector<double> moved_;      // AddMovingJacobian's three nv vectors
+  std::vector<double> d_transposed_;  // rows x rows: D^T, D = J' M^-1 J^T
+  std::vector<double> c_;          // rows x rows: C = D + D^T
   std::vector<double> stage_impulse_;  // Rk4SubStep's P at a stage
+  std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
+  std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
   // minus the friction force on body[1] along the tangent)
   std::vector<double> impulse_;    // per row: P at the step's end, N s
