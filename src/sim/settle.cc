@@ -132,6 +132,15 @@ double Residual(const mjModel* m, const mjData* d, const std::vector<uint8_t>& m
   return residual;
 }
 
+// A body's reach: its geoms' largest bounding radius, m.
+double Reach(const mjModel* m, int b) {
+  double reach = 0;
+  for (int g = m->body_geomadr[b]; g >= 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
+    reach = std::max(reach, m->geom_rbound[g]);
+  }
+  return reach;
+}
+
 }  // namespace
 
 std::string SettleReport::Line() const {
@@ -172,7 +181,19 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
       }
       const double cosine = std::min(1.0, std::abs(mju_dot(d->xquat + 4 * b,
                                                            xquat0.data() + 4 * b, 4)));
-      report.angle = std::max(report.angle, 2 * std::acos(cosine));
+      const double angle = 2 * std::acos(cosine);
+      report.angle = std::max(report.angle, angle);
+      // moved mostly by turning (its turn at its reach at least half the
+      // distance): it tips over its contacts rather than sinking through them
+      if (distance > touching.limit[b] && angle * Reach(m, b) >= 0.5 * distance) {
+        throw OptionError(
+            fmt::format("{}: {}: body '{}' tips: its contacts carry its weight but not its turn "
+                        "(it turned {:.3g} rad in {:.3g} s of relaxation), so it has no resting "
+                        "pose to start from; start it without {}, or where it rests",
+                        sim->source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, b), angle,
+                        d->time - start, OptionError::kMark),
+            {kSettle, kSettle});
+      }
       if (distance > touching.limit[b]) {
         throw OptionError(
             fmt::format("{}: {}: no contact holds body '{}': it moved {:.3g} m in {:.3g} s of "
@@ -248,13 +269,9 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
     for (int b = 1; b < m->nbody; ++b) {
       if (!touching.body[b] || !touching.directions.Held(b)) continue;
       const SettleDirections::Acceleration a = touching.directions.Residual(m, d, b);
-      // its turn's acceleration at its reach (its geoms' bounding radius),
-      // against its translation's: a turn ten times faster tips it
-      double reach = 0;
-      for (int g = m->body_geomadr[b]; g >= 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
-        reach = std::max(reach, m->geom_rbound[g]);
-      }
-      if (a.angular > std::max(turn, kSettleResidual) && a.angular * reach > 10 * a.linear) {
+      // its turn's acceleration at its reach, against its translation's: a
+      // turn ten times faster tips it
+      if (a.angular > std::max(turn, kSettleResidual) && a.angular * Reach(m, b) > 10 * a.linear) {
         tipping = b;
         turn = a.angular;
       }

@@ -10,10 +10,11 @@
 //
 // The method is a quasi-static relaxation: from the scene's positions at
 // rest, the dynamics (gravity, the scene's actuator and applied forces, the
-// laws, friction's stick springs, MuJoCo's own forces) are stepped at the
-// run's timestep, shortened where the auto timestep's rules ask (a scene at
-// MuJoCo's 2 ms, with contacts explicit while it relaxes), with every other
-// body held where it is and each free body
+// laws, friction's stick springs, MuJoCo's own forces) are stepped under
+// Euler (Simulation sets it: one evaluation a step, at the positions the
+// relaxation projects) at the run's timestep, shortened where the auto
+// timestep's rules ask (a scene at MuJoCo's 2 ms, with contacts explicit
+// while it relaxes), with every other body held where it is and each free body
 // in contact moved along its contacts' normals only (SettleDirections: it
 // tilts onto its points, it does not slide or spin in the surface), and the
 // velocities are quenched (set to 0) whenever the kinetic energy starts to

@@ -49,6 +49,25 @@ std::string Stack(double vx_top, const char* option = R"(timestep="1e-4" integra
                      option, bodies, qpos, qvel, tags);
 }
 
+// The stack's statics: each interface carries the weight above it on four
+// corners, F = k W / 4 at d = (F / K)^(2/3); the centre height of cube i.
+double InterfaceDepth(int k) { return std::pow((3 - k) * kGravity / 4 / kStiffness, 2.0 / 3.0); }
+double SettledHeight(int i) {
+  double z = 0;
+  for (int k = 0; k <= i; ++k) z += 2 * kHalf - InterfaceDepth(k);
+  return z - kHalf;
+}
+// What the relaxation leaves of cube i's height: each cube's residual
+// acceleration (kSettleResidual, 1 kg) on the interfaces below it, over
+// their stiffness dF/dd = 4 x 1.5 K d^0.5 (the top cube: 1.24e-10 m).
+double SettledTolerance(int i) {
+  double tolerance = 0;
+  for (int k = 0; k <= i; ++k) {
+    tolerance += (3 - k) * kSettleResidual / (4 * 1.5 * kStiffness * std::sqrt(InterfaceDepth(k)));
+  }
+  return tolerance;
+}
+
 class SettleTest : public testing::MujocoTest {};
 
 TEST_F(SettleTest, AStackStartsInItsStaticEquilibriumAndDoesNotDrop) {
@@ -59,14 +78,9 @@ TEST_F(SettleTest, AStackStartsInItsStaticEquilibriumAndDoesNotDrop) {
   ASSERT_TRUE(settled.settled());
   EXPECT_EQ(settled.settled()->bodies, 3);
   std::printf("%s\n", settled.settled()->Line().c_str());
-  // statics: each interface carries the weight above it on four corners,
-  // F = k W / 4 at d = (F / K)^(2/3); the cube k sits on k interfaces
-  double z = 0;
+  // statics (measured: the top cube 6.5e-11 m off)
   for (int i = 0; i < 3; ++i) {
-    const double depth = std::pow((3 - i) * kGravity / 4 / kStiffness, 2.0 / 3.0);
-    z += 2 * kHalf - depth;
-    // what is left of the relaxation: below 1e-6 of the depth
-    EXPECT_NEAR(settled.data()->qpos[7 * i + 2], z - kHalf, 1e-6 * depth) << i;
+    EXPECT_NEAR(settled.data()->qpos[7 * i + 2], SettledHeight(i), SettledTolerance(i)) << i;
   }
   // the first 0.1 s: no drop (measured: the placed stack's top cube sinks by
   // 2.7e-4 m and rings; settled, it moves 4.5e-11 m, the relaxation's
@@ -87,15 +101,6 @@ TEST_F(SettleTest, AStackStartsInItsStaticEquilibriumAndDoesNotDrop) {
   EXPECT_GT(drop_placed, 1e4 * kNoDrop);
 }
 
-// The stack's statics: the centre height of cube i.
-double SettledHeight(int i) {
-  double z = 0;
-  for (int k = 0; k <= i; ++k) {
-    z += 2 * kHalf - std::pow((3 - k) * kGravity / 4 / kStiffness, 2.0 / 3.0);
-  }
-  return z - kHalf;
-}
-
 // A scene at MuJoCo's 2 ms (Euler), whose run takes auto steps or integrates
 // its contacts inside the step: the relaxation takes the auto timestep's
 // steps where 2 ms would throw the laws' explicit forces apart. It diverged
@@ -109,15 +114,9 @@ TEST_F(SettleTest, AStackAtMujocosStepSettlesToTheSameStatics) {
     Simulation& sim = MakeSimulation(Stack(0.0, R"(timestep="2e-3" integrator="Euler")"), options);
     ASSERT_TRUE(sim.settled());
     EXPECT_EQ(sim.settled()->bodies, 3);
-    // what the relaxation leaves: each cube's residual acceleration
-    // (kSettleResidual, 1 kg) on the interfaces below it, over their
-    // stiffness dF/dd = 4 x 1.5 K d^0.5 (measured: the top cube 6.3e-11 m
-    // off, its bound 1.24e-10 m)
-    double tolerance = 0;
+    // (measured: the top cube 6.3e-11 m off)
     for (int i = 0; i < 3; ++i) {
-      const double depth = std::pow((3 - i) * kGravity / 4 / kStiffness, 2.0 / 3.0);
-      tolerance += (3 - i) * kSettleResidual / (4 * 1.5 * kStiffness * std::sqrt(depth));
-      EXPECT_NEAR(sim.data()->qpos[7 * i + 2], SettledHeight(i), tolerance) << i;
+      EXPECT_NEAR(sim.data()->qpos[7 * i + 2], SettledHeight(i), SettledTolerance(i)) << i;
     }
     if (!contact_steps) continue;
     // and the run at 2 ms holds it there: measured 0 m over 0.2 s; the
@@ -132,6 +131,34 @@ TEST_F(SettleTest, AStackAtMujocosStepSettlesToTheSameStatics) {
     std::printf("top cube's largest move in 0.2 s at 2 ms with contact steps: %.3g m\n", drop);
     EXPECT_LT(drop, kNoDrop);
   }
+}
+
+// box_stack.xml at its own step (RK4, 1e-4 s): the middle cube rests 1.5 cm
+// off the bottom one's centre, tilted onto its offset by its load. The
+// relaxation ran under RK4, whose later stages saw the cubes slid along
+// their faces within the step and friction's springs stretched by it: the
+// middle cube kept turning (4 rad/s^2 at 1e-4 s, 0.4 at 1e-5 s) and was
+// refused as tipping. Relaxed under Euler, it settles, and it rests until the
+// top cube, dropped from 5 cm, lands at 0.1 s.
+TEST_F(SettleTest, TheShippedStackSettlesAtItsOwnStepUnderRk4) {
+  SimulationOptions options;
+  options.settle = true;
+  Simulation& sim = MakeSceneSimulation("box_stack.xml", options);
+  ASSERT_TRUE(sim.settled());
+  EXPECT_EQ(sim.settled()->bodies, 2);
+  EXPECT_EQ(sim.contacts().options().integrator, mjINT_RK4);  // the run's own, given back
+  // measured: the middle cube moves 2.4e-12 m before the top one lands; the
+  // relaxation's residual (1e-6 g) would move it < 4e-8 m in 0.09 s
+  constexpr double kAtRest = 4e-8;  // m
+  const double x0 = sim.data()->qpos[7], z0 = sim.data()->qpos[9];
+  double moved = 0;
+  while (sim.time() < 0.09) {
+    sim.Step();
+    moved = std::max(
+        {moved, std::abs(sim.data()->qpos[7] - x0), std::abs(sim.data()->qpos[9] - z0)});
+  }
+  std::printf("box_stack.xml settled: the middle cube moved %.3g m in 0.09 s\n", moved);
+  EXPECT_LT(moved, kAtRest);
 }
 
 TEST_F(SettleTest, OnlyPositionsMoveAndResetKeepsThem) {
