@@ -48,7 +48,7 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) {
-        if (inner) inner->AddNear(d, p, con);
+        if (inner) inner->AddNear(d, p, con, weights_[i]);
         continue;
       }
       // the point is made where it is kept (it is large: no copy)
