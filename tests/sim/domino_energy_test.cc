@@ -159,15 +159,16 @@ TEST_F(DominoEnergyTest, TheTotalMovesByTheLedgersTrapezoidAlone) {
   // an identity: only round-off (measured 1e-17 J)
   constexpr double kPointPowerTolerance = 1e-12;  // J
   EXPECT_LT(std::abs(parts.point_power), kPointPowerTolerance);
-  // RK4 on the bodies and the ledger's trapezoid, at 2e-5 s: measured 1.0e-6
-  // and -7.6e-5 J (2e-5 and 1.3e-3 of the start's 0.0588 J); the
-  // trapezoid's is the step's part (at 5e-5 s both were 5e-4 to 9e-4 J)
+  // RK4 on the bodies and the ledger's trapezoid, at 2e-5 s: measured 2.4e-7
+  // and -3.1e-5 J (4e-6 and 5e-4 of the start's 0.0588 J); the trapezoid's
+  // is the step's part (9.0e-6 and -2.1e-4 J at 5e-5 s, 1.5e-8 and -9.1e-6 J
+  // at 1e-5 s)
   constexpr double kIntegrationTolerance = 1e-4;  // J
   constexpr double kQuadratureTolerance = 1.5e-4;  // J
   EXPECT_LT(std::abs(parts.integration), kIntegrationTolerance);
   EXPECT_LT(std::abs(parts.quadrature), kQuadratureTolerance);
-  // the change (measured -7.3e-5 J) is the ledger's booking, not a gain:
-  // the bodies' and the laws' parts together measured 2.8e-6 J
+  // the change (measured -3.1e-5 J) is the ledger's booking, not a gain:
+  // the bodies' and the laws' parts together measured -8e-8 J
   constexpr double kBodiesAndLawTolerance = 1e-5;  // J
   EXPECT_LT(std::abs(parts.rise - parts.quadrature), kBodiesAndLawTolerance);
   RecordProperty("rise", std::to_string(parts.rise));
@@ -179,13 +180,14 @@ TEST_F(DominoEnergyTest, TheTotalMovesByTheLedgersTrapezoidAlone) {
 // splits in a clip shares its weight with its copy): the patch's energy is
 // continuous in the poses, and its forces nearly its gradient. One full
 // penalty per clipped vertex, not clipped by the plane, made 2.2e-4 J here
-// (points appearing and leaving deep); the frictionless run, whose dominoes
-// slide apart, 2e-6 J.
+// (points appearing and leaving deep).
 TEST_F(DominoEnergyTest, ThePatchPointsForcesHaveAnEnergy) {
   if (std::getenv(kTestContactStepsVariable)) GTEST_SKIP() << "RK4's stages only";
   const Parts parts = Run();
-  // measured 1.8e-6 J; 1e-5 J (1.7e-4 of the start's energy) leaves room
-  // for the path, which is chaotic (round-off changes where they come to rest)
+  // measured -3.2e-7 J (5.1e-6 J at 5e-5 s, 5.8e-7 J at 1e-5 s; without
+  // friction, the dominoes sliding apart, 3.7e-6 J); 1e-5 J (1.7e-4 of the
+  // start's energy) leaves room for the path, which is chaotic (round-off
+  // changes where they come to rest)
   constexpr double kLawTolerance = 1e-5;  // J
   EXPECT_LT(std::abs(parts.law), kLawTolerance);
 }
