@@ -8,20 +8,20 @@
 // face contact: the face of the other box most opposed to it (the incident
 // face) is clipped against the side planes of the reference face and by the
 // reference plane; the patch is that polygon, its vertices below the plane
-// the points, each with its own depth and a weight, its share of the
-// patch's perimeter (geometry/patch.h, PatchBelow). An edge axis gives one
-// point, the middle of the two edges' closest points, of weight 1.
+// the points, each with its own depth and a weight, its turn in the polygon
+// (geometry/patch.h, PatchBelow). An edge axis gives one point, the middle
+// of the two edges' closest points, of weight 1.
 //
 // Why the polygon's vertices, up to 8: a penalty law sums per-point forces,
 // so the points must span the patch for the force and torque to be right.
 // Two convex quadrilaterals intersect in at most 8 vertices (a square turned
 // 45 degrees on another: the octagon), and the reference plane's cut keeps
-// at most 8 of them below it. Why weights: the weights sum to 4 on every
-// patch (the statics of a resting box are d = (m g / (4 K))^(1/n) on a
-// rectangle and on the octagon alike), and they go to zero continuously as
-// a vertex is made or removed by a clip, so that the patch's elastic energy
-// is continuous in the poses (a point never appears or leaves deep).
-
+// at most 8 of them below it. Why weights: they sum to 4 on every patch
+// (the statics of a resting box are d = (m g / (4 K))^(1/n) on a rectangle
+// and on the octagon alike), and a vertex made by a clip takes its share
+// of the turn of the vertex it split from, so that the patch's elastic
+// energy is continuous in the poses (no point appears or leaves deep).
+//
 // Conventions: depth > 0 in contact (m); the normal points from box a to box
 // b; a point's position is midway between the two surfaces (MuJoCo's).
 

@@ -95,20 +95,23 @@ struct Patch {
 // The patch of a clipped polygon (count vertices in the reference face's
 // frame, in order around it): the polygon is clipped by the reference plane
 // too (height <= 0), so that a point enters and leaves at zero depth where
-// the polygon crosses the plane, and each vertex is weighted by its share of
-// the polygon's perimeter in the plane (half its two edges, over the whole
-// perimeter, times kPatchWeight). A vertex that splits in a clip (a corner
-// crossing a side plane) shares its weight with its copy, the new edge
-// between them starting at zero length, and the polygon's vertices move
-// continuously: the patch's elastic energy, the sum of its points' weight
-// times the law's energy at their depths, is continuous in the poses.
-// Vertices closer than merge along the polygon are one (a corner on a side
+// the polygon crosses the plane, and each vertex is weighted by its turn
+// (the polygon's exterior angle there, in the plane: u, v) over the full
+// turn, times kPatchWeight. A vertex that splits in a clip (a corner
+// crossing a side plane) shares its turn with its copy (the new edge starts
+// at zero length), two that merge (an incident edge passing a reference
+// corner) hand theirs on, and the vertices move continuously: the patch's
+// elastic energy, the sum of its points' weight times the law's energy at
+// their depths, is continuous in the poses. The weights do not depend on
+// where the polygon crosses the plane (which moves fast when the faces are
+// nearly parallel), only on the faces' relative turn. Vertices closer than
+// merge along the polygon are one, the deeper kept (a corner on a side
 // plane clipped into two by round-off). The points are the vertices below
-// the plane (depth > 0), then, with margin > 0, those of the polygon clipped
-// at height margin within margin above it (a gap's, weighted in that
-// polygon), at most max_points (a larger patch gives the lightest point's
-// weight to its nearest), each kind ordered by angle about its centre from
-// the u axis.
+// the plane (depth > 0), then, with margin > 0, those of the polygon
+// clipped at height margin within margin above it (a gap's, weighted in
+// that polygon), at most max_points (a larger patch gives the lightest
+// point's weight to its nearest), each kind ordered by angle about its
+// centre from the u axis.
 Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points);
 
 // The closest points of two edges, each given by its centre, unit direction
