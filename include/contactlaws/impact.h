@@ -49,6 +49,10 @@ struct PointEvaluation {
   bool at_start = false;
   double depth = 0;
   double depth_rate = 0;
+  // the point's share of its contact's force (a face patch's points share
+  // the patch's: docs/geometry.md); force, dissipated and touch power,
+  // elastic energy and the friction's springs are the law's times weight
+  double weight = 1;
   double impact_velocity = 0;  // the law's v0 (floored; Episode::max_approach_velocity)
   double max_approach = 0;     // the episode's largest d' so far, this one included
   double touch_velocity = 0;   // touch: d' at the step before first touch

@@ -84,7 +84,9 @@ Candidate SeparatingAxis(const OrientedBox& a, const OrientedBox& b) {
   const OrientedBox& other = face.feature == BoxFeature::kFaceOfA ? b : a;
   double aligned = 0;
   for (int k = 0; k < 3; ++k) aligned = std::max(aligned, std::fabs(Dot(face.normal, Axis(other, k))));
-  if (NearlyParallelFaces(aligned)) return face;
+  if (NearlyParallelFaces(aligned) || geometry::EdgeAlongFace(edge.normal, face.normal)) {
+    return face;
+  }
   return edge.separation > face.separation + tie ? edge : face;
 }
 
@@ -135,6 +137,7 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
     BoxPoint& point = out->points[c];
     point.pos = Add(Add(f, Add(Scale(u, x[0]), Scale(v, x[1]))), Scale(n, 0.5 * x[2]));
     point.depth = -x[2];
+    point.weight = patch.weight[c];
   }
   out->count = patch.count;
 }

@@ -6,21 +6,21 @@
 // Method: the separating-axis test over the 15 axes (3 + 3 face normals, 9
 // edge cross products) finds the axis of least overlap. A face axis gives a
 // face contact: the face of the other box most opposed to it (the incident
-// face) is clipped against the side planes of the reference face; the patch
-// is the part of the clipped polygon below the reference plane, represented
-// by its vertices, each with its own depth. An edge axis gives one point, the
-// middle of the two edges' closest points.
+// face) is clipped against the side planes of the reference face and by the
+// reference plane; the patch is that polygon, its vertices below the plane
+// the points, each with its own depth and a weight, its turn in the polygon
+// (geometry/patch.h, PatchBelow). An edge axis gives one point, the middle
+// of the two edges' closest points, of weight 1.
 //
 // Why the polygon's vertices, up to 8: a penalty law sums per-point forces,
 // so the points must span the patch for the force and torque to be right.
 // Two convex quadrilaterals intersect in at most 8 vertices (a square turned
-// 45 degrees on another: the octagon), so 8 points keep every patch whole;
-// fewer would have to drop vertices and move the centre of the forces (a
-// box offset on another would lean towards the kept ones). The cost: for
-// equal depths the patch's total force grows with its vertex count (4 for
-// rectangles, 8 for the octagon); the statics of a resting box are
-// d = (m g / (N K))^(1/n) with N that count. Vertices on a straight edge of
-// the patch are not counted (kBoxPointMergeFraction).
+// 45 degrees on another: the octagon), and the reference plane's cut keeps
+// at most 8 of them below it. Why weights: they sum to 4 on every patch
+// (the statics of a resting box are d = (m g / (4 K))^(1/n) on a rectangle
+// and on the octagon alike), and a vertex made by a clip takes its share
+// of the turn of the vertex it split from, so that the patch's elastic
+// energy is continuous in the poses (no point appears or leaves deep).
 //
 // Conventions: depth > 0 in contact (m); the normal points from box a to box
 // b; a point's position is midway between the two surfaces (MuJoCo's).
@@ -47,15 +47,16 @@ struct OrientedBox {
 // quadrilaterals.
 inline constexpr int kMaxBoxBoxPoints = 8;
 
-// Points closer than this fraction of the smaller box's smallest half size
-// are one point (their mean), and a vertex closer than it to the chord of its
-// two neighbours is dropped. Clipping a corner that sits on a side plane (two
-// equal boxes face to face) yields it twice up to round-off; two equal faces
-// turned by e rad about their normal overlap in an octagon whose 4 extra
-// vertices sit on the edges' midpoints, ~e h off the chords: counted, they
-// would double the patch's force for the slightest turn. So the patch keeps
-// 4 points up to a turn of ~1e-3 rad and gets its 8 beyond.
-inline constexpr double kBoxPointMergeFraction = 1e-3;
+// Vertices of a patch's polygon closer than this fraction of the smaller
+// box's smallest half size are one point (the deeper): clipping a corner that
+// sits on a side plane (two equal boxes face to face) yields it twice up to
+// round-off (~1e-16 of the size). Far below the patches of the shallowest
+// contacts (a corner 1e-7 of the size in, tilted, spans ~1e-7), whose shape
+// gives the weights; merging two vertices sums their turns, so the weights
+// barely move (patch.h, PatchBelow). Two faces turned by e rad keep the
+// octagon's 8 vertices however small e is: their weights, not their count,
+// give the patch its force.
+inline constexpr double kBoxPointMergeFraction = 1e-9;
 
 // What decided the contact.
 enum class BoxFeature {
@@ -68,6 +69,10 @@ enum class BoxFeature {
 struct BoxPoint {
   Vector3 pos{};     // midway between the surfaces, world frame (m)
   double depth = 0;  // along the normal, > 0 overlapping (m)
+  // the point's share of the contact's force: the law's force at depth
+  // times weight (a face patch's points: geometry/patch.h, PatchBelow; an
+  // edge contact's one point: 1)
+  double weight = 1;
 };
 
 struct BoxBoxContact {

@@ -6,17 +6,6 @@
 
 namespace contactlaws {
 namespace geometry {
-namespace {
-
-// Distance of x from the segment a-b.
-double ChordDistance(const Vector3& a, const Vector3& x, const Vector3& b) {
-  const Vector3 ab = Sub(b, a);
-  const double length2 = Dot(ab, ab);
-  const double t = length2 > 0 ? std::clamp(Dot(Sub(x, a), ab) / length2, 0.0, 1.0) : 0.0;
-  return Norm(Sub(x, geometry::Add(a, Scale(ab, t))));
-}
-
-}  // namespace
 
 int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out) {
   int m = 0;
@@ -33,55 +22,155 @@ int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out) {
   return m;
 }
 
-void Patch::Add(const Vector3& x, double merge) {
-  for (int k = 0; k < count; ++k) {
-    const Vector3 d = Sub(x, p[k]);
-    if (Dot(d, d) < merge * merge) {
-      const double w = 1.0 / ++merged[k];
-      p[k] = geometry::Add(Scale(p[k], 1 - w), Scale(x, w));
-      return;
+namespace {
+
+// Keeps the part of polygon in (n vertices) at height <= level; writes it to
+// out, returns its count.
+int ClipHeight(const Vector3* in, int n, double level, Vector3* out) {
+  int m = 0;
+  for (int k = 0; k < n && m < kClipCapacity - 1; ++k) {
+    const Vector3& p = in[k];
+    const Vector3& q = in[(k + 1) % n];
+    const double dp = p[2] - level;
+    const double dq = q[2] - level;
+    if (dp <= 0) out[m++] = p;
+    if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
+      // on the plane by construction: at zero depth, not round-off below
+      out[m] = geometry::Add(p, Scale(Sub(q, p), dp / (dp - dq)));
+      out[m++][2] = level;
     }
   }
-  if (count == kClipCapacity) return;
-  p[count] = x;
-  merged[count++] = 1;
+  return m;
 }
 
-void Patch::Order() {
-  double cu = 0, cv = 0;
-  for (int k = 0; k < count; ++k) {
-    cu += p[k][0] / count;
-    cv += p[k][1] / count;
+// Merges each vertex closer than merge to the last one kept (around the
+// polygon, the last against the first too) into it, the deeper of the two
+// kept; returns the count left.
+int MergeClose(Vector3* p, int n, double merge) {
+  const auto close = [&](const Vector3& x, const Vector3& y) {
+    const Vector3 d = Sub(x, y);
+    return Dot(d, d) < merge * merge;
+  };
+  int m = 0;
+  for (int k = 0; k < n; ++k) {
+    if (m > 0 && close(p[k], p[m - 1])) {
+      if (p[k][2] < p[m - 1][2]) p[m - 1] = p[k];
+      continue;
+    }
+    p[m++] = p[k];
   }
-  std::sort(p.begin(), p.begin() + count, [&](const Vector3& x, const Vector3& y) {
-    return std::atan2(x[1] - cv, x[0] - cu) < std::atan2(y[1] - cv, y[0] - cu);
-  });
+  while (m > 1 && close(p[m - 1], p[0])) {
+    if (p[m - 1][2] < p[0][2]) p[0] = p[m - 1];
+    --m;
+  }
+  return m;
 }
 
-void Patch::Simplify(double merge, int max_points) {
-  while (count > 3) {
-    int drop = -1;
-    double nearest = count > max_points ? HUGE_VAL : merge;
-    for (int k = 0; k < count; ++k) {
-      const double d = ChordDistance(p[(k + count - 1) % count], p[k], p[(k + 1) % count]);
-      if (d < nearest) {
-        nearest = d;
-        drop = k;
+// Each vertex's weight: kPatchWeight times its exterior angle (the turn
+// between its two edges, in the plane: u, v) over a full turn; equal shares
+// on a polygon of no extent.
+void AngleWeights(const Vector3* p, int n, double* weight) {
+  double total = 0;
+  for (int k = 0; k < n; ++k) {
+    const Vector3& a = p[(k + n - 1) % n];
+    const Vector3& b = p[k];
+    const Vector3& c = p[(k + 1) % n];
+    const double eu = b[0] - a[0], ev = b[1] - a[1];
+    const double fu = c[0] - b[0], fv = c[1] - b[1];
+    // zero for a vertex on a straight edge or one of a zero-length edge
+    weight[k] = std::abs(std::atan2(eu * fv - ev * fu, eu * fu + ev * fv));
+    total += weight[k];
+  }
+  for (int k = 0; k < n; ++k) {
+    weight[k] = total > 0 ? kPatchWeight * weight[k] / total : kPatchWeight / n;
+  }
+}
+
+// Orders patch points [from, to) by angle about their centre, from the u axis.
+void Order(Patch* patch, int from, int to) {
+  if (to - from < 2) return;
+  double cu = 0, cv = 0;
+  for (int k = from; k < to; ++k) {
+    cu += patch->p[k][0] / (to - from);
+    cv += patch->p[k][1] / (to - from);
+  }
+  std::array<int, kClipCapacity> order;
+  for (int k = from; k < to; ++k) order[k] = k;
+  const auto angle = [&](int k) { return std::atan2(patch->p[k][1] - cv, patch->p[k][0] - cu); };
+  std::sort(order.begin() + from, order.begin() + to,
+            [&](int x, int y) { return angle(x) < angle(y); });
+  const Patch copy = *patch;
+  for (int k = from; k < to; ++k) {
+    patch->p[k] = copy.p[order[k]];
+    patch->weight[k] = copy.weight[order[k]];
+  }
+}
+
+// Removes point k of patch, the rest moving up.
+void Remove(Patch* patch, int k) {
+  std::copy(patch->p.begin() + k + 1, patch->p.begin() + patch->count, patch->p.begin() + k);
+  std::copy(patch->weight.begin() + k + 1, patch->weight.begin() + patch->count,
+            patch->weight.begin() + k);
+  --patch->count;
+}
+
+// While more than max_points: the lightest point's weight goes to the point
+// nearest it, and it goes.
+void Reduce(Patch* patch, int max_points) {
+  while (patch->count > max_points && patch->count > 1) {
+    int lightest = 0;
+    for (int k = 1; k < patch->count; ++k) {
+      if (patch->weight[k] < patch->weight[lightest]) lightest = k;
+    }
+    int nearest = -1;
+    double best = HUGE_VAL;
+    for (int k = 0; k < patch->count; ++k) {
+      const Vector3 d = Sub(patch->p[k], patch->p[lightest]);
+      if (k != lightest && Dot(d, d) < best) {
+        best = Dot(d, d);
+        nearest = k;
       }
     }
-    if (drop < 0) return;
-    std::copy(p.begin() + drop + 1, p.begin() + count, p.begin() + drop);
-    --count;
+    patch->weight[nearest] += patch->weight[lightest];
+    Remove(patch, lightest);
   }
 }
+
+}  // namespace
 
 Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points) {
   Patch patch;
-  for (int c = 0; c < count; ++c) {
-    if (-clipped[c][2] > -margin) patch.Add(clipped[c], merge);
+  std::array<Vector3, kClipCapacity> poly;
+  std::array<double, kClipCapacity> weight;
+  // in contact: the polygon below the plane
+  int n = MergeClose(poly.data(), ClipHeight(clipped, count, 0.0, poly.data()), merge);
+  AngleWeights(poly.data(), n, weight.data());
+  for (int k = 0; k < n; ++k) {
+    if (!(poly[k][2] < 0)) continue;
+    patch.p[patch.count] = poly[k];
+    patch.weight[patch.count++] = weight[k];
   }
-  patch.Order();
-  patch.Simplify(merge, max_points);
+  Reduce(&patch, max_points);
+  Order(&patch, 0, patch.count);
+  if (!(margin > 0)) return patch;
+
+  // within the margin: the vertices of the polygon below height margin that
+  // are not below the plane, the nearest first
+  const int deep = patch.count;
+  n = MergeClose(poly.data(), ClipHeight(clipped, count, margin, poly.data()), merge);
+  AngleWeights(poly.data(), n, weight.data());
+  std::array<int, kClipCapacity> near;
+  int near_count = 0;
+  for (int k = 0; k < n; ++k) {
+    if (poly[k][2] >= 0 && poly[k][2] < margin) near[near_count++] = k;
+  }
+  std::sort(near.begin(), near.begin() + near_count,
+            [&](int x, int y) { return poly[x][2] < poly[y][2]; });
+  for (int k = 0; k < near_count && patch.count < max_points; ++k) {
+    patch.p[patch.count] = poly[near[k]];
+    patch.weight[patch.count++] = weight[near[k]];
+  }
+  Order(&patch, deep, patch.count);
   return patch;
 }
 

@@ -50,6 +50,16 @@ constexpr double kParallelFaceSine = 0.1;
 inline bool NearlyParallelFaces(double cosine) {
   return cosine > 0 && cosine * cosine >= 1 - kParallelFaceSine * kParallelFaceSine;
 }
+// An edge pair's axis within kParallelFaceSine of a face's normal: an edge
+// of the other body lies nearly flat on that face (the pair's cross product
+// is along the normal only when the edge is nearly parallel to the face),
+// and it touches along a segment, the face contact's, not at one point. Two
+// equal separations along nearly the same axis would otherwise flicker
+// between the edge's one point and the face's patch (a domino's top edge
+// under another lying on it), and the force with them.
+inline bool EdgeAlongFace(const Vector3& edge_axis, const Vector3& face_normal) {
+  return NearlyParallelFaces(std::fabs(Dot(edge_axis, face_normal)));
+}
 // An edge axis, or a face of the second body, replaces the best face of the
 // first only when it separates more by this fraction of the largest half
 // size: the axes that coincide (the faces of two aligned boxes, and the edge
@@ -68,28 +78,40 @@ constexpr int kClipCapacity = 64;
 // v, height) where a * u + b * v <= h; writes it to out, returns its count.
 int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out);
 
-// Points of a patch in the reference face's frame (u, v, height along the
-// normal), merged, ordered and simplified.
+// What a face patch's points carry together: the force of this many points
+// at its depth. A box resting flat on a face carries its load on 4 points
+// at the law's depth, as on a plane (MuJoCo's plane-box gives its 4
+// corners), whatever the patch's shape (a rectangle, the 45-degree octagon).
+constexpr double kPatchWeight = 4;
+
+// The points of a face patch in the reference face's frame (u, v, height
+// along the normal), each with its weight: its share of the patch's force.
 struct Patch {
   std::array<Vector3, kClipCapacity> p{};
-  std::array<int, kClipCapacity> merged{};  // how many points each one stands for
+  std::array<double, kClipCapacity> weight{};
   int count = 0;
-
-  // Adds a point, or averages it into one closer than merge.
-  void Add(const Vector3& x, double merge);
-  // Orders the points by angle about their centre, from the u axis.
-  void Order();
-  // Drops, one at a time, the vertex nearest the chord of its two neighbours
-  // while it is nearer than merge (and more than 3 remain): a vertex on a
-  // straight edge adds a point, not a shape. Then, while more than
-  // max_points remain, drops the vertex nearest its chord whatever its
-  // distance: the one whose loss changes the patch's outline least.
-  void Simplify(double merge, int max_points);
 };
 
-// The patch of a clipped polygon (count points in the reference face's
-// frame): its points below the reference plane (height < margin), merged,
-// ordered and simplified to at most max_points.
+// The patch of a clipped polygon (count vertices in the reference face's
+// frame, in order around it): the polygon is clipped by the reference plane
+// too (height <= 0), so that a point enters and leaves at zero depth where
+// the polygon crosses the plane, and each vertex is weighted by its turn
+// (the polygon's exterior angle there, in the plane: u, v) over the full
+// turn, times kPatchWeight. A vertex that splits in a clip (a corner
+// crossing a side plane) shares its turn with its copy (the new edge starts
+// at zero length), two that merge (an incident edge passing a reference
+// corner) hand theirs on, and the vertices move continuously: the patch's
+// elastic energy, the sum of its points' weight times the law's energy at
+// their depths, is continuous in the poses. The weights do not depend on
+// where the polygon crosses the plane (which moves fast when the faces are
+// nearly parallel), only on the faces' relative turn. Vertices closer than
+// merge along the polygon are one, the deeper kept (a corner on a side
+// plane clipped into two by round-off). The points are the vertices below
+// the plane (depth > 0), then, with margin > 0, those of the polygon
+// clipped at height margin within margin above it (a gap's, weighted in
+// that polygon), at most max_points (a larger patch gives the lightest
+// point's weight to its nearest), each kind ordered by angle about its
+// centre from the u axis.
 Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points);
 
 // The closest points of two edges, each given by its centre, unit direction

@@ -74,7 +74,9 @@ Candidate SeparatingAxis(const Hull& a, const Hull& b) {
   for (int g = 0; g < other.face_count; ++g) {
     opposed = std::max(opposed, sign * Dot(face.normal, other.faces[g].normal));
   }
-  if (NearlyParallelFaces(opposed)) return face;
+  if (NearlyParallelFaces(opposed) || geometry::EdgeAlongFace(edge.normal, face.normal)) {
+    return face;
+  }
   return edge.separation > face.separation + tie ? edge : face;
 }
 
@@ -153,6 +155,7 @@ bool FaceContact(const Hull& ref, int k, const Hull& inc, double margin, double 
     const Vector3 in_plane = Add(f, Add(Scale(u, x[0]), Scale(v, x[1])));
     out->points[c].pos = Add(in_plane, Scale(face.normal, 0.5 * x[2]));
     out->points[c].depth = -x[2];
+    out->points[c].weight = patch.weight[c];
   }
   out->count = patch.count;
   return true;

@@ -9,15 +9,15 @@
 // cross products of their distinct hull-edge directions finds the axis of
 // least overlap. A face axis gives a face contact: the face of the other
 // polytope most opposed to it (incident) is clipped against the sides of the
-// reference face; the patch is the part below the reference plane,
-// represented by its vertices, each with its own depth (geometry/patch.h, as
-// for box-box). An edge axis gives one point, the middle of the two edges'
+// reference face and by the reference plane; its vertices below the plane
+// are the points, each with its own depth and its weight (geometry/patch.h,
+// as for box-box). An edge axis gives one point, the middle of the two edges'
 // closest points. A hull's coplanar triangles are one polygonal face.
 //
 // Conventions, as box_box.h: depth > 0 in contact (m); the normal points
 // from a to b; a point is midway between the two surfaces; points closer
 // than kBoxPointMergeFraction of the smaller polytope's smallest half extent
-// are one point, and vertices on a straight side of the patch are dropped.
+// are one point.
 
 #ifndef CONTACTLAWS_GEOMETRY_POLYTOPE_H_
 #define CONTACTLAWS_GEOMETRY_POLYTOPE_H_
@@ -41,8 +41,7 @@ inline constexpr int kMaxPolytopeTriangles = 2 * kMaxPolytopeVertices - 4;
 inline constexpr int kMaxFaceVertices = 32;
 // Most points of one contact: as box-box's (kMaxBoxBoxPoints), the clipped
 // polygon of two quadrilaterals whole; a larger patch (two octagons) keeps
-// the 8 vertices that shape its outline most (patch.h, Simplify), so the
-// centre of the forces stays within ~the dropped vertices' chord distance.
+// 8, each dropped point's weight given to its nearest (patch.h, PatchBelow).
 inline constexpr int kMaxPolytopePoints = kMaxBoxBoxPoints;
 
 // Two triangles of a hull are one face when their normals differ by less

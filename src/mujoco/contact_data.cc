@@ -185,7 +185,7 @@ double ContactData::ElasticEnergy() const {
 }
 
 double ContactData::LawEnergy(const PointEvaluation& e) const {
-  return contactlaws::ElasticEnergy(model_.pairs()[e.pair].params, e.depth);
+  return e.weight * contactlaws::ElasticEnergy(model_.pairs()[e.pair].params, e.depth);
 }
 
 double ContactData::DissipatedEnergy() const {

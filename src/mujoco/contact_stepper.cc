@@ -203,10 +203,11 @@ double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) co
   return kStepReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
 }
 
-void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con) {
+void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con, double weight) {
   PointEvaluation& e = near_.emplace_back();
   mjtNum v0[3], v1[3];
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
+  e.weight = weight;
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, con.frame);
   // the slip, in the tangent plane
@@ -582,7 +583,8 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       }
     }
     const LawParams& law = model_.pairs()[e.pair].params;
-    const double w2 = NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
+    const double w2 =
+        e.weight * NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
     if (!(w2 > 0)) continue;
     const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
     resting_[i] = amplitude < kRestingFraction * e.depth;
@@ -679,7 +681,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
         committed[i] = e.touch_velocity;
         const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity, v0[i],
                                  mass_[i]};
-        e.touch_power = EvaluateLaw(law, touch).dissipated_power(e.touch_velocity);
+        e.touch_power = e.weight * EvaluateLaw(law, touch).dissipated_power(e.touch_velocity);
         open[i] = true;
       }
       e.impact_velocity = std::max({v0[i], committed[i], law.min_impact_velocity});
@@ -688,8 +690,8 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       committed[i] = e.max_approach;
       const ContactForce f =
           EvaluateLaw(law, ContactState{x[i], rate[i], e.impact_velocity, mass_[i]});
-      e.force = force[i] = f.total;
-      e.dissipated_power = f.dissipated_power(rate[i]);
+      e.force = force[i] = e.weight * f.total;
+      e.dissipated_power = e.weight * f.dissipated_power(rate[i]);
       if (r < 0) continue;
 
       // the friction at this sub-sample, against the memory of the one
@@ -801,12 +803,15 @@ FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const doubl
   in.committed_stiffness = memory.stiffness;
   // k_t and c_t at this depth, as the evaluator takes them
   const bool rolling = params.torsional > 0 || params.rolling > 0;
-  if (ReadsTangentialSpring(params.kind) || rolling) {
-    in.stiffness = TangentialStiffness(params, pair.params, x[i]);
-  }
+  // (a weighted point's springs and dampers are its weight's share)
+  const double weight = points_[i].weight;
+  const double kt = ReadsTangentialSpring(params.kind) || rolling
+                        ? TangentialStiffness(params, pair.params, x[i])
+                        : 0.0;
+  in.stiffness = weight * kt;
   if (ReadsTangentialSpring(params.kind)) {
     const ContactState state{x[i], rate[i], v0, 0.0};
-    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+    in.damping = weight * TangentialDamping(params, pair.params, state, kt, pair.friction_mass);
   }
   *stiffness = in.stiffness;
   if (damping) *damping = in.damping + params.viscous;
@@ -868,16 +873,18 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
       // spring and damper there, and the friction's likewise
       const double x0 = x_start_[i];
       const ContactState start{x0, rate_start_[i], v0[i], mass_[i]};
-      const double k = NormalStiffness(pair.params, x0);
-      const double c = DampingCoefficient(pair.params, start);
+      const double weight = points_[i].weight;
+      const double k = weight * NormalStiffness(pair.params, x0);
+      const double c = weight * DampingCoefficient(pair.params, start);
       const double gn =
           start_force[i] + k * ((*x)[i] - x0) + c * ((*rate)[i] - rate_start_[i]);
       hold(i, gn, k, c, -1);
       if (!stick) continue;
       const FrictionParams& f = pair.friction;
-      const double kt = TangentialStiffness(f, pair.params, x0);
+      const double kt1 = TangentialStiffness(f, pair.params, x0);
+      const double kt = weight * kt1;
       const double ct =
-          TangentialDamping(f, pair.params, start, kt, pair.friction_mass) + f.viscous;
+          weight * TangentialDamping(f, pair.params, start, kt1, pair.friction_mass) + f.viscous;
       const double speed = std::hypot((*rate)[r], (*rate)[r + 1]);
       const double limit =
           std::max(gn, 0.0) * (memory_[i].sliding ? SlidingMu(f, speed) : f.mu_static);
@@ -894,7 +901,7 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
       continue;
     }
     const ContactState state{(*x)[i], (*rate)[i], v0[i], mass_[i]};
-    const double fn = EvaluateLaw(pair.params, state).total;
+    const double fn = points_[i].weight * EvaluateLaw(pair.params, state).total;
     double slip[3], k = 0, c = 0;
     const FrictionOutput out = Friction(i, fn, v0[i], x->data(), rate->data(), slip, &k, &c);
     const FrictionParams& f = pair.friction;
@@ -1025,7 +1032,8 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][i] = start_force[i];
       } else if (acting && d[s][i] > 0) {
         const LawParams& law = model_.pairs()[points_[i].pair].params;
-        f[s][i] = EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
+        f[s][i] = points_[i].weight *
+                  EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
       }
       if (!acting || !(d[s][i] > 0)) continue;
       // the friction at the stage's normal force, against the sub-sample's

@@ -67,8 +67,9 @@ class ContactStepper {
 
   // Forgets the points of the previous evaluation.
   void Clear() { near_.clear(); }
-  // A point of pair within reach but not in contact (con.dist >= 0).
-  void AddNear(const mjData* d, int pair, const mjContact& con);
+  // A point of pair within reach but not in contact (con.dist >= 0), of
+  // weight (PointEvaluation::weight).
+  void AddNear(const mjData* d, int pair, const mjContact& con, double weight);
 
   // At the step's start (m: the model as stepped, its timestep h): integrates
   // touching (the evaluator's points in contact, their episodes matched) and

@@ -157,7 +157,10 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
   in.normal_force = std::max(e->force, 0.0);
 
   // k_t: the tag's, or Mindlin's no-slip spring at this depth; c_t
-  if (spring || rolling) in.stiffness = TangentialStiffness(params, pair.params, e->depth);
+  // (a weighted point's springs and dampers are its weight's share)
+  const double stiffness =
+      spring || rolling ? TangentialStiffness(params, pair.params, e->depth) : 0.0;
+  in.stiffness = e->weight * stiffness;
   in.committed_stiffness = committed.stiffness;
   in.mass = pair.friction_mass;
   if (spring) {
@@ -165,7 +168,8 @@ void AddFriction(const ContactModel& model, mjData* d, const EpisodeLog& episode
     state.depth = e->depth;
     state.depth_rate = e->depth_rate;
     state.impact_velocity = e->impact_velocity;
-    in.damping = TangentialDamping(params, pair.params, state, in.stiffness, pair.friction_mass);
+    in.damping = e->weight * TangentialDamping(params, pair.params, state, stiffness,
+                                               pair.friction_mass);
   }
 
   const FrictionOutput out = EvaluateFriction(params, in);

@@ -62,10 +62,12 @@ void PolytopeOf(const mjModel* m, const mjData* d, int g, Polytope* p) {
   }
 }
 
-// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal.
+// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal; their
+// weights in weight (when given).
 template <typename Contact>
-int Write(const Contact& contact, mjContact* out) {
+int Write(const Contact& contact, mjContact* out, double* weight) {
   for (int i = 0; i < contact.count; ++i) {
+    if (weight) weight[i] = contact.points[i].weight;
     mjContact& c = out[i];
     std::memset(&c, 0, sizeof(c));
     c.dist = -contact.points[i].depth;
@@ -77,29 +79,32 @@ int Write(const Contact& contact, mjContact* out) {
 
 // Two polytopes, or -1 when the kernel declines (degenerate hull).
 int CollidePolytopePair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin,
-                        mjContact* out) {
+                        mjContact* out, double* weight) {
   Polytope a, b;
   PolytopeOf(m, d, g0, &a);
   PolytopeOf(m, d, g1, &b);
   const PolytopeContact contact = CollidePolytopes(a, b, margin);
   if (contact.feature == PolytopeFeature::kUnsupported) return -1;
-  return Write(contact, out);
+  return Write(contact, out, weight);
 }
 
 }  // namespace
 
-int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out) {
+int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out,
+            double* weight) {
   switch (NarrowphaseOf(m, g0, g1)) {
     case Narrowphase::kBoxBox:
-      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out);
+      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out, weight);
     case Narrowphase::kPolytope:
-      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out); count >= 0) {
+      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out, weight); count >= 0) {
         return count;
       }
       break;
     default: break;
   }
-  return mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]](m, d, out, g0, g1, margin);
+  const int count = mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]](m, d, out, g0, g1, margin);
+  if (weight) std::fill(weight, weight + count, 1.0);
+  return count;
 }
 
 }  // namespace contactlaws

@@ -19,8 +19,13 @@ namespace contactlaws {
 // mjCOLLISIONFUNC wants, and a pair it collides) closer than margin (m), in
 // out (room for mjMAXCONPAIR). Returns their count. Each has what MuJoCo's
 // collision functions fill: dist (< 0 overlapping, m), pos midway between the
-// surfaces, frame[0..2] the unit normal from g0 towards g1. Allocates nothing.
-int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out);
+// surfaces, frame[0..2] the unit normal from g0 towards g1. With weight (room
+// for mjMAXCONPAIR), each contact's share of the force (geometry/box_box.h:
+// a face patch's points are weighted; MuJoCo's contacts and an edge
+// contact's point weigh 1): the law's force at its depth times weight.
+// Allocates nothing.
+int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out,
+            double* weight = nullptr);
 
 // Room for Collide's output, left uninitialized: Collide writes the contacts
 // it counts, and only those are read (zeroing mjMAXCONPAIR contacts is 7

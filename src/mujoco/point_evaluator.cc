@@ -12,7 +12,7 @@
 namespace contactlaws::internal {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
-    : model_(model), contacts_(MakeContactBuffer()) {
+    : model_(model), contacts_(MakeContactBuffer()), weights_(mjMAXCONPAIR) {
   for (const GeomPair& pair : model.pairs()) {
     reads_mass_.push_back(ReadsEffectiveMass(pair.params));
   }
@@ -42,17 +42,18 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     // the narrowphase (MuJoCo's, or ours for box-box: narrowphase.h): dist < 0
     // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
     // midway between the surfaces
-    const int count = std::min(Collide(m, d, g0, g1, margin, contacts_.get()), pair.slots);
+    const int count =
+        std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data()), pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) {
-        if (inner) inner->AddNear(d, p, con);
+        if (inner) inner->AddNear(d, p, con, weights_[i]);
         continue;
       }
       // the point is made where it is kept (it is large: no copy)
       PointEvaluation& e = latest_.emplace_back();
-      EvaluatePoint(d, p, con, episodes, start, &taken, &e);
+      EvaluatePoint(d, p, con, weights_[i], episodes, start, &taken, &e);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
@@ -66,7 +67,7 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
   }
 }
 
-void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
+void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
                                    const EpisodeLog& episodes, const StepStartVelocities& start,
                                    uint64_t* taken, PointEvaluation* out) const {
   const GeomPair& pair = model_.pairs()[p];
@@ -74,6 +75,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   PointEvaluation& e = *out;
   mjtNum v0[3], v1[3];
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
+  e.weight = weight;
   e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
 
   // the slip before its projection into the tangent plane (SlipAndSpin):
@@ -97,7 +99,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
     // the law at the touch itself (d = 0+, d' = v0)
     const ContactState touch{std::numeric_limits<double>::min(), e.touch_velocity,
                              state.impact_velocity, state.effective_mass};
-    e.touch_power = EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
+    e.touch_power = weight * EvaluateLaw(pair.params, touch).dissipated_power(e.touch_velocity);
     e.max_approach = e.touch_velocity;
   } else {
     // v0: the touch speed, or the largest approach rate committed since, for
@@ -110,8 +112,8 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con,
   }
   e.impact_velocity = state.impact_velocity;
   const ContactForce f = EvaluateLaw(pair.params, state);
-  e.force = f.total;
-  e.dissipated_power = f.dissipated_power(e.depth_rate);
+  e.force = weight * f.total;
+  e.dissipated_power = weight * f.dissipated_power(e.depth_rate);
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, normal);
 }

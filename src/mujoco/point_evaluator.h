@@ -47,10 +47,11 @@ class PointEvaluator {
   double latest_time() const { return latest_time_; }  // s
 
  private:
-  // The normal law at a contact point of pair p (narrowphase output con),
-  // into *e (default-constructed); taken: the pair's open episodes already
+  // The normal law at a contact point of pair p (narrowphase output con, of
+  // weight), into *e (default-constructed); taken: the pair's open episodes already
   // matched in this evaluation.
-  void EvaluatePoint(mjData* d, int p, const mjContact& con, const EpisodeLog& episodes,
+  void EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
+                     const EpisodeLog& episodes,
                      const StepStartVelocities& start, uint64_t* taken, PointEvaluation* e) const;
 
   const ContactModel& model_;
@@ -58,6 +59,7 @@ class PointEvaluator {
   // damping from e), resolved once
   std::vector<char> reads_mass_;
   ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
+  std::vector<double> weights_;  // its points' weights, mjMAXCONPAIR
   std::vector<PointEvaluation> latest_;
   double latest_time_ = 0;
 };

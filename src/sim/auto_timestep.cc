@@ -264,7 +264,8 @@ double AutoTimestep::Next(mjData* d, double until) {
       in_contact_[e.pair] = 1;
       ++in_contact;
     }
-    law_damping_.push_back(DampingCoefficient(cm.pairs()[e.pair].params, State(e)));
+    // a weighted point's damper is its weight's share (a face patch's)
+    law_damping_.push_back(e.weight * DampingCoefficient(cm.pairs()[e.pair].params, State(e)));
     pair_damping_[e.pair] += law_damping_.back();
   }
   // the laws' damping as dampers, a pair's points in parallel: a step no

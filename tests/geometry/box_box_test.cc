@@ -72,6 +72,24 @@ void ExpectWellFormed(const OrientedBox& a, const OrientedBox& b, const BoxBoxCo
       EXPECT_GT(Norm(Sub(p.pos, c.points[j].pos)), merge) << "points " << j << ", " << i;
     }
   }
+  // the weights: an edge crossing's one point 1; a face patch's points
+  // share 4 with the vertices at the plane (each a turn of the polygon)
+  double total = 0;
+  for (int i = 0; i < c.count; ++i) {
+    EXPECT_GT(c.points[i].weight, 0) << "point " << i;
+    total += c.points[i].weight;
+  }
+  if (c.feature == BoxFeature::kEdgeEdge) {
+    EXPECT_EQ(c.points[0].weight, 1);
+  } else {
+    EXPECT_LE(total, 4 + kTolerance);
+  }
+}
+
+// The weights of c's points, in order, are expected (within tolerance: the
+// turns of a polygon of round-off-exact vertices).
+void ExpectWeights(const BoxBoxContact& c, double expected) {
+  for (int i = 0; i < c.count; ++i) EXPECT_NEAR(c.points[i].weight, expected, 1e-9) << i;
 }
 
 // Each expected point is found once, at its position and depth.
@@ -109,20 +127,30 @@ TEST(BoxBoxTest, AlignedFacesGiveTheFourCornersAtFullDepth) {
     EXPECT_EQ(c.feature, BoxFeature::kFaceOfA);
     EXPECT_NEAR(c.normal[2], 1, kTolerance);
     ExpectPoints(c, Rectangle(-0.1, 0.1, -0.08, 0.08, 0.05 - d / 2, d));
+    ExpectWeights(c, 1);
   }
 }
 
 TEST(BoxBoxTest, NearlyAlignedFacesGiveEachCornerOnce) {
   // equal boxes, one turned by 1e-6 degrees: each corner that pokes out of
-  // the other face by ~1e-9 m is clipped into two points that close; they
-  // are one corner (kBoxPointMergeFraction), not two
+  // the other face by ~1e-9 m is clipped into two points ~1e-9 m apart, each
+  // with half the corner's turn: together they weigh one corner, as the
+  // aligned boxes' corner does (the patch's force does not jump with a turn)
   for (const double f : kOverlapFractions) {
     const double d = f * kSize;
     const OrientedBox b = Above(kBase, Rotation({0, 0, 1}, 1e-6), kBase.half, d);
     const BoxBoxContact c = CollideBoxes(kBase, b, 0);
     ExpectWellFormed(kBase, b, c);
-    ASSERT_EQ(c.count, 4);
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(c.points[i].depth, d, kTolerance);
+    double at_corner[2][2] = {{0, 0}, {0, 0}};
+    for (int i = 0; i < c.count; ++i) {
+      EXPECT_NEAR(c.points[i].depth, d, kTolerance);
+      at_corner[c.points[i].pos[0] > 0][c.points[i].pos[1] > 0] += c.points[i].weight;
+    }
+    // the turns of the 8 vertices: 1e-6 degrees off the square's quarters
+    constexpr double kTurnTolerance = 1e-7;
+    for (const auto& row : at_corner) {
+      for (const double w : row) EXPECT_NEAR(w, 1, kTurnTolerance);
+    }
   }
 }
 
@@ -155,6 +183,7 @@ TEST(BoxBoxTest, FacesTurned45DegreesGiveTheOctagon) {
       octagon.push_back({{r * std::cos(angle), r * std::sin(angle), h - d / 2}, d});
     }
     ExpectPoints(c, octagon);
+    ExpectWeights(c, 0.5);  // the octagon's turns: 45 degrees each
   }
 }
 
@@ -243,7 +272,55 @@ TEST(BoxBoxTest, NearlyParallelFacesNeverTouchOnAnEdgeCrossing) {
     }
   }
   EXPECT_GT(patches, 5000);  // most landings below 0.1 rad rest on a patch
-  EXPECT_GT(edges, 100);     // steeper, edge crossings remain what they are
+  // steeper, edge crossings remain what they are (73 of ~4,000), unless the
+  // edge lies within 0.1 rad of the face it crosses (EdgeAlongFace)
+  EXPECT_GT(edges, 30);
+}
+
+// The patch's elastic energy for a law of exponent 1.5: sum of weight x
+// d^2.5 (the law's U(d) up to its constant).
+double PatchEnergy(const BoxBoxContact& c) {
+  double energy = 0;
+  for (int i = 0; i < c.count; ++i) {
+    energy += c.points[i].weight * std::pow(std::max(c.points[i].depth, 0.0), 2.5);
+  }
+  return energy;
+}
+
+TEST(BoxBoxTest, ThePatchsEnergyIsContinuousInThePose) {
+  // a cube turned 30 degrees and tilted 0.03 rad (a face contact), its
+  // lowest corner 1 mm below a box's top face, slid along x off its edge in
+  // 10 um steps: its corners cross the box's side planes while deep, the
+  // polygon's vertices split and merge, the plane's cut moves over the
+  // patch. At the largest jump of the energy between two poses, steps 1,000
+  // times shorter must give a jump ~1,000 times smaller: the energy has no
+  // step there. (A full penalty per clipped vertex, not cut by the plane,
+  // kept a jump of a whole point's energy however short the step: 3.2e-8
+  // at both step lengths, measured; now 7.8e-11 and 7.8e-14.)
+  const auto energy = [&](double x) {
+    OrientedBox b{{x, 0.01, 0}, LandingAttitude(30, 0.03, 0.4), kCube};
+    b.centre[2] = kBase.half[2] - 1e-3 - Lowest(b)[2];
+    const BoxBoxContact c = CollideBoxes(kBase, b, 0);
+    EXPECT_NE(c.feature, BoxFeature::kEdgeEdge) << x;
+    return PatchEnergy(c);
+  };
+  constexpr double kStep = 1e-5;  // m
+  double worst = 0, at = 0;
+  for (double x = 0; x < 0.14; x += kStep) {
+    const double jump = std::abs(energy(x + kStep) - energy(x));
+    if (jump > worst) {
+      worst = jump;
+      at = x;
+    }
+  }
+  ASSERT_GT(worst, 0);
+  double finest = 0;
+  for (double x = at; x < at + kStep; x += kStep / 1000) {
+    finest = std::max(finest, std::abs(energy(x + kStep / 1000) - energy(x)));
+  }
+  // Lipschitz: 1/1000 of the worst jump, with a factor 10 for the slope's
+  // change within the step
+  EXPECT_LT(finest, 1e-2 * worst) << "at x = " << at;
 }
 
 TEST(BoxBoxTest, EdgeOnFaceGivesTheEdgeEndsAtFullDepth) {
@@ -254,6 +331,7 @@ TEST(BoxBoxTest, EdgeOnFaceGivesTheEdgeEndsAtFullDepth) {
     const BoxBoxContact c = CollideBoxes(kWideBase, b, 0);
     ExpectWellFormed(kWideBase, b, c);
     ExpectPoints(c, {{{-h, 0, 0.05 - d / 2}, d}, {{h, 0, 0.05 - d / 2}, d}});
+    ExpectWeights(c, 1);  // the strip's corners below the plane
   }
 }
 
@@ -265,6 +343,9 @@ TEST(BoxBoxTest, CornerOnFaceGivesOnePoint) {
     const BoxBoxContact c = CollideBoxes(kWideBase, b, 0);
     ExpectWellFormed(kWideBase, b, c);
     ExpectPoints(c, {{{0, 0, 0.05 - d / 2}, d}});
+    // the corner's turn in the triangle below the plane: its two edges on
+    // the incident face, 120 degrees apart seen from above, turn by 60
+    ExpectWeights(c, 4.0 / 6);
   }
 }
 

@@ -42,7 +42,7 @@ PolytopeFeature FeatureOf(BoxFeature f) {
 }
 
 // The polytope contact of a and b is CollideBoxes': same feature, normal and
-// count, each box point found once at its position and depth. The scene is
+// count, each box point found once at its position, depth and weight. The scene is
 // what it claims: CollideBoxes finds feature with count points (any if -1).
 void ExpectSameAsBoxes(const OrientedBox& a, const OrientedBox& b, const char* scene,
                        BoxFeature feature, int count) {
@@ -65,6 +65,8 @@ void ExpectSameAsBoxes(const OrientedBox& a, const OrientedBox& b, const char* s
       if (Norm(Sub(poly.points[j].pos, e.pos)) > kTolerance) continue;
       ++found;
       EXPECT_NEAR(poly.points[j].depth, e.depth, kTolerance) << "point " << i;
+      // the same polygon's turns (round-off in the angles of short edges)
+      EXPECT_NEAR(poly.points[j].weight, e.weight, 1e-9) << "point " << i;
     }
     EXPECT_EQ(found, 1) << "box point " << i << " at " << e.pos[0] << " " << e.pos[1] << " "
                         << e.pos[2];
@@ -297,7 +299,10 @@ TEST(PolytopeTest, NearlyParallelFacesNeverTouchOnAnEdgeCrossing) {
       }
     }
     EXPECT_GT(patches, 2500);  // a third of the landings below 0.1 rad rest on a patch
-    EXPECT_GT(edges, 100);     // steeper, edge crossings remain what they are
+    // steeper, edge crossings remain what they are (30 and 27 of ~2,000),
+    // unless the edge lies within 0.1 rad of the face it crosses
+    // (EdgeAlongFace)
+    EXPECT_GT(edges, 10);
   }
 }
 

@@ -6,8 +6,10 @@
 // kernel (mujoco/narrowphase.h); the floor-cube contact is MuJoCo's plane-box
 // (exact, 4 corners).
 //
-// Statics: an interface carrying the weight W of the cubes above it on N
-// points of equal depth (a centred stack) rests at d = (W / (N K))^(1/n). A
+// Statics: an interface carrying the weight W of the cubes above it at one
+// depth (a centred stack) rests at d = (W / (4 K))^(1/n): the plane-box's 4
+// corners, and box-box's face patch, whose points' weights sum to 4 (4
+// corners of weight 1, or the octagon's 8 of weight 1/2). A
 // stack offset along x loads each interface off its centre: the patch is the
 // rectangle of two rows of points, x = c -+ hw, and the moments give each row
 // F = W/2 (1 -+ e/hw) (e: the load's offset from c), each of its two points
@@ -166,11 +168,12 @@ class BoxStackTest : public testing::MujocoTest {
 };
 
 // The statics of a centred stack: interface t carries the cubes from t up on
-// 4 points, 8 between cubes turned 45 degrees (the octagon).
+// 4 points, 8 between cubes turned 45 degrees (the octagon), of weights
+// summing to 4.
 std::vector<double> BoxStackTest::CentredDepths(const Stack& s, int t) {
   const int points = t > 0 && s.turn == 45 ? 8 : 4;
   const double weight = (s.cubes - t) * kMass * kGravity;
-  return std::vector<double>(points, RestDepth(weight / points));
+  return std::vector<double>(points, RestDepth(weight / 4));
 }
 
 // The statics of a stack offset along x: two rows of two points.

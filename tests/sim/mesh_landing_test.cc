@@ -46,7 +46,10 @@ constexpr double kRockTolerance = 1e-9;  // rad/s
 // landing at this step, shared with box-box, not of the patch (its cause is
 // not pinned down here).
 constexpr double kEnergyCreepTolerance = 1e-7;
-constexpr double kSettled = 0.5;  // s: the landing at 0.1 s, settled by then
+// s: the landing at 0.1 s, its bounces until 0.44 s, then rocking onto its 4
+// corners until ~0.53 s (where the total rises by 3e-5 J, as the landing's
+// rise above), settled by then
+constexpr double kSettled = 0.6;
 
 // The base: a box geom free on the floor, or a mesh slab of the same size
 // fixed to the world (a free one would rest on MuJoCo's plane-mesh contact:
@@ -175,11 +178,11 @@ TEST_F(MeshLandingTest, APrismLandingTurnedAndBarelyTiltedOnABoxGainsNoEnergy) {
     ASSERT_FALSE(sim.contacts().divergence()) << "t = " << sim.time();
     rise = std::max(rise, sim.Energy().total() - total0);
   }
-  // the landing's rise at this step, as the cube's above: measured 1.1e-4 J
-  // (5.8e-4 of m g h); the one-point landing's is 45 times this bound
+  // the landing's rise at this step, as the cube's above: measured 7.5e-5 J
+  // (3.8e-4 of m g h); the one-point landing's is 45 times this bound
   EXPECT_LT(rise, 0.05 * kMass * kGravity * kPrismDrop);
   // the elastic peak of the whole mass on one point (above), damping
-  // included: measured 756 N on the patch
+  // included: measured 636 N on the patch
   const double v = std::sqrt(2 * kGravity * kPrismDrop);
   const double peak_bound = 2 * kStiffness * std::pow(5 * kMass * v * v / (4 * kStiffness), 0.6);
   double peak = 0;
