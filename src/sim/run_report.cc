@@ -41,11 +41,24 @@ double SinkingSpeed(const Simulation& sim, const Episode& c) {
 // Whether chained impact c is bodies settling under their load: touched
 // slower than the law's floor of v0 (placed touching, or come to rest) and
 // compressed no faster than kChainFactor times gravity sinks them to its
-// depth. A pulse through touching bodies is far faster (a cradle, whose
-// balls gravity does not press together, has none).
-bool SettledUnderLoad(const Simulation& sim, const Episode& c) {
+// depth, or than the scene's contacts that settle so compressed (settling,
+// m/s: the load of the bodies above reaches a contact whichever way it
+// points, a ball wedged between two others). A pulse through touching
+// bodies is far faster (a cradle, whose balls gravity does not press
+// together, has none).
+bool SettledUnderLoad(const Simulation& sim, const Episode& c, double settling = 0) {
   return c.impact_velocity < c.touch_v0 &&
-         c.max_approach_velocity <= kChainFactor * SinkingSpeed(sim, c);
+         c.max_approach_velocity <= kChainFactor * std::max(SinkingSpeed(sim, c), settling);
+}
+
+// The fastest compression of the scene's contacts that settle under their
+// own bodies' weight (SettledUnderLoad), m/s.
+double SceneSettling(const Simulation& sim) {
+  double settling = 0;
+  for (const Episode& c : sim.contacts().impacts()) {
+    if (SettledUnderLoad(sim, c)) settling = std::max(settling, c.max_approach_velocity);
+  }
+  return settling;
 }
 
 }  // namespace
@@ -55,6 +68,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spe
   // contact is one a warning should name, once per tag: many pairs of a tag
   // (balls on a box, a cradle) say one thing
   const ContactModel& cm = sim.contact_model();
+  const double scene_settling = SceneSettling(sim);
   std::vector<std::string> warnings;
   for (const PairTag& tag : cm.tags()) {
     const Episode* first = nullptr;
@@ -63,7 +77,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spe
     for (const int p : tag.pairs) {
       int pair_count = 0;
       for (const Episode& c : sim.contacts().impacts()) {
-        if (c.pair != p || !c.chained() || SettledUnderLoad(sim, c)) continue;
+        if (c.pair != p || !c.chained() || SettledUnderLoad(sim, c, scene_settling)) continue;
         if (!first) first = &c;
         ++pair_count;
       }
@@ -90,7 +104,7 @@ std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spe
   const Episode* fastest = nullptr;
   int settling = 0;
   for (const Episode& c : sim.contacts().impacts()) {
-    if (!c.chained() || !SettledUnderLoad(sim, c)) continue;
+    if (!c.chained() || !SettledUnderLoad(sim, c, scene_settling)) continue;
     ++settling;
     if (!fastest || c.max_approach_velocity > fastest->max_approach_velocity) fastest = &c;
   }

@@ -5,6 +5,7 @@
 
 #include "sim/run_report.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -93,6 +94,41 @@ TEST_F(RunReportTest, BodiesPlacedTouchingMakeOneLineThatPointsToSettle) {
       << w[0];
   EXPECT_NE(w[0].find("--settle"), std::string::npos) << w[0];
   EXPECT_EQ(w[0].find("pulse"), std::string::npos) << w[0];
+}
+
+// A pyramid placed exactly touching: two 10 cm balls side by side on the
+// floor, a third on them. The top ball's weight wedges the two apart and,
+// through friction, together: their contact compresses at 0.004 m/s with
+// no weight of their own along its horizontal normal. That is the scene
+// settling, as the floor's contacts do at up to 0.013 m/s: one line, which
+// points to --settle (two before: the wedged pair was called pushed).
+TEST_F(RunReportTest, BallsWedgedUnderABallSettleInOneLine) {
+  const double r = 0.05;
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="1e-4" integrator="RK4"/>
+  <worldbody><geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="a" pos="0 0 {0}"><freejoint/>
+      <geom type="sphere" size="{0}" mass="1" group="1"/></body>
+    <body name="b" pos="{1} 0 {0}"><freejoint/>
+      <geom type="sphere" size="{0}" mass="1" group="1"/></body>
+    <body name="c" pos="{0} 0 {2}"><freejoint/>
+      <geom type="sphere" size="{0}" mass="1" group="1"/></body>
+  </worldbody>
+  <custom>
+    <text name="contactlaw:balls" data="geom1=group:1 geom2=group:1 law=hunt-crossley
+      restitution=0.5 stiffness=1e8 friction=coulomb mu=0.5"/>
+    <text name="contactlaw:floor" data="geom1=floor geom2=group:1 law=hunt-crossley
+      restitution=0.5 stiffness=1e8 friction=coulomb mu=0.5"/>
+  </custom>
+</mujoco>)",
+                                      r, 2 * r, r + 2 * r * std::sin(M_PI / 3));
+  Simulation& sim = MakeSimulation(xml);
+  while (sim.time() < 0.1) sim.Step();
+  const std::vector<std::string> w = ChainedContactWarnings(sim, kCommandLineSpelling);
+  ASSERT_EQ(w.size(), 1u) << w[0];
+  EXPECT_NE(w[0].find("touching at rest"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("--settle"), std::string::npos) << w[0];
+  EXPECT_EQ(w[0].find("pushed"), std::string::npos) << w[0];
 }
 
 // Settled, then struck: box_stack.xml's top cube lands on the two settled
