@@ -185,6 +185,29 @@ void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const 
   }
 }
 
+// Each of the rows x nv matrix's rows' span [lo, hi) of nonzero entries,
+// two per row into spans.
+void RowSpans(const double* matrix, int rows, int nv, std::vector<int>* spans) {
+  spans->resize(static_cast<size_t>(2) * rows);
+  for (int i = 0; i < rows; ++i) {
+    const double* row = matrix + static_cast<size_t>(i) * nv;
+    int lo = 0, hi = nv;
+    while (lo < hi && row[lo] == 0) ++lo;
+    while (hi > lo && row[hi - 1] == 0) --hi;
+    (*spans)[2 * i] = lo;
+    (*spans)[2 * i + 1] = hi;
+  }
+}
+
+// Row i of the rows x nv matrix (its span in spans) dotted with v.
+double RowDot(const double* matrix, const std::vector<int>& spans, int i, int nv,
+              const double* v) {
+  const double* row = matrix + static_cast<size_t>(i) * nv;
+  double dot = 0;
+  for (int k = spans[2 * i]; k < spans[2 * i + 1]; ++k) dot += row[k] * v[k];
+  return dot;
+}
+
 }  // namespace
 
 ContactStepper::ContactStepper(const ContactModel& model) : model_(model), step_pairs_(model) {}
@@ -229,6 +252,7 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
+  nv_ = nv;
   j_.assign(static_cast<size_t>(rows) * nv, 0.0);
   minv_jt_.resize(j_.size());
   for (int i = 0; i < n; ++i) {
@@ -271,41 +295,45 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   mj_solveM(m, d, a_free_.data(), force.data(), 1);
 
   // each row's span of nonzero entries in J and in M^-1 J^T: a row moves the
-  // degrees of freedom of its two bodies' chains only, and A_ij is the dot
+  // degrees of freedom of its two bodies' trees only, and A_ij is the dot
   // over where the spans of J_i and M^-1 J_j^T overlap (zero where they do
-  // not: points of bodies that share no chain); A symmetric, its upper half
-  // taken and mirrored
-  span_.resize(static_cast<size_t>(4) * rows);
-  for (int i = 0; i < rows; ++i) {
-    for (int which = 0; which < 2; ++which) {
-      const double* row = (which ? minv_jt_ : j_).data() + static_cast<size_t>(i) * nv;
-      int lo = 0, hi = nv;
-      while (lo < hi && row[lo] == 0) ++lo;
-      while (hi > lo && row[hi - 1] == 0) --hi;
-      span_[4 * i + 2 * which] = lo;
-      span_[4 * i + 2 * which + 1] = hi;
-    }
-  }
-  a_.assign(static_cast<size_t>(rows) * rows, 0.0);
+  // not: points of bodies that share no tree)
+  RowSpans(j_.data(), rows, nv, &j_span_);
+  RowSpans(minv_jt_.data(), rows, nv, &minv_jt_span_);
+  a_diag_.resize(rows);
   b_.assign(rows, 0.0);
   mass_.assign(n, std::numeric_limits<double>::infinity());
   for (int i = 0; i < rows; ++i) {
-    const double* ji = j_.data() + static_cast<size_t>(i) * nv;
-    for (int j = i; j < rows; ++j) {
-      const int lo = std::max(span_[4 * i], span_[4 * j + 2]);
-      const int hi = std::min(span_[4 * i + 1], span_[4 * j + 3]);
-      if (hi <= lo) continue;
-      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-      double dot = 0;
-      for (int k = lo; k < hi; ++k) dot += ji[k] * mj[k];
-      a_[i * rows + j] = a_[j * rows + i] = dot;
-    }
-    b_[i] = mju_dot(ji, a_free_.data(), nv);
-    if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
+    a_diag_[i] = Coupling(i, i);
+    b_[i] = mju_dot(j_.data() + static_cast<size_t>(i) * nv, a_free_.data(), nv);
+    if (i < n && a_diag_[i] > 0) mass_[i] = 1.0 / a_diag_[i];
+  }
+  // M (ImplicitRows' solve in the dofs), and each tree's dofs
+  mass_matrix_.assign(d->qM, d->qM + m->nM);
+  root_dofs_.assign(m->nbody, 0);
+  for (int k = 0; k < nv; ++k) ++root_dofs_[m->body_rootid[m->dof_bodyid[k]]];
+}
+
+double ContactStepper::Coupling(int i, int j) const {
+  const int lo = std::max(j_span_[2 * i], minv_jt_span_[2 * j]);
+  const int hi = std::min(j_span_[2 * i + 1], minv_jt_span_[2 * j + 1]);
+  const double* ji = j_.data() + static_cast<size_t>(i) * nv_;
+  const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv_;
+  double dot = 0;
+  for (int k = lo; k < hi; ++k) dot += ji[k] * mj[k];
+  return dot;
+}
+
+void ContactStepper::Spread(const double* c, double* out) const {
+  std::fill(out, out + nv_, 0.0);
+  for (int j = 0; j < rows_; ++j) {
+    if (c[j] == 0) continue;
+    const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv_;
+    for (int k = minv_jt_span_[2 * j]; k < minv_jt_span_[2 * j + 1]; ++k) out[k] += c[j] * mj[k];
   }
 }
 
-void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
+void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
@@ -370,43 +398,18 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
   // b gains J' v0, and b1 = 2 J' a_free per second
   moving_ = false;
   b1_.assign(rows, 0.0);
-  jdot_span_.resize(static_cast<size_t>(2) * rows);
+  RowSpans(jdot_.data(), rows, nv, &jdot_span_);
   for (int r = 0; r < rows; ++r) {
-    const double* row = jdot_.data() + static_cast<size_t>(r) * nv;
-    int lo = 0, hi = nv;
-    while (lo < hi && row[lo] == 0) ++lo;
-    while (hi > lo && row[hi - 1] == 0) --hi;
-    jdot_span_[2 * r] = lo;
-    jdot_span_[2 * r + 1] = hi;
-    moving_ = moving_ || hi > lo;
-    double velocity = 0, free = 0;
-    for (int k = lo; k < hi; ++k) {
-      velocity += row[k] * d->qvel[k];
-      free += row[k] * a_free_[k];
-    }
-    b_[r] += velocity;
-    b1_[r] = 2 * free;
+    if (jdot_span_[2 * r + 1] <= jdot_span_[2 * r]) continue;
+    moving_ = true;
+    b_[r] += RowDot(jdot_.data(), jdot_span_, r, nv, d->qvel);
+    b1_[r] = 2 * RowDot(jdot_.data(), jdot_span_, r, nv, a_free_.data());
   }
   if (!moving_) return;
-  // D = J' M^-1 J^T and C = D + D^T, once a step, over where the spans of
-  // J'_i and M^-1 J_j^T overlap; D kept transposed, so that Acceleration
-  // reads D's column j contiguously
-  d_transposed_.assign(static_cast<size_t>(rows) * rows, 0.0);
-  c_.assign(d_transposed_.size(), 0.0);
-  for (int i = 0; i < rows; ++i) {
-    if (jdot_span_[2 * i + 1] <= jdot_span_[2 * i]) continue;
-    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
-    for (int j = 0; j < rows; ++j) {
-      const int lo = std::max(jdot_span_[2 * i], span_[4 * j + 2]);
-      const int hi = std::min(jdot_span_[2 * i + 1], span_[4 * j + 3]);
-      double dot = 0;
-      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-      for (int k = lo; k < hi; ++k) dot += di[k] * mj[k];
-      d_transposed_[static_cast<size_t>(j) * rows + i] = dot;
-      c_[static_cast<size_t>(j) * rows + i] += dot;
-      c_[static_cast<size_t>(i) * rows + j] += dot;
-    }
-  }
+  // M^-1 J'^T, once a step, for D^T f = M^-1 J'^T f (Acceleration)
+  minv_jdt_.resize(jdot_.size());
+  mj_solveM(m, d, minv_jdt_.data(), jdot_.data(), rows);
+  RowSpans(minv_jdt_.data(), rows, nv, &minv_jdt_span_);
 }
 
 double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
@@ -431,31 +434,41 @@ double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
 }
 
 void ContactStepper::Acceleration(double t, const double* f, const double* impulse,
-                                  double* acc) const {
-  // acc = b + t b1 - (A + t C) f - D P, over the rows with a force or an
-  // impulse (columns of the symmetric A and C, and of D^T)
+                                  double* acc) {
+  // acc = b + t b1 - J (u + t w) - J' (t u + p), u = M^-1 J^T f,
+  // w = M^-1 J'^T f, p = M^-1 J^T P: each row's part over its span
   const int rows = rows_;
-  for (int i = 0; i < rows; ++i) acc[i] = moving_ ? b_[i] + t * b1_[i] : b_[i];
+  const int nv = nv_;
+  spread_.resize(nv);
+  Spread(f, spread_.data());
+  if (!moving_) {
+    for (int i = 0; i < rows; ++i) acc[i] = b_[i] - RowDot(j_.data(), j_span_, i, nv, spread_.data());
+    return;
+  }
+  spread_rate_.assign(nv, 0.0);
   for (int j = 0; j < rows; ++j) {
-    const double fj = f[j];
-    const double pj = moving_ ? impulse[j] : 0.0;
-    if (fj == 0 && pj == 0) continue;
-    const double* a = a_.data() + static_cast<size_t>(j) * rows;
-    if (!moving_) {
-      for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj;
-      continue;
+    if (f[j] == 0) continue;
+    const double* mj = minv_jdt_.data() + static_cast<size_t>(j) * nv;
+    for (int k = minv_jdt_span_[2 * j]; k < minv_jdt_span_[2 * j + 1]; ++k) {
+      spread_rate_[k] += f[j] * mj[k];
     }
-    const double* c = c_.data() + static_cast<size_t>(j) * rows;
-    const double* dt = d_transposed_.data() + static_cast<size_t>(j) * rows;
-    const double tf = t * fj;
-    for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj + c[i] * tf + dt[i] * pj;
+  }
+  spread_impulse_.resize(nv);
+  Spread(impulse, spread_impulse_.data());
+  // J (u + t w) into spread_rate_, J' (t u + p) into spread_impulse_
+  for (int k = 0; k < nv; ++k) {
+    spread_rate_[k] = spread_[k] + t * spread_rate_[k];
+    spread_impulse_[k] += t * spread_[k];
+  }
+  for (int i = 0; i < rows; ++i) {
+    acc[i] = b_[i] + t * b1_[i] - RowDot(j_.data(), j_span_, i, nv, spread_rate_.data()) -
+             RowDot(jdot_.data(), jdot_span_, i, nv, spread_impulse_.data());
   }
 }
 
 int ContactStepper::SubSteps(double h) const {
   if (options_.substeps > 0) return options_.substeps;
   const int n = static_cast<int>(points_.size());
-  const int rows = rows_;
   double step = h;
   // each friction point's tangential spring and damper (TangentialDynamics)
   // in contact at the step's start
@@ -484,8 +497,9 @@ int ContactStepper::SubSteps(double h) const {
       double row = 0, damped = 0;
       for (int j = 0; j < n; ++j) {
         for (int c = tangent_row_[j]; c >= 0 && c < tangent_row_[j] + 2; ++c) {
-          row += std::abs(a_[r * rows + c]);
-          damped += std::abs(a_[r * rows + c]) * tangential[j].damping;
+          const double coupling = std::abs(Coupling(r, c));
+          row += coupling;
+          damped += coupling * tangential[j].damping;
         }
       }
       if (!(row > 0)) continue;
@@ -504,12 +518,13 @@ int ContactStepper::SubSteps(double h) const {
     if (resting_[i]) continue;
     double row = 0, damped = 0;
     for (int j = 0; j < n; ++j) {
-      row += std::abs(a_[i * rows + j]);
+      const double coupling = std::abs(Coupling(i, j));
+      row += coupling;
       const PointEvaluation& f = points_[j];
       if (f.depth > 0 && !resting_[j]) {
         const ContactState state{f.depth, f.depth_rate, f.impact_velocity, mass_[j]};
         damped +=
-            std::abs(a_[i * rows + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
+            coupling * DampingCoefficient(model_.pairs()[f.pair].params, state);
       }
     }
     if (!(row > 0)) continue;
@@ -563,26 +578,36 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       memory.sliding = e.friction_state.sliding;
     }
   }
+  row_point_.resize(rows_);
+  for (int i = 0; i < n; ++i) {
+    row_point_[i] = i;
+    if (tangent_row_[i] >= 0) row_point_[tangent_row_[i]] = row_point_[tangent_row_[i] + 1] = i;
+  }
   BuildContactSpace(m, d);
   // the points at rest: vibrating about their equilibrium by less than
   // kRestingFraction of their depth
   resting_.assign(n, 0);
+  if (options_.substeps <= 0) {
+    // x'' = b - A f at the start's forces (u = M^-1 J^T f)
+    std::vector<double>& start = free_acc_;
+    start.assign(rows_, 0.0);
+    for (int j = 0; j < n; ++j) {
+      if (!(points_[j].depth > 0)) continue;
+      start[j] = points_[j].force;
+      const int r = tangent_row_[j];
+      for (int c = 0; r >= 0 && c < 2; ++c) {
+        start[r + c] = -vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
+      }
+    }
+    spread_.resize(m->nv);
+    Spread(start.data(), spread_.data());
+  }
   for (int i = 0; options_.substeps <= 0 && i < n; ++i) {
     const PointEvaluation& e = points_[i];
     if (!(e.depth > 0) || e.touch || e.friction_state.sliding) continue;
-    double acc = b_[i];
-    for (int j = 0; j < n; ++j) {
-      if (points_[j].depth > 0) acc -= a_[static_cast<size_t>(i) * rows_ + j] * points_[j].force;
-    }
-    for (int j = 0; j < n; ++j) {
-      const int r = tangent_row_[j];
-      for (int c = 0; r >= 0 && points_[j].depth > 0 && c < 2; ++c) {
-        acc += a_[static_cast<size_t>(i) * rows_ + r + c] *
-               vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
-      }
-    }
+    const double acc = b_[i] - RowDot(j_.data(), j_span_, i, m->nv, spread_.data());
     const LawParams& law = model_.pairs()[e.pair].params;
-    const double w2 = NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
+    const double w2 = NormalStiffness(law, e.depth) * a_diag_[i];
     if (!(w2 > 0)) continue;
     const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
     resting_[i] = amplitude < kRestingFraction * e.depth;
@@ -849,7 +874,7 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
       stiffness.push_back(k);
       damping.push_back(c);
       cap.push_back(group_cap);
-      const double inverse_mass = a_[static_cast<size_t>(r) * rows + r];
+      const double inverse_mass = a_diag_[r];
       trapezoid = trapezoid && group_cap >= 0 &&
                   k * inverse_mass * step * step <= kTrapezoidRate * kTrapezoidRate &&
                   c * inverse_mass * step <= kTrapezoidRate;
@@ -918,9 +943,9 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     gain.push_back(stiffness[a] * step * step * w2 + damping[a] * step * w);
   }
   // the solved rows: f = g - K A delta (x and x' at the sub-step's end
-  // moved by -w2 step^2 A delta and -w step A delta), solved as
-  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
-  // A normal force below 0 is put at 0, a friction force beyond its cap at
+  // moved by -w2 step^2 A delta and -w step A delta), an SPD system, solved
+  // in the rows or in the dofs of their trees, whichever is smaller. A
+  // normal force below 0 is put at 0, a friction force beyond its cap at
   // the cap, and the others are solved again (once).
   std::vector<char>& solved = solved_;
   solved.assign(rows, 0);
@@ -928,24 +953,18 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     const int m = static_cast<int>(solve.size());
     std::fill(solved.begin(), solved.end(), 0);
     for (const int r : solve) solved[r] = 1;
-    system_.assign(static_cast<size_t>(m) * m, 0.0);
-    std::vector<double>& rhs = rhs_;
     std::vector<double>& f = solution_;
-    rhs.assign(m, 0.0);
     f.assign(m, 0.0);
-    for (int a = 0; a < m; ++a) {
-      const int r = solve[a];
-      const double* row = a_.data() + static_cast<size_t>(r) * rows;
-      for (int b = 0; b < m; ++b) system_[a * m + b] = row[solve[b]];
-      system_[a * m + a] += 1 / gain[a];
-      rhs[a] = (start_force[r] + g_[r]) / gain[a];
-      for (int b = 0; b < m; ++b) rhs[a] += row[solve[b]] * start_force[solve[b]];
-      for (const int l : held) {
-        if (!solved[l]) rhs[a] -= row[l] * delta_[l];
+    const bool in_dofs = MarkTrees() < m;
+    const bool solved_ok =
+        in_dofs ? SolveInDofs(held, start_force, f.data()) : SolveInRows(held, start_force, f.data());
+    for (const int r : solve) {
+      const PointEvaluation& e = points_[row_point_[r]];
+      for (const int body : model_.pairs()[e.pair].body) {
+        root_marked_[model_.model()->body_rootid[body]] = 0;
       }
     }
-    if (!EnvelopeCholesky(system_.data(), m, &envelope_)) break;
-    EnvelopeSolve(system_.data(), m, envelope_, rhs.data(), f.data());
+    if (!solved_ok) break;
     std::vector<int>& still = still_;
     std::vector<double>& still_gain = still_gain_;
     std::vector<double>& still_cap = still_cap_;
@@ -975,11 +994,16 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     gain.swap(still_gain);
     cap.swap(still_cap);
   }
-  // the change of force over the whole sub-step, on every row
+  // the change of force over the whole sub-step, on every row: A delta =
+  // J M^-1 J_H^T delta_H
+  std::vector<double>& spread = spread_;
+  spread.resize(nv_);
+  std::vector<double>& held_delta = coefficients_;
+  held_delta.assign(rows, 0.0);
+  for (const int l : held) held_delta[l] = delta_[l];
+  Spread(held_delta.data(), spread.data());
   for (int r = 0; r < rows; ++r) {
-    const double* row = a_.data() + static_cast<size_t>(r) * rows;
-    double pushed = 0;
-    for (const int l : held) pushed += row[l] * delta_[l];
+    const double pushed = RowDot(j_.data(), j_span_, r, nv_, spread.data());
     (*rate)[r] -= w * step * pushed;
     (*x)[r] -= w2 * step * step * pushed;
   }
@@ -987,6 +1011,112 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     impulse_sum_[l] += w2 * step * step * delta_[l];
     impulse_[l] += w * step * delta_[l];
   }
+}
+
+int ContactStepper::MarkTrees() {
+  const mjModel* m = model_.model();
+  root_marked_.resize(m->nbody, 0);
+  int dofs = 0;
+  for (const int r : solve_) {
+    const PointEvaluation& e = points_[row_point_[r]];
+    for (const int body : model_.pairs()[e.pair].body) {
+      const int root = m->body_rootid[body];
+      if (!root_marked_[root]) dofs += root_dofs_[root];
+      root_marked_[root] = 1;
+    }
+  }
+  return dofs;
+}
+
+bool ContactStepper::SolveInRows(const std::vector<int>& held,
+                                 const std::vector<double>& start_force, double* f) {
+  const std::vector<int>& solve = solve_;
+  const int m = static_cast<int>(solve.size());
+  // the right-hand side's A_SS f0_S - A_SL delta_L = J_S M^-1 (J_S^T f0_S
+  // - J_L^T delta_L)
+  std::vector<double>& coefficients = coefficients_;
+  coefficients.assign(rows_, 0.0);
+  for (const int l : held) coefficients[l] = solved_[l] ? start_force[l] : -delta_[l];
+  std::vector<double>& spread = spread_;
+  spread.resize(nv_);
+  Spread(coefficients.data(), spread.data());
+  std::vector<double>& rhs = rhs_;
+  rhs.resize(m);
+  system_.assign(static_cast<size_t>(m) * m, 0.0);
+  for (int a = 0; a < m; ++a) {
+    const int r = solve[a];
+    for (int b = 0; b <= a; ++b) system_[a * m + b] = Coupling(r, solve[b]);
+    system_[a * m + a] += 1 / gain_[a];
+    rhs[a] = (start_force[r] + g_[r]) / gain_[a] + RowDot(j_.data(), j_span_, r, nv_, spread.data());
+  }
+  if (!EnvelopeCholesky(system_.data(), m, &envelope_)) return false;
+  EnvelopeSolve(system_.data(), m, envelope_, rhs.data(), f);
+  return true;
+}
+
+bool ContactStepper::SolveInDofs(const std::vector<int>& held,
+                                 const std::vector<double>& start_force, double* f) {
+  const mjModel* model = model_.model();
+  const int nv = nv_;
+  // the dofs of the marked trees, in order (a dof's ancestors come before it)
+  local_.resize(nv);
+  dofs_.clear();
+  for (int k = 0; k < nv; ++k) {
+    const bool in = root_marked_[model->body_rootid[model->dof_bodyid[k]]];
+    local_[k] = in ? static_cast<int>(dofs_.size()) : -1;
+    if (in) dofs_.push_back(k);
+  }
+  const int size = static_cast<int>(dofs_.size());
+  // the lower triangle of M + J_S^T K J_S (M: each dof's row from its
+  // diagonal along its ancestors, as MuJoCo's qM keeps it)
+  system_.assign(static_cast<size_t>(size) * size, 0.0);
+  for (int a = 0; a < size; ++a) {
+    int k = dofs_[a];
+    int address = model->dof_Madr[k];
+    double* row = system_.data() + static_cast<size_t>(a) * size;
+    row[a] = mass_matrix_[address];
+    for (int parent = model->dof_parentid[k]; parent >= 0; parent = model->dof_parentid[parent]) {
+      row[local_[parent]] = mass_matrix_[++address];
+    }
+  }
+  std::vector<double>& rhs = rhs_;
+  rhs.assign(size, 0.0);
+  const std::vector<int>& solve = solve_;
+  for (size_t a = 0; a < solve.size(); ++a) {
+    const int r = solve[a];
+    const double* jr = j_.data() + static_cast<size_t>(r) * nv;
+    for (int k = j_span_[2 * r]; k < j_span_[2 * r + 1]; ++k) {
+      if (jr[k] == 0) continue;
+      double* row = system_.data() + static_cast<size_t>(local_[k]) * size;
+      const double scaled = gain_[a] * jr[k];
+      for (int l = j_span_[2 * r]; l <= k; ++l) {
+        if (jr[l] != 0) row[local_[l]] += scaled * jr[l];
+      }
+      rhs[local_[k]] += g_[r] * jr[k];
+    }
+  }
+  for (const int l : held) {
+    if (solved_[l]) continue;
+    const double* jl = j_.data() + static_cast<size_t>(l) * nv;
+    for (int k = j_span_[2 * l]; k < j_span_[2 * l + 1]; ++k) {
+      if (jl[k] != 0 && local_[k] >= 0) rhs[local_[k]] += delta_[l] * jl[k];
+    }
+  }
+  if (!EnvelopeCholesky(system_.data(), size, &envelope_)) return false;
+  std::vector<double>& z = spread_;
+  z.resize(size);
+  EnvelopeSolve(system_.data(), size, envelope_, rhs.data(), z.data());
+  // f_S = g_S - K J_S z
+  for (size_t a = 0; a < solve.size(); ++a) {
+    const int r = solve[a];
+    const double* jr = j_.data() + static_cast<size_t>(r) * nv;
+    double velocity = 0;
+    for (int k = j_span_[2 * r]; k < j_span_[2 * r + 1]; ++k) {
+      if (jr[k] != 0) velocity += jr[k] * z[local_[k]];
+    }
+    f[a] = start_force[r] + g_[r] - gain_[a] * velocity;
+  }
+  return true;
 }
 
 void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double>& start_force,

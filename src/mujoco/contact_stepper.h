@@ -140,8 +140,27 @@ class ContactStepper {
   void ImplicitRows(double step, const std::vector<char>& acting,
                     const std::vector<double>& start_force, const std::vector<double>& v0,
                     std::vector<double>* x, std::vector<double>* rate);
-  // J rows, M^-1 J^T, A, b at d's state.
+  // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
+  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L in the rows
+  // (SolveInRows), or, with z = M^-1 J_H^T delta_H the held rows' velocity
+  // change per second, (M + J_S^T K J_S) z = J_S^T (g_S - f0_S) + J_L^T
+  // delta_L in the dofs of the rows' trees and f_S = g_S - K J_S z
+  // (SolveInDofs; M is block diagonal over the trees, so M restricted to
+  // them is exact); f gets f_S. False when the system is not positive
+  // definite.
+  bool SolveInRows(const std::vector<int>& held, const std::vector<double>& start_force,
+                   double* f);
+  bool SolveInDofs(const std::vector<int>& held, const std::vector<double>& start_force,
+                   double* f);
+  // The dofs of the trees of the rows of solve_ (marked in root_marked_),
+  // their count.
+  int MarkTrees();
+  // J rows, M^-1 J^T, A's diagonal, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
+  // A_ij = J_i M^-1 J_j^T, over where the spans of J_i and M^-1 J_j^T meet.
+  double Coupling(int i, int j) const;
+  // out = M^-1 J^T c (nv) for the rows' coefficients c (zeros skipped).
+  void Spread(const double* c, double* out) const;
   // J' of every row (AddPointJacobianRate; two spheres' turning normal), J'
   // v0 added to b, b1. Over the step J moves to J + J' t (a spinning body's
   // contact points, two spheres sliding past each other): x' = J(t) v(t),
@@ -155,13 +174,16 @@ class ContactStepper {
   // force alone, without its terms here, made the bodies' kinetic energy
   // and the law's work part by P^2 (A(t_c) - A) / 2 (a spinning die at 2
   // ms gained 2.5e-4 J in a step).
-  void BuildJacobianRates(const mjModel* m, const mjData* d);
+  void BuildJacobianRates(const mjModel* m, mjData* d);
   // The rate (rad/s) at which point e's rows turn at d's state: its bodies'
   // largest spin; two spheres' |v_t| / s.
   double RowTurn(const mjModel* m, const mjData* d, const PointEvaluation& e) const;
   // acc = b + t b1 - (A + t C) f - D P (BuildJacobianRates; without J',
-  // b - A f) for the rows' forces f and impulse P at t s into the step.
-  void Acceleration(double t, const double* f, const double* impulse, double* acc) const;
+  // b - A f) for the rows' forces f and impulse P at t s into the step,
+  // through the dofs: A f = J u, t C f = t (J' u + J w), D P = J' p with
+  // u = M^-1 J^T f, w = M^-1 J'^T f, p = M^-1 J^T P (rows x the dofs of a
+  // row's trees, where A, C and D are rows x rows).
+  void Acceleration(double t, const double* f, const double* impulse, double* acc);
 
   const ContactModel& model_;
   ContactStepsOptions options_;
@@ -177,18 +199,28 @@ class ContactStepper {
   std::vector<double> anchor_turn_;  // per point: body[0]'s xmat at the start (9)
   std::vector<FrictionMemory> memory_;  // per point
   std::vector<double> mass_;       // per point: 1 / A_ii of its normal row, kg
+  int nv_ = 0;                     // the model's dofs
   std::vector<double> j_;          // rows x nv: x' = J_r qvel (+ drives)
   std::vector<double> minv_jt_;    // rows x nv: M^-1 J_r^T
-  std::vector<int> span_;          // per row: [lo, hi) of its J row, then of M^-1 J^T's
-  std::vector<double> a_;          // rows x rows
+  // per row: [lo, hi) of its nonzero entries in J, in M^-1 J^T, in J' and
+  // in M^-1 J'^T: a row moves the dofs of its two bodies' trees only
+  std::vector<int> j_span_, minv_jt_span_, jdot_span_, minv_jdt_span_;
+  std::vector<double> a_diag_;     // per row: A_rr
   std::vector<double> b_;          // per row, m/s^2
   std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
   std::vector<double> jdot_;       // rows x nv: J' of each row
-  std::vector<int> jdot_span_;     // per row: [lo, hi) of its J' row
+  std::vector<double> minv_jdt_;   // rows x nv: M^-1 J'^T
   std::vector<double> b1_;         // per row: 2 J' a_free, m/s^3
   bool moving_ = false;            // some J' is not zero
-  std::vector<double> d_transposed_;  // rows x rows: D^T, D = J' M^-1 J^T
-  std::vector<double> c_;          // rows x rows: C = D + D^T
+  std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
+  std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
+  std::vector<int> row_point_;     // per row: its point
+  // nv: Acceleration's M^-1 J^T f, M^-1 J'^T f and M^-1 J^T P
+  std::vector<double> spread_, spread_rate_, spread_impulse_;
+  std::vector<char> root_marked_;  // per body: a tree of SolveInDofs' system
+  std::vector<int> local_;         // per dof: its index in SolveInDofs' system, or -1
+  std::vector<int> dofs_;          // SolveInDofs' dofs
+  std::vector<double> coefficients_;  // per row: Spread's coefficients
   std::vector<double> stage_impulse_;  // Rk4SubStep's P at a stage
   std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
   std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
