@@ -157,7 +157,7 @@ class ContactStepper {
   int MarkTrees();
   // J rows, M^-1 J^T, A's diagonal, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
-  // A_ij = J_i M^-1 J_j^T, over where the spans of J_i and M^-1 J_j^T meet.
+  // A_ij = J_i M^-1 J_j^T, over J_i's nonzero entries.
   double Coupling(int i, int j) const;
   // out = M^-1 J^T c (nv) for the rows' coefficients c (zeros skipped).
   void Spread(const double* c, double* out) const;
@@ -178,12 +178,37 @@ class ContactStepper {
   // The rate (rad/s) at which point e's rows turn at d's state: its bodies'
   // largest spin; two spheres' |v_t| / s.
   double RowTurn(const mjModel* m, const mjData* d, const PointEvaluation& e) const;
+  // The rows' forces f in the dofs: u = M^-1 J^T f and, with J', w =
+  // M^-1 J'^T f (nv each); with base (forces whose u and w are base_u and
+  // base_w), through f - base: only the rows whose force differs.
+  void SpreadForces(const double* f, const double* base, const double* base_u,
+                    const double* base_w, double* u, double* w);
   // acc = b + t b1 - (A + t C) f - D P (BuildJacobianRates; without J',
   // b - A f) for the rows' forces f and impulse P at t s into the step,
-  // through the dofs: A f = J u, t C f = t (J' u + J w), D P = J' p with
-  // u = M^-1 J^T f, w = M^-1 J'^T f, p = M^-1 J^T P (rows x the dofs of a
-  // row's trees, where A, C and D are rows x rows).
-  void Acceleration(double t, const double* f, const double* impulse, double* acc);
+  // through the dofs: A f = J u, t C f = t (J' u + J w), D P = J' p with u
+  // and w f's (SpreadForces) and p = M^-1 J^T P (u, w, p: nv; w and p read
+  // with J' only): a row's nonzero entries, where A, C and D are rows x
+  // rows.
+  void Acceleration(double t, const double* u, const double* w, const double* p, double* acc);
+
+  // The nonzero entries of a rows x nv matrix, row by row.
+  struct SparseRows {
+    std::vector<int> start;  // per row, and its end: its first entry
+    std::vector<int> column;
+    std::vector<double> value;
+    void Assign(const double* dense, int rows, int nv);
+    bool empty(int row) const { return start[row] == start[row + 1]; }
+    // row . v
+    double Dot(int row, const double* v) const {
+      double dot = 0;
+      for (int e = start[row]; e < start[row + 1]; ++e) dot += value[e] * v[column[e]];
+      return dot;
+    }
+    // out += scale row
+    void AddTo(int row, double scale, double* out) const {
+      for (int e = start[row]; e < start[row + 1]; ++e) out[column[e]] += scale * value[e];
+    }
+  };
 
   const ContactModel& model_;
   ContactStepsOptions options_;
@@ -202,9 +227,10 @@ class ContactStepper {
   int nv_ = 0;                     // the model's dofs
   std::vector<double> j_;          // rows x nv: x' = J_r qvel (+ drives)
   std::vector<double> minv_jt_;    // rows x nv: M^-1 J_r^T
-  // per row: [lo, hi) of its nonzero entries in J, in M^-1 J^T, in J' and
-  // in M^-1 J'^T: a row moves the dofs of its two bodies' trees only
-  std::vector<int> j_span_, minv_jt_span_, jdot_span_, minv_jdt_span_;
+  // the nonzero entries of J, M^-1 J^T, J' and M^-1 J'^T: a row moves the
+  // dofs of its two bodies' trees only, and few of those (a free body's
+  // translations across a normal: none)
+  SparseRows j_rows_, minv_jt_rows_, jdot_rows_, minv_jdt_rows_;
   std::vector<double> a_diag_;     // per row: A_rr
   std::vector<double> b_;          // per row, m/s^2
   std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
@@ -215,13 +241,18 @@ class ContactStepper {
   std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
   std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
   std::vector<int> row_point_;     // per row: its point
-  // nv: Acceleration's M^-1 J^T f, M^-1 J'^T f and M^-1 J^T P
+  // nv: Spread's out (ImplicitRows, the resting points), Acceleration's
+  // u + t w and p + t u
   std::vector<double> spread_, spread_rate_, spread_impulse_;
   std::vector<char> root_marked_;  // per body: a tree of SolveInDofs' system
   std::vector<int> local_;         // per dof: its index in SolveInDofs' system, or -1
   std::vector<int> dofs_;          // SolveInDofs' dofs
+  std::vector<int> columns_;       // SolveInDofs' local dofs of a row's entries
   std::vector<double> coefficients_;  // per row: Spread's coefficients
-  std::vector<double> stage_impulse_;  // Rk4SubStep's P at a stage
+  std::vector<double> difference_;    // per row: SpreadForces' f - base
+  // nv each: Rk4SubStep's M^-1 J^T f at its four stages, M^-1 J^T P at its
+  // start and at a stage
+  std::vector<double> stage_spread_;
   std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
   std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
