@@ -33,17 +33,21 @@ bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
 
 // A point in contact at the step's start rests when the amplitude of its
 // vibration about its equilibrium, sqrt((d' / w)^2 + (d'' / w^2)^2) at its
-// own rate w = sqrt(dF/dd A_ii), is below this fraction of its depth: its
-// normal force is then taken by backward Euler with the stick springs
-// (ImplicitRows), and sets no sub-step. For F = K d^n that vibration holds
-// at most n (n + 1) / 2 fraction^2 of the contact's elastic energy at rest
-// (1.9% at n = 1.5), which backward Euler damps (unbooked), and the force
-// linearized about the sub-step's start is off by n (n - 1) / 2 fraction^2
-// of itself at the vibration's extremes (0.4%). At an impact's peak (d' = 0
-// too) the amplitude is the depth. At 1e-2 box_stack.xml's stack, rocking at
-// 1-10% of its depths from 0.3 s to 0.56 s, took 50 sub-steps a step there
-// (13,500 in 5 s against 8,100), for no gain in its rest positions
-// (docs/timestep.md, "Contacts at rest").
+// own rate w = sqrt(dF/dd A_ii), times w h where the step h is longer than
+// 1 / w (how far that vibration carries the point within the step), is
+// below this fraction of its depth: its normal force is then taken by
+// backward Euler with the stick springs (ImplicitRows), linearized about
+// the sub-step's start, and sets no sub-step. For F = K d^n that vibration
+// holds at most n (n + 1) / 2 fraction^2 of the contact's elastic energy at
+// rest (1.9% at n = 1.5), which backward Euler damps (unbooked), and the
+// linearized force is off by n (n - 1) / 2 fraction^2 of itself at the
+// vibration's extremes (0.4%). At an impact's peak (d' = 0 too) the
+// amplitude is the depth. At 1e-2 and without the w h factor,
+// box_stack.xml's stack (w h = 1.6), rocking at 1-10% of its depths from
+// 0.3 s to 0.56 s, took 50 sub-steps a step there (13,500 in 5 s against
+// 8,500); at 1e-1 without it, die_throw.xml's die (w h = 17) rocked on its
+// four corners with friction, growing between one-sub-step steps from 2%
+// to 50% of its depth (17,400 sub-steps against 8,400).
 constexpr double kRestingFraction = 1e-1;
 
 // The held rows of a sub-step (ImplicitRows) are taken by the trapezoid rule
@@ -613,7 +617,10 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     const LawParams& law = model_.pairs()[e.pair].params;
     const double w2 = NormalStiffness(law, e.depth) * a_diag_[i];
     if (!(w2 > 0)) continue;
-    const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
+    // the vibration's amplitude, and, where the step is longer than 1 / w,
+    // how far its rate carries the point within the step (h d', h d'' / w)
+    const double w = std::sqrt(w2);
+    const double amplitude = std::hypot(e.depth_rate / w, acc / w2) * std::max(1.0, w * h_);
     resting_[i] = amplitude < kRestingFraction * e.depth;
   }
   BuildJacobianRates(m, d);
