@@ -197,10 +197,12 @@ void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const 
 
 }  // namespace
 
-void ContactStepper::SparseRows::Assign(const double* dense, int rows, int nv) {
+void ContactStepper::SparseRows::Assign(const double* dense, int rows, int nv, size_t bound) {
   start.resize(rows + 1);
-  column.resize(static_cast<size_t>(rows) * nv);
-  value.resize(column.size());
+  if (column.size() < bound) {
+    column.resize(bound);
+    value.resize(bound);
+  }
   int count = 0;
   for (int i = 0; i < rows; ++i) {
     start[i] = count;
@@ -298,9 +300,19 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   a_free_.resize(nv);
   mj_solveM(m, d, a_free_.data(), force.data(), 1);
 
+  // each tree's dofs, and the most entries a row of J, M^-1 J^T, J' or
+  // M^-1 J'^T can have: its two bodies' trees' dofs
+  root_dofs_.assign(m->nbody, 0);
+  for (int k = 0; k < nv; ++k) ++root_dofs_[m->body_rootid[m->dof_bodyid[k]]];
+  entries_bound_ = 0;
+  for (int i = 0; i < rows; ++i) {
+    for (const int body : model_.pairs()[points_[row_point_[i]].pair].body) {
+      entries_bound_ += root_dofs_[m->body_rootid[body]];
+    }
+  }
   // each row's nonzero entries in J and in M^-1 J^T
-  j_rows_.Assign(j_.data(), rows, nv);
-  minv_jt_rows_.Assign(minv_jt_.data(), rows, nv);
+  j_rows_.Assign(j_.data(), rows, nv, entries_bound_);
+  minv_jt_rows_.Assign(minv_jt_.data(), rows, nv, entries_bound_);
   a_diag_.resize(rows);
   b_.assign(rows, 0.0);
   mass_.assign(n, std::numeric_limits<double>::infinity());
@@ -309,10 +321,8 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
     b_[i] = mju_dot(j_.data() + static_cast<size_t>(i) * nv, a_free_.data(), nv);
     if (i < n && a_diag_[i] > 0) mass_[i] = 1.0 / a_diag_[i];
   }
-  // M (ImplicitRows' solve in the dofs), and each tree's dofs
+  // M (ImplicitRows' solve in the dofs)
   mass_matrix_.assign(d->qM, d->qM + m->nM);
-  root_dofs_.assign(m->nbody, 0);
-  for (int k = 0; k < nv; ++k) ++root_dofs_[m->body_rootid[m->dof_bodyid[k]]];
 }
 
 double ContactStepper::Coupling(int i, int j) const {
@@ -391,7 +401,7 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   // b gains J' v0, and b1 = 2 J' a_free per second
   moving_ = false;
   b1_.assign(rows, 0.0);
-  jdot_rows_.Assign(jdot_.data(), rows, nv);
+  jdot_rows_.Assign(jdot_.data(), rows, nv, entries_bound_);
   for (int r = 0; r < rows; ++r) {
     if (jdot_rows_.empty(r)) continue;
     moving_ = true;
@@ -402,7 +412,7 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   // M^-1 J'^T, once a step, for D^T f = M^-1 J'^T f (Acceleration)
   minv_jdt_.resize(jdot_.size());
   mj_solveM(m, d, minv_jdt_.data(), jdot_.data(), rows);
-  minv_jdt_rows_.Assign(minv_jdt_.data(), rows, nv);
+  minv_jdt_rows_.Assign(minv_jdt_.data(), rows, nv, entries_bound_);
 }
 
 double ContactStepper::RowTurn(const mjModel* m, const mjData* d,

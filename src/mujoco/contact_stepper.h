@@ -196,7 +196,9 @@ class ContactStepper {
     std::vector<int> start;  // per row, and its end: its first entry
     std::vector<int> column;
     std::vector<double> value;
-    void Assign(const double* dense, int rows, int nv);
+    // from the rows x nv matrix dense, whose rows have bound nonzero
+    // entries at most in all
+    void Assign(const double* dense, int rows, int nv, size_t bound);
     bool empty(int row) const { return start[row] == start[row + 1]; }
     // row . v
     double Dot(int row, const double* v) const {
@@ -240,6 +242,7 @@ class ContactStepper {
   bool moving_ = false;            // some J' is not zero
   std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
   std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
+  size_t entries_bound_ = 0;       // the most nonzero entries of J (and alike)
   std::vector<int> row_point_;     // per row: its point
   // nv: Spread's out (ImplicitRows, the resting points), Acceleration's
   // u + t w and p + t u
