@@ -33,12 +33,22 @@ bool Implicit(FrictionKind kind) { return ReadsTangentialSpring(kind); }
 
 // A point in contact at the step's start rests when the amplitude of its
 // vibration about its equilibrium, sqrt((d' / w)^2 + (d'' / w^2)^2) at its
-// own rate w = sqrt(dF/dd A_ii), is below this fraction of its depth: its
-// normal force is then taken by backward Euler with the stick springs
-// (ImplicitRows), and sets no sub-step. That vibration holds less than 1e-4
-// of the contact's elastic energy at rest; backward Euler damps it
-// (unbooked). At an impact's peak (d' = 0 too) the amplitude is the depth.
-constexpr double kRestingFraction = 1e-2;
+// own rate w = sqrt(dF/dd A_ii), times w h where the step h is longer than
+// 1 / w (how far that vibration carries the point within the step), is
+// below this fraction of its depth: its normal force is then taken by
+// backward Euler with the stick springs (ImplicitRows), linearized about
+// the sub-step's start, and sets no sub-step. For F = K d^n that vibration
+// holds at most n (n + 1) / 2 fraction^2 of the contact's elastic energy at
+// rest (1.9% at n = 1.5), which backward Euler damps (unbooked), and the
+// linearized force is off by n (n - 1) / 2 fraction^2 of itself at the
+// vibration's extremes (0.4%). At an impact's peak (d' = 0 too) the
+// amplitude is the depth. At 1e-2 and without the w h factor,
+// box_stack.xml's stack (w h = 1.6), rocking at 1-10% of its depths from
+// 0.3 s to 0.56 s, took 50 sub-steps a step there (13,500 in 5 s against
+// 8,500); at 1e-1 without it, die_throw.xml's die (w h = 17) rocked on its
+// four corners with friction, growing between one-sub-step steps from 2%
+// to 50% of its depth (17,400 sub-steps against 8,400).
+constexpr double kRestingFraction = 1e-1;
 
 // The held rows of a sub-step (ImplicitRows) are taken by the trapezoid rule
 // when they are all stick springs it resolves: each row's rate
@@ -187,6 +197,25 @@ void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const 
 
 }  // namespace
 
+void ContactStepper::SparseRows::Assign(const double* dense, int rows, int nv, size_t bound) {
+  start.resize(rows + 1);
+  if (column.size() < bound) {
+    column.resize(bound);
+    value.resize(bound);
+  }
+  int count = 0;
+  for (int i = 0; i < rows; ++i) {
+    start[i] = count;
+    const double* row = dense + static_cast<size_t>(i) * nv;
+    for (int k = 0; k < nv; ++k) {
+      if (row[k] == 0) continue;
+      column[count] = k;
+      value[count++] = row[k];
+    }
+  }
+  start[rows] = count;
+}
+
 ContactStepper::ContactStepper(const ContactModel& model) : model_(model), step_pairs_(model) {}
 
 double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) const {
@@ -230,6 +259,7 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
+  nv_ = nv;
   j_.assign(static_cast<size_t>(rows) * nv, 0.0);
   minv_jt_.resize(j_.size());
   for (int i = 0; i < n; ++i) {
@@ -271,42 +301,43 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   a_free_.resize(nv);
   mj_solveM(m, d, a_free_.data(), force.data(), 1);
 
-  // each row's span of nonzero entries in J and in M^-1 J^T: a row moves the
-  // degrees of freedom of its two bodies' chains only, and A_ij is the dot
-  // over where the spans of J_i and M^-1 J_j^T overlap (zero where they do
-  // not: points of bodies that share no chain); A symmetric, its upper half
-  // taken and mirrored
-  span_.resize(static_cast<size_t>(4) * rows);
+  // each tree's dofs, and the most entries a row of J, M^-1 J^T, J' or
+  // M^-1 J'^T can have: its two bodies' trees' dofs
+  root_dofs_.assign(m->nbody, 0);
+  for (int k = 0; k < nv; ++k) ++root_dofs_[m->body_rootid[m->dof_bodyid[k]]];
+  entries_bound_ = 0;
   for (int i = 0; i < rows; ++i) {
-    for (int which = 0; which < 2; ++which) {
-      const double* row = (which ? minv_jt_ : j_).data() + static_cast<size_t>(i) * nv;
-      int lo = 0, hi = nv;
-      while (lo < hi && row[lo] == 0) ++lo;
-      while (hi > lo && row[hi - 1] == 0) --hi;
-      span_[4 * i + 2 * which] = lo;
-      span_[4 * i + 2 * which + 1] = hi;
+    for (const int body : model_.pairs()[points_[row_point_[i]].pair].body) {
+      entries_bound_ += root_dofs_[m->body_rootid[body]];
     }
   }
-  a_.assign(static_cast<size_t>(rows) * rows, 0.0);
+  // each row's nonzero entries in J and in M^-1 J^T
+  j_rows_.Assign(j_.data(), rows, nv, entries_bound_);
+  minv_jt_rows_.Assign(minv_jt_.data(), rows, nv, entries_bound_);
+  a_diag_.resize(rows);
   b_.assign(rows, 0.0);
   mass_.assign(n, std::numeric_limits<double>::infinity());
   for (int i = 0; i < rows; ++i) {
-    const double* ji = j_.data() + static_cast<size_t>(i) * nv;
-    for (int j = i; j < rows; ++j) {
-      const int lo = std::max(span_[4 * i], span_[4 * j + 2]);
-      const int hi = std::min(span_[4 * i + 1], span_[4 * j + 3]);
-      if (hi <= lo) continue;
-      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-      double dot = 0;
-      for (int k = lo; k < hi; ++k) dot += ji[k] * mj[k];
-      a_[i * rows + j] = a_[j * rows + i] = dot;
-    }
-    b_[i] = mju_dot(ji, a_free_.data(), nv);
-    if (i < n && a_[i * rows + i] > 0) mass_[i] = 1.0 / a_[i * rows + i];
+    a_diag_[i] = Coupling(i, i);
+    b_[i] = mju_dot(j_.data() + static_cast<size_t>(i) * nv, a_free_.data(), nv);
+    if (i < n && a_diag_[i] > 0) mass_[i] = 1.0 / a_diag_[i];
+  }
+  // M (ImplicitRows' solve in the dofs)
+  mass_matrix_.assign(d->qM, d->qM + m->nM);
+}
+
+double ContactStepper::Coupling(int i, int j) const {
+  return j_rows_.Dot(i, minv_jt_.data() + static_cast<size_t>(j) * nv_);
+}
+
+void ContactStepper::Spread(const double* c, double* out) const {
+  std::fill(out, out + nv_, 0.0);
+  for (int j = 0; j < rows_; ++j) {
+    if (c[j] != 0) minv_jt_rows_.AddTo(j, c[j], out);
   }
 }
 
-void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
+void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
@@ -371,43 +402,18 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, const mjData* d) {
   // b gains J' v0, and b1 = 2 J' a_free per second
   moving_ = false;
   b1_.assign(rows, 0.0);
-  jdot_span_.resize(static_cast<size_t>(2) * rows);
+  jdot_rows_.Assign(jdot_.data(), rows, nv, entries_bound_);
   for (int r = 0; r < rows; ++r) {
-    const double* row = jdot_.data() + static_cast<size_t>(r) * nv;
-    int lo = 0, hi = nv;
-    while (lo < hi && row[lo] == 0) ++lo;
-    while (hi > lo && row[hi - 1] == 0) --hi;
-    jdot_span_[2 * r] = lo;
-    jdot_span_[2 * r + 1] = hi;
-    moving_ = moving_ || hi > lo;
-    double velocity = 0, free = 0;
-    for (int k = lo; k < hi; ++k) {
-      velocity += row[k] * d->qvel[k];
-      free += row[k] * a_free_[k];
-    }
-    b_[r] += velocity;
-    b1_[r] = 2 * free;
+    if (jdot_rows_.empty(r)) continue;
+    moving_ = true;
+    b_[r] += jdot_rows_.Dot(r, d->qvel);
+    b1_[r] = 2 * jdot_rows_.Dot(r, a_free_.data());
   }
   if (!moving_) return;
-  // D = J' M^-1 J^T and C = D + D^T, once a step, over where the spans of
-  // J'_i and M^-1 J_j^T overlap; D kept transposed, so that Acceleration
-  // reads D's column j contiguously
-  d_transposed_.assign(static_cast<size_t>(rows) * rows, 0.0);
-  c_.assign(d_transposed_.size(), 0.0);
-  for (int i = 0; i < rows; ++i) {
-    if (jdot_span_[2 * i + 1] <= jdot_span_[2 * i]) continue;
-    const double* di = jdot_.data() + static_cast<size_t>(i) * nv;
-    for (int j = 0; j < rows; ++j) {
-      const int lo = std::max(jdot_span_[2 * i], span_[4 * j + 2]);
-      const int hi = std::min(jdot_span_[2 * i + 1], span_[4 * j + 3]);
-      double dot = 0;
-      const double* mj = minv_jt_.data() + static_cast<size_t>(j) * nv;
-      for (int k = lo; k < hi; ++k) dot += di[k] * mj[k];
-      d_transposed_[static_cast<size_t>(j) * rows + i] = dot;
-      c_[static_cast<size_t>(j) * rows + i] += dot;
-      c_[static_cast<size_t>(i) * rows + j] += dot;
-    }
-  }
+  // M^-1 J'^T, once a step, for D^T f = M^-1 J'^T f (Acceleration)
+  minv_jdt_.resize(jdot_.size());
+  mj_solveM(m, d, minv_jdt_.data(), jdot_.data(), rows);
+  minv_jdt_rows_.Assign(minv_jdt_.data(), rows, nv, entries_bound_);
 }
 
 double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
@@ -431,32 +437,57 @@ double ContactStepper::RowTurn(const mjModel* m, const mjData* d,
   return rate;
 }
 
-void ContactStepper::Acceleration(double t, const double* f, const double* impulse,
-                                  double* acc) const {
-  // acc = b + t b1 - (A + t C) f - D P, over the rows with a force or an
-  // impulse (columns of the symmetric A and C, and of D^T)
+void ContactStepper::SpreadForces(const double* f, const double* base, const double* base_u,
+                                  const double* base_w, double* u, double* w) {
   const int rows = rows_;
-  for (int i = 0; i < rows; ++i) acc[i] = moving_ ? b_[i] + t * b1_[i] : b_[i];
+  const int nv = nv_;
+  const double* c = f;
+  if (base) {
+    // the rows whose force changed (the held ones' did not)
+    difference_.resize(rows);
+    for (int j = 0; j < rows; ++j) difference_[j] = f[j] - base[j];
+    c = difference_.data();
+  }
+  Spread(c, u);
+  if (base) {
+    for (int k = 0; k < nv; ++k) u[k] += base_u[k];
+  }
+  if (!moving_) return;
+  if (base) {
+    std::copy(base_w, base_w + nv, w);
+  } else {
+    std::fill(w, w + nv, 0.0);
+  }
   for (int j = 0; j < rows; ++j) {
-    const double fj = f[j];
-    const double pj = moving_ ? impulse[j] : 0.0;
-    if (fj == 0 && pj == 0) continue;
-    const double* a = a_.data() + static_cast<size_t>(j) * rows;
-    if (!moving_) {
-      for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj;
-      continue;
-    }
-    const double* c = c_.data() + static_cast<size_t>(j) * rows;
-    const double* dt = d_transposed_.data() + static_cast<size_t>(j) * rows;
-    const double tf = t * fj;
-    for (int i = 0; i < rows; ++i) acc[i] -= a[i] * fj + c[i] * tf + dt[i] * pj;
+    if (c[j] != 0) minv_jdt_rows_.AddTo(j, c[j], w);
+  }
+}
+
+void ContactStepper::Acceleration(double t, const double* u, const double* w, const double* p,
+                                  double* acc) {
+  // acc = b + t b1 - J (u + t w) - J' (t u + p): each row's part over its
+  // nonzero entries
+  const int rows = rows_;
+  const int nv = nv_;
+  if (!moving_) {
+    for (int i = 0; i < rows; ++i) acc[i] = b_[i] - j_rows_.Dot(i, u);
+    return;
+  }
+  spread_rate_.resize(nv);
+  spread_impulse_.resize(nv);
+  for (int k = 0; k < nv; ++k) {
+    spread_rate_[k] = u[k] + t * w[k];
+    spread_impulse_[k] = p[k] + t * u[k];
+  }
+  for (int i = 0; i < rows; ++i) {
+    acc[i] = b_[i] + t * b1_[i] - j_rows_.Dot(i, spread_rate_.data()) -
+             jdot_rows_.Dot(i, spread_impulse_.data());
   }
 }
 
 int ContactStepper::SubSteps(double h) const {
   if (options_.substeps > 0) return options_.substeps;
   const int n = static_cast<int>(points_.size());
-  const int rows = rows_;
   double step = h;
   // each friction point's tangential spring and damper (TangentialDynamics)
   // in contact at the step's start
@@ -485,8 +516,9 @@ int ContactStepper::SubSteps(double h) const {
       double row = 0, damped = 0;
       for (int j = 0; j < n; ++j) {
         for (int c = tangent_row_[j]; c >= 0 && c < tangent_row_[j] + 2; ++c) {
-          row += std::abs(a_[r * rows + c]);
-          damped += std::abs(a_[r * rows + c]) * tangential[j].damping;
+          const double coupling = std::abs(Coupling(r, c));
+          row += coupling;
+          damped += coupling * tangential[j].damping;
         }
       }
       if (!(row > 0)) continue;
@@ -505,12 +537,13 @@ int ContactStepper::SubSteps(double h) const {
     if (resting_[i]) continue;
     double row = 0, damped = 0;
     for (int j = 0; j < n; ++j) {
-      row += std::abs(a_[i * rows + j]);
+      const double coupling = std::abs(Coupling(i, j));
+      row += coupling;
       const PointEvaluation& f = points_[j];
       if (f.depth > 0 && !resting_[j]) {
         const ContactState state{f.depth, f.depth_rate, f.impact_velocity, mass_[j]};
         damped +=
-            std::abs(a_[i * rows + j]) * DampingCoefficient(model_.pairs()[f.pair].params, state);
+            coupling * DampingCoefficient(model_.pairs()[f.pair].params, state);
       }
     }
     if (!(row > 0)) continue;
@@ -564,29 +597,41 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       memory.sliding = e.friction_state.sliding;
     }
   }
+  row_point_.resize(rows_);
+  for (int i = 0; i < n; ++i) {
+    row_point_[i] = i;
+    if (tangent_row_[i] >= 0) row_point_[tangent_row_[i]] = row_point_[tangent_row_[i] + 1] = i;
+  }
   BuildContactSpace(m, d);
   // the points at rest: vibrating about their equilibrium by less than
   // kRestingFraction of their depth
   resting_.assign(n, 0);
+  if (options_.substeps <= 0) {
+    // x'' = b - A f at the start's forces (u = M^-1 J^T f)
+    std::vector<double>& start = free_acc_;
+    start.assign(rows_, 0.0);
+    for (int j = 0; j < n; ++j) {
+      if (!(points_[j].depth > 0)) continue;
+      start[j] = points_[j].force;
+      const int r = tangent_row_[j];
+      for (int c = 0; r >= 0 && c < 2; ++c) {
+        start[r + c] = -vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
+      }
+    }
+    spread_.resize(m->nv);
+    Spread(start.data(), spread_.data());
+  }
   for (int i = 0; options_.substeps <= 0 && i < n; ++i) {
     const PointEvaluation& e = points_[i];
     if (!(e.depth > 0) || e.touch || e.friction_state.sliding) continue;
-    double acc = b_[i];
-    for (int j = 0; j < n; ++j) {
-      if (points_[j].depth > 0) acc -= a_[static_cast<size_t>(i) * rows_ + j] * points_[j].force;
-    }
-    for (int j = 0; j < n; ++j) {
-      const int r = tangent_row_[j];
-      for (int c = 0; r >= 0 && points_[j].depth > 0 && c < 2; ++c) {
-        acc += a_[static_cast<size_t>(i) * rows_ + r + c] *
-               vec3::Dot(points_[j].friction, tangents_.data() + 6 * j + 3 * c);
-      }
-    }
+    const double acc = b_[i] - j_rows_.Dot(i, spread_.data());
     const LawParams& law = model_.pairs()[e.pair].params;
-    const double w2 =
-        e.weight * NormalStiffness(law, e.depth) * a_[static_cast<size_t>(i) * rows_ + i];
+    const double w2 = e.weight * NormalStiffness(law, e.depth) * a_diag_[i];
     if (!(w2 > 0)) continue;
-    const double amplitude = std::hypot(e.depth_rate / std::sqrt(w2), acc / w2);
+    // the vibration's amplitude, and, where the step is longer than 1 / w,
+    // how far its rate carries the point within the step (h d', h d'' / w)
+    const double w = std::sqrt(w2);
+    const double amplitude = std::hypot(e.depth_rate / w, acc / w2) * std::max(1.0, w * h_);
     resting_[i] = amplitude < kRestingFraction * e.depth;
   }
   BuildJacobianRates(m, d);
@@ -737,7 +782,11 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     if (free) {
       free_acc_.resize(rows);
       zero_force_.assign(rows, 0.0);
-      Acceleration(t, zero_force_.data(), impulse_.data(), free_acc_.data());
+      // u = w = 0, and p = M^-1 J^T P
+      stage_spread_.assign(static_cast<size_t>(2) * m->nv, 0.0);
+      double* p = stage_spread_.data() + m->nv;
+      if (moving_) Spread(impulse_.data(), p);
+      Acceleration(t, stage_spread_.data(), stage_spread_.data(), p, free_acc_.data());
       double touch = std::numeric_limits<double>::infinity();
       for (int i = 0; i < n; ++i) {
         touch = std::min(touch, FirstCrossing(x[i], rate[i], free_acc_[i],
@@ -771,12 +820,8 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   // J + J' t, -(J^T P + J'^T Q) / h with Q the impulse's first moment,
   // int t f dt = h P - int P dt
   for (int r = 0; r < rows; ++r) {
-    const size_t at = static_cast<size_t>(r) * m->nv;
-    mju_addToScl(force_.data(), j_.data() + at, -impulse_[r] / h_, m->nv);
-    if (moving_) {
-      mju_addToScl(force_.data(), jdot_.data() + at, -(h_ * impulse_[r] - impulse_sum_[r]) / h_,
-                   m->nv);
-    }
+    j_rows_.AddTo(r, -impulse_[r] / h_, force_.data());
+    if (moving_) jdot_rows_.AddTo(r, -(h_ * impulse_[r] - impulse_sum_[r]) / h_, force_.data());
   }
   ApplyForce(m, d);
 }
@@ -854,7 +899,7 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
       stiffness.push_back(k);
       damping.push_back(c);
       cap.push_back(group_cap);
-      const double inverse_mass = a_[static_cast<size_t>(r) * rows + r];
+      const double inverse_mass = a_diag_[r];
       trapezoid = trapezoid && group_cap >= 0 &&
                   k * inverse_mass * step * step <= kTrapezoidRate * kTrapezoidRate &&
                   c * inverse_mass * step <= kTrapezoidRate;
@@ -925,9 +970,9 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     gain.push_back(stiffness[a] * step * step * w2 + damping[a] * step * w);
   }
   // the solved rows: f = g - K A delta (x and x' at the sub-step's end
-  // moved by -w2 step^2 A delta and -w step A delta), solved as
-  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L, an SPD system.
-  // A normal force below 0 is put at 0, a friction force beyond its cap at
+  // moved by -w2 step^2 A delta and -w step A delta), an SPD system, solved
+  // in the rows or in the dofs of their trees, whichever is smaller. A
+  // normal force below 0 is put at 0, a friction force beyond its cap at
   // the cap, and the others are solved again (once).
   std::vector<char>& solved = solved_;
   solved.assign(rows, 0);
@@ -935,24 +980,18 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     const int m = static_cast<int>(solve.size());
     std::fill(solved.begin(), solved.end(), 0);
     for (const int r : solve) solved[r] = 1;
-    system_.assign(static_cast<size_t>(m) * m, 0.0);
-    std::vector<double>& rhs = rhs_;
     std::vector<double>& f = solution_;
-    rhs.assign(m, 0.0);
     f.assign(m, 0.0);
-    for (int a = 0; a < m; ++a) {
-      const int r = solve[a];
-      const double* row = a_.data() + static_cast<size_t>(r) * rows;
-      for (int b = 0; b < m; ++b) system_[a * m + b] = row[solve[b]];
-      system_[a * m + a] += 1 / gain[a];
-      rhs[a] = (start_force[r] + g_[r]) / gain[a];
-      for (int b = 0; b < m; ++b) rhs[a] += row[solve[b]] * start_force[solve[b]];
-      for (const int l : held) {
-        if (!solved[l]) rhs[a] -= row[l] * delta_[l];
+    const bool in_dofs = MarkTrees() < m;
+    const bool solved_ok =
+        in_dofs ? SolveInDofs(held, start_force, f.data()) : SolveInRows(held, start_force, f.data());
+    for (const int r : solve) {
+      const PointEvaluation& e = points_[row_point_[r]];
+      for (const int body : model_.pairs()[e.pair].body) {
+        root_marked_[model_.model()->body_rootid[body]] = 0;
       }
     }
-    if (!EnvelopeCholesky(system_.data(), m, &envelope_)) break;
-    EnvelopeSolve(system_.data(), m, envelope_, rhs.data(), f.data());
+    if (!solved_ok) break;
     std::vector<int>& still = still_;
     std::vector<double>& still_gain = still_gain_;
     std::vector<double>& still_cap = still_cap_;
@@ -982,11 +1021,16 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     gain.swap(still_gain);
     cap.swap(still_cap);
   }
-  // the change of force over the whole sub-step, on every row
+  // the change of force over the whole sub-step, on every row: A delta =
+  // J M^-1 J_H^T delta_H
+  std::vector<double>& spread = spread_;
+  spread.resize(nv_);
+  std::vector<double>& held_delta = coefficients_;
+  held_delta.assign(rows, 0.0);
+  for (const int l : held) held_delta[l] = delta_[l];
+  Spread(held_delta.data(), spread.data());
   for (int r = 0; r < rows; ++r) {
-    const double* row = a_.data() + static_cast<size_t>(r) * rows;
-    double pushed = 0;
-    for (const int l : held) pushed += row[l] * delta_[l];
+    const double pushed = j_rows_.Dot(r, spread.data());
     (*rate)[r] -= w * step * pushed;
     (*x)[r] -= w2 * step * step * pushed;
   }
@@ -994,6 +1038,112 @@ void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
     impulse_sum_[l] += w2 * step * step * delta_[l];
     impulse_[l] += w * step * delta_[l];
   }
+}
+
+int ContactStepper::MarkTrees() {
+  const mjModel* m = model_.model();
+  root_marked_.resize(m->nbody, 0);
+  int dofs = 0;
+  for (const int r : solve_) {
+    const PointEvaluation& e = points_[row_point_[r]];
+    for (const int body : model_.pairs()[e.pair].body) {
+      const int root = m->body_rootid[body];
+      if (!root_marked_[root]) dofs += root_dofs_[root];
+      root_marked_[root] = 1;
+    }
+  }
+  return dofs;
+}
+
+bool ContactStepper::SolveInRows(const std::vector<int>& held,
+                                 const std::vector<double>& start_force, double* f) {
+  const std::vector<int>& solve = solve_;
+  const int m = static_cast<int>(solve.size());
+  // the right-hand side's A_SS f0_S - A_SL delta_L = J_S M^-1 (J_S^T f0_S
+  // - J_L^T delta_L)
+  std::vector<double>& coefficients = coefficients_;
+  coefficients.assign(rows_, 0.0);
+  for (const int l : held) coefficients[l] = solved_[l] ? start_force[l] : -delta_[l];
+  std::vector<double>& spread = spread_;
+  spread.resize(nv_);
+  Spread(coefficients.data(), spread.data());
+  std::vector<double>& rhs = rhs_;
+  rhs.resize(m);
+  system_.assign(static_cast<size_t>(m) * m, 0.0);
+  for (int a = 0; a < m; ++a) {
+    const int r = solve[a];
+    for (int b = 0; b <= a; ++b) system_[a * m + b] = Coupling(r, solve[b]);
+    system_[a * m + a] += 1 / gain_[a];
+    rhs[a] = (start_force[r] + g_[r]) / gain_[a] + j_rows_.Dot(r, spread.data());
+  }
+  if (!EnvelopeCholesky(system_.data(), m, &envelope_)) return false;
+  EnvelopeSolve(system_.data(), m, envelope_, rhs.data(), f);
+  return true;
+}
+
+bool ContactStepper::SolveInDofs(const std::vector<int>& held,
+                                 const std::vector<double>& start_force, double* f) {
+  const mjModel* model = model_.model();
+  const int nv = nv_;
+  // the dofs of the marked trees, in order (a dof's ancestors come before it)
+  local_.resize(nv);
+  dofs_.clear();
+  for (int k = 0; k < nv; ++k) {
+    const bool in = root_marked_[model->body_rootid[model->dof_bodyid[k]]];
+    local_[k] = in ? static_cast<int>(dofs_.size()) : -1;
+    if (in) dofs_.push_back(k);
+  }
+  const int size = static_cast<int>(dofs_.size());
+  // the lower triangle of M + J_S^T K J_S (M: each dof's row from its
+  // diagonal along its ancestors, as MuJoCo's qM keeps it)
+  system_.assign(static_cast<size_t>(size) * size, 0.0);
+  for (int a = 0; a < size; ++a) {
+    int k = dofs_[a];
+    int address = model->dof_Madr[k];
+    double* row = system_.data() + static_cast<size_t>(a) * size;
+    row[a] = mass_matrix_[address];
+    for (int parent = model->dof_parentid[k]; parent >= 0; parent = model->dof_parentid[parent]) {
+      row[local_[parent]] = mass_matrix_[++address];
+    }
+  }
+  std::vector<double>& rhs = rhs_;
+  rhs.assign(size, 0.0);
+  const std::vector<int>& solve = solve_;
+  const SparseRows& j = j_rows_;
+  std::vector<int>& columns = columns_;  // a row's entries' local dofs
+  for (size_t a = 0; a < solve.size(); ++a) {
+    const int r = solve[a];
+    const int first = j.start[r];
+    const int count = j.start[r + 1] - first;
+    columns.resize(count);
+    const double* value = j.value.data() + first;
+    for (int e = 0; e < count; ++e) columns[e] = local_[j.column[first + e]];
+    for (int e = 0; e < count; ++e) {
+      double* row = system_.data() + static_cast<size_t>(columns[e]) * size;
+      const double scaled = gain_[a] * value[e];
+      for (int o = 0; o <= e; ++o) row[columns[o]] += scaled * value[o];
+      rhs[columns[e]] += g_[r] * value[e];
+    }
+  }
+  for (const int l : held) {
+    if (solved_[l]) continue;
+    for (int e = j.start[l]; e < j.start[l + 1]; ++e) {
+      const int k = local_[j.column[e]];
+      if (k >= 0) rhs[k] += delta_[l] * j.value[e];
+    }
+  }
+  if (!EnvelopeCholesky(system_.data(), size, &envelope_)) return false;
+  std::vector<double>& z = spread_;
+  z.resize(size);
+  EnvelopeSolve(system_.data(), size, envelope_, rhs.data(), z.data());
+  // f_S = g_S - K J_S z
+  for (size_t a = 0; a < solve.size(); ++a) {
+    const int r = solve[a];
+    double velocity = 0;
+    for (int e = j.start[r]; e < j.start[r + 1]; ++e) velocity += j.value[e] * z[local_[j.column[e]]];
+    f[a] = start_force[r] + g_[r] - gain_[a] * velocity;
+  }
+  return true;
 }
 
 void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double>& start_force,
@@ -1013,6 +1163,19 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
     f[s] = stage_.data() + (4 * s + 2) * rows;
     acc[s] = stage_.data() + (4 * s + 3) * rows;
   }
+  // per stage: u = M^-1 J^T f; with J', w = M^-1 J'^T f, and p = M^-1 J^T
+  // P at the sub-step's start and at the stage
+  const int nv = nv_;
+  stage_spread_.resize(static_cast<size_t>(10) * nv);
+  double* u[4];
+  double* w[4];
+  for (int s = 0; s < 4; ++s) {
+    u[s] = stage_spread_.data() + s * nv;
+    w[s] = stage_spread_.data() + (4 + s) * nv;
+  }
+  double* p = stage_spread_.data() + 8 * nv;
+  double* stage_p = stage_spread_.data() + 9 * nv;
+  if (moving_) Spread(impulse_.data(), p);
   const double offsets[4] = {0, 0.5 * step, 0.5 * step, step};
   for (int s = 0; s < 4; ++s) {
     for (int i = 0; i < rows; ++i) {
@@ -1052,12 +1215,19 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][t + j] = -vec3::Dot(out.force, tangents_.data() + 6 * i + 3 * j);
       }
     }
-    // the impulse at the stage, as RK4 takes P' = f, and x''
-    stage_impulse_.resize(rows);
-    for (int i = 0; moving_ && i < rows; ++i) {
-      stage_impulse_[i] = impulse_[i] + (s == 0 ? 0.0 : offsets[s] * f[s - 1][i]);
+    // the impulse at the stage, as RK4 takes P' = f: M^-1 J^T P = p + offset
+    // u of the stage before (p: the sub-step's start), and x''
+    for (int k = 0; moving_ && k < nv; ++k) {
+      stage_p[k] = s == 0 ? p[k] : p[k] + offsets[s] * u[s - 1][k];
     }
-    Acceleration(t0 + offsets[s], f[s], stage_impulse_.data(), acc[s]);
+    // u and w of a later stage from the first's, through the rows whose
+    // force the stage changed
+    if (s == 0) {
+      SpreadForces(f[0], nullptr, nullptr, nullptr, u[0], w[0]);
+    } else {
+      SpreadForces(f[s], f[0], u[0], w[0], u[s], w[s]);
+    }
+    Acceleration(t0 + offsets[s], u[s], w[s], stage_p, acc[s]);
   }
   for (int i = 0; i < rows; ++i) {
     // x'' = b - A f: x moves by step x' + step^2 / 6 (a1 + a2 + a3), whose
@@ -1084,9 +1254,8 @@ void ContactStepper::CorrectPositions(const mjModel* m, mjData* d) const {
   const int nv = m->nv;
   std::vector<double> shift(nv);
   for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k];
-  for (size_t i = 0; i < impulse_.size(); ++i) {
-    mju_addToScl(shift.data(), minv_jt_.data() + i * nv, -(impulse_sum_[i] - c * h_ * impulse_[i]),
-                 nv);
+  for (int i = 0; i < static_cast<int>(impulse_.size()); ++i) {
+    minv_jt_rows_.AddTo(i, -(impulse_sum_[i] - c * h_ * impulse_[i]), shift.data());
   }
   mj_integratePos(m, d->qpos, shift.data(), 1.0);
 }

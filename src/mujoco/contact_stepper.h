@@ -141,8 +141,27 @@ class ContactStepper {
   void ImplicitRows(double step, const std::vector<char>& acting,
                     const std::vector<double>& start_force, const std::vector<double>& v0,
                     std::vector<double>* x, std::vector<double>* rate);
-  // J rows, M^-1 J^T, A, b at d's state.
+  // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
+  // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L in the rows
+  // (SolveInRows), or, with z = M^-1 J_H^T delta_H the held rows' velocity
+  // change per second, (M + J_S^T K J_S) z = J_S^T (g_S - f0_S) + J_L^T
+  // delta_L in the dofs of the rows' trees and f_S = g_S - K J_S z
+  // (SolveInDofs; M is block diagonal over the trees, so M restricted to
+  // them is exact); f gets f_S. False when the system is not positive
+  // definite.
+  bool SolveInRows(const std::vector<int>& held, const std::vector<double>& start_force,
+                   double* f);
+  bool SolveInDofs(const std::vector<int>& held, const std::vector<double>& start_force,
+                   double* f);
+  // The dofs of the trees of the rows of solve_ (marked in root_marked_),
+  // their count.
+  int MarkTrees();
+  // J rows, M^-1 J^T, A's diagonal, b at d's state.
   void BuildContactSpace(const mjModel* m, mjData* d);
+  // A_ij = J_i M^-1 J_j^T, over J_i's nonzero entries.
+  double Coupling(int i, int j) const;
+  // out = M^-1 J^T c (nv) for the rows' coefficients c (zeros skipped).
+  void Spread(const double* c, double* out) const;
   // J' of every row (AddPointJacobianRate; two spheres' turning normal), J'
   // v0 added to b, b1. Over the step J moves to J + J' t (a spinning body's
   // contact points, two spheres sliding past each other): x' = J(t) v(t),
@@ -156,13 +175,43 @@ class ContactStepper {
   // force alone, without its terms here, made the bodies' kinetic energy
   // and the law's work part by P^2 (A(t_c) - A) / 2 (a spinning die at 2
   // ms gained 2.5e-4 J in a step).
-  void BuildJacobianRates(const mjModel* m, const mjData* d);
+  void BuildJacobianRates(const mjModel* m, mjData* d);
   // The rate (rad/s) at which point e's rows turn at d's state: its bodies'
   // largest spin; two spheres' |v_t| / s.
   double RowTurn(const mjModel* m, const mjData* d, const PointEvaluation& e) const;
+  // The rows' forces f in the dofs: u = M^-1 J^T f and, with J', w =
+  // M^-1 J'^T f (nv each); with base (forces whose u and w are base_u and
+  // base_w), through f - base: only the rows whose force differs.
+  void SpreadForces(const double* f, const double* base, const double* base_u,
+                    const double* base_w, double* u, double* w);
   // acc = b + t b1 - (A + t C) f - D P (BuildJacobianRates; without J',
-  // b - A f) for the rows' forces f and impulse P at t s into the step.
-  void Acceleration(double t, const double* f, const double* impulse, double* acc) const;
+  // b - A f) for the rows' forces f and impulse P at t s into the step,
+  // through the dofs: A f = J u, t C f = t (J' u + J w), D P = J' p with u
+  // and w f's (SpreadForces) and p = M^-1 J^T P (u, w, p: nv; w and p read
+  // with J' only): a row's nonzero entries, where A, C and D are rows x
+  // rows.
+  void Acceleration(double t, const double* u, const double* w, const double* p, double* acc);
+
+  // The nonzero entries of a rows x nv matrix, row by row.
+  struct SparseRows {
+    std::vector<int> start;  // per row, and its end: its first entry
+    std::vector<int> column;
+    std::vector<double> value;
+    // from the rows x nv matrix dense, whose rows have bound nonzero
+    // entries at most in all
+    void Assign(const double* dense, int rows, int nv, size_t bound);
+    bool empty(int row) const { return start[row] == start[row + 1]; }
+    // row . v
+    double Dot(int row, const double* v) const {
+      double dot = 0;
+      for (int e = start[row]; e < start[row + 1]; ++e) dot += value[e] * v[column[e]];
+      return dot;
+    }
+    // out += scale row
+    void AddTo(int row, double scale, double* out) const {
+      for (int e = start[row]; e < start[row + 1]; ++e) out[column[e]] += scale * value[e];
+    }
+  };
 
   const ContactModel& model_;
   ContactStepsOptions options_;
@@ -178,19 +227,36 @@ class ContactStepper {
   std::vector<double> anchor_turn_;  // per point: body[0]'s xmat at the start (9)
   std::vector<FrictionMemory> memory_;  // per point
   std::vector<double> mass_;       // per point: 1 / A_ii of its normal row, kg
+  int nv_ = 0;                     // the model's dofs
   std::vector<double> j_;          // rows x nv: x' = J_r qvel (+ drives)
   std::vector<double> minv_jt_;    // rows x nv: M^-1 J_r^T
-  std::vector<int> span_;          // per row: [lo, hi) of its J row, then of M^-1 J^T's
-  std::vector<double> a_;          // rows x rows
+  // the nonzero entries of J, M^-1 J^T, J' and M^-1 J'^T: a row moves the
+  // dofs of its two bodies' trees only, and few of those (a free body's
+  // translations across a normal: none)
+  SparseRows j_rows_, minv_jt_rows_, jdot_rows_, minv_jdt_rows_;
+  std::vector<double> a_diag_;     // per row: A_rr
   std::vector<double> b_;          // per row, m/s^2
   std::vector<double> a_free_;     // nv: M^-1 (forces but the contacts')
   std::vector<double> jdot_;       // rows x nv: J' of each row
-  std::vector<int> jdot_span_;     // per row: [lo, hi) of its J' row
+  std::vector<double> minv_jdt_;   // rows x nv: M^-1 J'^T
   std::vector<double> b1_;         // per row: 2 J' a_free, m/s^3
   bool moving_ = false;            // some J' is not zero
-  std::vector<double> d_transposed_;  // rows x rows: D^T, D = J' M^-1 J^T
-  std::vector<double> c_;          // rows x rows: C = D + D^T
-  std::vector<double> stage_impulse_;  // Rk4SubStep's P at a stage
+  std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
+  std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
+  size_t entries_bound_ = 0;       // the most nonzero entries of J (and alike)
+  std::vector<int> row_point_;     // per row: its point
+  // nv: Spread's out (ImplicitRows, the resting points), Acceleration's
+  // u + t w and p + t u
+  std::vector<double> spread_, spread_rate_, spread_impulse_;
+  std::vector<char> root_marked_;  // per body: a tree of SolveInDofs' system
+  std::vector<int> local_;         // per dof: its index in SolveInDofs' system, or -1
+  std::vector<int> dofs_;          // SolveInDofs' dofs
+  std::vector<int> columns_;       // SolveInDofs' local dofs of a row's entries
+  std::vector<double> coefficients_;  // per row: Spread's coefficients
+  std::vector<double> difference_;    // per row: SpreadForces' f - base
+  // nv each: Rk4SubStep's M^-1 J^T f at its four stages, M^-1 J^T P at its
+  // start and at a stage
+  std::vector<double> stage_spread_;
   std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
   std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
