@@ -52,19 +52,28 @@ double DefinitionRate(const mjModel* m, mjData* d, const GeomPair& pair, int poi
 
 class DamperRateTest : public testing::MujocoTest {
  protected:
-  // A free body of mass kMass (its geom given) on a static floor, at the
-  // state qpos.
-  // The four bottom corners of a cube of half size a centred at z = 1 (as
-  // Body places it), each with the floor's normal.
-  static void BottomCorners(double a, std::vector<mjtNum>* pos, std::vector<mjtNum>* normal) {
-    for (const double x : {-a, a}) {
-      for (const double y : {-a, a}) {
-        pos->insert(pos->end(), {x, y, 1 - a});
-        normal->insert(normal->end(), {0, 0, 1});
+  // A cube of half size kCubeHalf as Body (centred at z = 1): its four
+  // bottom corners, each with the floor's normal and a damper kDamping.
+  static constexpr double kCubeHalf = 0.01;  // m
+  struct Corners {
+    mjData* d = nullptr;
+    std::vector<mjtNum> pos, normal;
+    std::vector<double> damping = std::vector<double>(4, kDamping);
+  };
+  Corners CubeOnItsCorners() {
+    Corners c;
+    c.d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kCubeHalf));
+    for (const double x : {-kCubeHalf, kCubeHalf}) {
+      for (const double y : {-kCubeHalf, kCubeHalf}) {
+        c.pos.insert(c.pos.end(), {x, y, 1 - kCubeHalf});
+        c.normal.insert(c.normal.end(), {0, 0, 1});
       }
     }
+    return c;
   }
 
+  // A free body of mass kMass (its geom given) at z = 1 above a static
+  // floor, forwarded.
   mjData* Body(const std::string& geom) {
     model_ = Load(fmt::format(R"(<mujoco>
   <worldbody>
@@ -101,24 +110,21 @@ TEST_F(DamperRateTest, FourCornersTurnTheCube12xAndRockIt6xFasterThanOneMovesIts
   // the bottom corners of a cube of half size a, at r^2 = 2 a^2 from the
   // vertical axis: torsion at 4 c 2 a^2 / I_zz, I_zz = 2/3 m a^2: 12 c / m
   // (the fastest mode; translation with rocking 10 c / m)
-  constexpr double kHalf = 0.01;
-  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
-  std::vector<mjtNum> pos, normal;
-  BottomCorners(kHalf, &pos, &normal);
-  const std::vector<double> damping(4, kDamping);
+  const Corners cube = CubeOnItsCorners();
   DamperRate rate;
-  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data()),
+  EXPECT_NEAR(rate.Rate(model_.get(), cube.d, pair_, 4, cube.pos.data(), cube.normal.data(),
+                        cube.damping.data()),
               12 * kDamping / kMass, 1e-9 * kDamping / kMass);
   // the normal's own direction is not damped: a normal along x leaves y, z
   const mjtNum side[3] = {1, 0, 0};
   const mjtNum centre[3] = {0, 0, 1};
-  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 1, centre, side, &kDamping), kDamping / kMass,
+  EXPECT_NEAR(rate.Rate(model_.get(), cube.d, pair_, 1, centre, side, &kDamping), kDamping / kMass,
               1e-9 * kDamping / kMass);
   // their normal dampers: the cube rises against 4 c on m (4 c / m) and
   // rocks about a horizontal axis against 4 c a^2 on I_xx = 2/3 m a^2
   // (6 c / m), the fastest mode
-  EXPECT_NEAR(rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(), damping.data(),
-                        DamperDirection::kNormal),
+  EXPECT_NEAR(rate.Rate(model_.get(), cube.d, pair_, 4, cube.pos.data(), cube.normal.data(),
+                        cube.damping.data(), DamperDirection::kNormal),
               6 * kDamping / kMass, 1e-9 * kDamping / kMass);
 }
 
@@ -127,27 +133,24 @@ TEST_F(DamperRateTest, TheBoundIsTheFrobeniusNormOfTheRatesMatrix) {
   // 4 c / m and rocks about x and y at 6 c / m, and nothing else moves
   // against them; the bound is sqrt(4^2 + 6^2 + 6^2) c / m, and its margin,
   // 1e-9 of the trace (4 + 6 + 6) c / m
-  constexpr double kHalf = 0.01;
-  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
-  std::vector<mjtNum> pos, normal;
-  BottomCorners(kHalf, &pos, &normal);
-  const std::vector<double> damping(4, kDamping);
+  const Corners cube = CubeOnItsCorners();
   DamperRate rate;
-  const double bound = rate.Bound(model_.get(), d, pair_, 4, pos.data(), normal.data(),
-                                  damping.data(), DamperDirection::kNormal);
+  const double bound =
+      rate.Bound(model_.get(), cube.d, pair_, 4, cube.pos.data(), cube.normal.data(),
+                 cube.damping.data(), DamperDirection::kNormal);
   EXPECT_NEAR(bound, (std::sqrt(88.0) + 16e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
-  EXPECT_GE(bound, rate.Rate(model_.get(), d, pair_, 4, pos.data(), normal.data(),
-                             damping.data(), DamperDirection::kNormal));
+  EXPECT_GE(bound, rate.Rate(model_.get(), cube.d, pair_, 4, cube.pos.data(), cube.normal.data(),
+                             cube.damping.data(), DamperDirection::kNormal));
   // friction's dampers there, along a tilted normal (a corner on a slope):
   // above the exact rate, within sqrt(6) of it (six dofs: the rank) and the
   // margin
   const std::vector<mjtNum> tilted = {0.6, 0, 0.8, 0.6, 0, 0.8, 0.6, 0, 0.8, 0.6, 0, 0.8};
-  const std::vector<mjtNum>* normals[] = {&normal, &tilted};
+  const std::vector<mjtNum>* normals[] = {&cube.normal, &tilted};
   for (const std::vector<mjtNum>* n : normals) {
     const double exact =
-        rate.Rate(model_.get(), d, pair_, 4, pos.data(), n->data(), damping.data());
-    const double tangential = rate.Bound(model_.get(), d, pair_, 4, pos.data(), n->data(),
-                                         damping.data(), DamperDirection::kTangential);
+        rate.Rate(model_.get(), cube.d, pair_, 4, cube.pos.data(), n->data(), cube.damping.data());
+    const double tangential = rate.Bound(model_.get(), cube.d, pair_, 4, cube.pos.data(), n->data(),
+                                         cube.damping.data(), DamperDirection::kTangential);
     EXPECT_GE(tangential, exact);
     EXPECT_LE(tangential, std::sqrt(6.0) * exact * (1 + 1e-8));
     // the exact rate from Bound's rows: Rate's, to the bit
@@ -160,17 +163,13 @@ TEST_F(DamperRateTest, TheInertiaBoundTakesEachPointsDistanceOnTheSmallestMoment
   // a^2: each point moves at most by 1/m + 3 a^2 / I = 5.5 / m per unit
   // force; the normal dampers' bound 4 x 5.5 c / m (above the rate, 6 c / m),
   // friction's twice that (two rows per point), and Bound's margin
-  constexpr double kHalf = 0.01;
-  mjData* d = Body(fmt::format(R"(type="box" size="{0} {0} {0}")", kHalf));
-  std::vector<mjtNum> pos, normal;
-  BottomCorners(kHalf, &pos, &normal);
-  const std::vector<double> damping(4, kDamping);
+  const Corners cube = CubeOnItsCorners();
   DamperRate rate;
-  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
-                                DamperDirection::kNormal),
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), cube.d, pair_, 4, cube.pos.data(),
+                                cube.damping.data(), DamperDirection::kNormal),
               22 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
-  EXPECT_NEAR(rate.InertiaBound(model_.get(), d, pair_, 4, pos.data(), damping.data(),
-                                DamperDirection::kTangential),
+  EXPECT_NEAR(rate.InertiaBound(model_.get(), cube.d, pair_, 4, cube.pos.data(),
+                                cube.damping.data(), DamperDirection::kTangential),
               44 * (1 + 1e-9) * kDamping / kMass, 1e-12 * kDamping / kMass);
   // a body hinged to another: its inertia is not its own, no bound
   model_ = Load(R"(<mujoco><worldbody><body pos="0 0 1"><freejoint/>
@@ -179,7 +178,7 @@ TEST_F(DamperRateTest, TheInertiaBoundTakesEachPointsDistanceOnTheSmallestMoment
     </body></body></worldbody></mujoco>)");
   mjData* hinged = MakeData(model_.get());
   mj_forward(model_.get(), hinged);
-  EXPECT_EQ(rate.InertiaBound(model_.get(), hinged, pair_, 4, pos.data(), damping.data(),
+  EXPECT_EQ(rate.InertiaBound(model_.get(), hinged, pair_, 4, cube.pos.data(), cube.damping.data(),
                               DamperDirection::kNormal),
             std::numeric_limits<double>::infinity());
 }
