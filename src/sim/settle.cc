@@ -141,6 +141,18 @@ double Reach(const mjModel* m, int b) {
   return reach;
 }
 
+// The refusal of body b, which tips: its contacts carry its weight and not
+// its turn; how, in evidence.
+OptionError Tips(const Simulation& sim, int b, const std::string& evidence) {
+  return OptionError(
+      fmt::format("{}: {}: body '{}' tips: its contacts carry its weight but not its turn ({}), "
+                  "so it has no resting pose to start from; start it without {}, or where it "
+                  "rests",
+                  sim.source(), OptionError::kMark, ObjectName(sim.model(), mjOBJ_BODY, b),
+                  evidence, OptionError::kMark),
+      {kSettle, kSettle});
+}
+
 }  // namespace
 
 std::string SettleReport::Line() const {
@@ -186,13 +198,8 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
       // moved mostly by turning (its turn at its reach at least half the
       // distance): it tips over its contacts rather than sinking through them
       if (distance > touching.limit[b] && angle * Reach(m, b) >= 0.5 * distance) {
-        throw OptionError(
-            fmt::format("{}: {}: body '{}' tips: its contacts carry its weight but not its turn "
-                        "(it turned {:.3g} rad in {:.3g} s of relaxation), so it has no resting "
-                        "pose to start from; start it without {}, or where it rests",
-                        sim->source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, b), angle,
-                        d->time - start, OptionError::kMark),
-            {kSettle, kSettle});
+        throw Tips(*sim, b, fmt::format("it turned {:.3g} rad in {:.3g} s of relaxation", angle,
+                                        d->time - start));
       }
       if (distance > touching.limit[b]) {
         throw OptionError(
@@ -277,13 +284,8 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
       }
     }
     if (tipping >= 0) {
-      throw OptionError(
-          fmt::format("{}: {}: body '{}' tips: its contacts carry its weight but not its turn "
-                      "(it still turns at {:.3g} rad/s^2 after {} s of relaxation), so it has "
-                      "no resting pose to start from; start it without {}, or where it rests",
-                      sim->source(), OptionError::kMark, ObjectName(m, mjOBJ_BODY, tipping),
-                      turn, kSettleDuration, OptionError::kMark),
-          {kSettle, kSettle});
+      throw Tips(*sim, tipping, fmt::format("it still turns at {:.3g} rad/s^2 after {} s of "
+                                            "relaxation", turn, kSettleDuration));
     }
     throw OptionError(
         fmt::format("{}: {}: no equilibrium along the contacts' normals: the bodies in contact "

@@ -61,11 +61,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   RecordBodiesAndJoints();
   Reset(/*fresh=*/true);
   if (options.settle) {
-    // relaxed under Euler: its one evaluation a step is at the positions the
-    // relaxation projects onto its directions; RK4's later stages would see
-    // the bodies slid along their surfaces within the step, and friction's
-    // springs stretched by it (an offset cube on a cube under RK4 kept
-    // turning at 4 rad/s^2 at 1e-4 s, 0.4 at 1e-5 s, and was refused)
+    // relaxed under Euler, the run's integrator given back (settle.h says why)
     const int integrator = contacts_->options().integrator;
     contacts_->options().integrator = mjINT_EULER;
     settled_ = Settle(this, &settled_contacts_);
