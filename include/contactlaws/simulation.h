@@ -160,11 +160,13 @@ class Simulation {
   std::vector<TagReading> Readings() const;
 
   // The row of Columns() (what Sample writes) at a state d of this model at
-  // d->time, its kinematics and mass matrix computed (mj_kinematics,
-  // mj_comPos, mj_comVel, mj_crb), with the tags' readings and the laws'
-  // elastic and dissipated energy (J) given: a state inside a step.
+  // d->time, with the tags' readings and the laws' elastic and dissipated
+  // energy (J) given: a state inside a step. d has its kinematics computed
+  // (mj_kinematics, mj_comPos, mj_comVel) and, unless the caller gives the
+  // kinetic energy (J), its mass matrix (mj_crb).
   void Row(mjData* d, const std::vector<TagReading>& readings, double elastic,
-           double dissipated, std::vector<double>* row) const;
+           double dissipated, std::vector<double>* row,
+           std::optional<double> kinetic = std::nullopt) const;
 
   // True when nothing feeds energy in: no contactdrive and no actuator. Only
   // then must the ledger's total not grow.
@@ -185,6 +187,8 @@ class Simulation {
   void Reset(bool fresh);
   // The ledger's kinetic and potential energy at d (elastic, dissipated 0).
   EnergyLedger MechanicalEnergy(mjData* d) const;
+  // Its potential part: the weight of the moving bodies, the joints' springs.
+  double PotentialEnergy(const mjData* d) const;
   // The bodies and joints whose columns the trajectory has.
   void RecordBodiesAndJoints();
 
@@ -198,6 +202,7 @@ class Simulation {
   std::vector<int> recorded_bodies_;
   std::vector<uint8_t> oriented_;  // per recorded body: it has a free or ball joint
   std::vector<int> recorded_joints_;  // hinge and slide joints
+  size_t row_size_ = 0;               // Columns().size()
   std::optional<SettleReport> settled_;
   std::vector<mjtNum> settled_qpos_;  // the initial positions after settle
   // their contacts with the friction they carry at the start (settle_friction.h)

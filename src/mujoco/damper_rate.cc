@@ -30,14 +30,6 @@ std::pair<int, int> TreeDofs(const mjModel* m, int body) {
   return first < end ? std::make_pair(first, end) : std::make_pair(0, 0);
 }
 
-// Whether body is a free body alone in its tree (its own free joint, from the
-// world, no bodies below it): its inertia is its own.
-bool SingleFreeBody(const mjModel* m, int body) {
-  return body > 0 && m->body_parentid[body] == 0 && m->body_jntnum[body] == 1 &&
-         m->jnt_type[m->body_jntadr[body]] == mjJNT_FREE &&
-         (body + 1 == m->nbody || m->body_rootid[body + 1] != body);
-}
-
 // Bound's margin, a share of the matrix's trace (>= its Frobenius norm): the
 // eigenvalue Rate computes and the norm Bound computes, of two matrices equal
 // in exact arithmetic, are each within some hundreds of roundings (1e-16) of

@@ -40,6 +40,62 @@ void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[
   }
 }
 
+bool SingleFreeBody(const mjModel* m, int body) {
+  return body > 0 && m->body_parentid[body] == 0 && m->body_jntnum[body] == 1 &&
+         m->jnt_type[m->body_jntadr[body]] == mjJNT_FREE &&
+         (body + 1 == m->nbody || m->body_rootid[body + 1] != body);
+}
+
+bool OnlySingleFreeBodies(const mjModel* m) {
+  if (m->nmocap > 0) return false;
+  for (int b = 1; b < m->nbody; ++b) {
+    if (m->body_weldid[b] != 0 && !SingleFreeBody(m, b)) return false;
+  }
+  return true;
+}
+
+double FreeBodyKinematics(const mjModel* m, mjData* d) {
+  double kinetic = 0;
+  for (int b = 1; b < m->nbody; ++b) {
+    if (!SingleFreeBody(m, b)) continue;
+    const int joint = m->body_jntadr[b];
+    mjtNum* qpos = d->qpos + m->jnt_qposadr[joint];
+    // qvel: the frame origin's velocity (world frame), then the angular
+    // velocity (body frame)
+    const mjtNum* qvel = d->qvel + m->jnt_dofadr[joint];
+    mjtNum* xpos = d->xpos + 3 * b;
+    mjtNum* xquat = d->xquat + 4 * b;
+    mjtNum* xmat = d->xmat + 9 * b;
+    mjtNum* xipos = d->xipos + 3 * b;
+    // mj_kinematics normalizes qpos's quaternion, then its copy
+    mju_normalize4(qpos + 3);
+    mju_copy3(xpos, qpos);
+    mju_copy4(xquat, qpos + 3);
+    mju_normalize4(xquat);
+    mju_quat2Mat(xmat, xquat);
+    mj_local2Global(d, xipos, d->ximat + 9 * b, m->body_ipos + 3 * b, m->body_iquat + 4 * b, b,
+                    m->body_sameframe[b]);
+    mju_copy3(d->subtree_com + 3 * b, xipos);
+    // cvel at the com: (R w, v + R w x (xipos - xpos))
+    mjtNum* cvel = d->cvel + 6 * b;
+    mjtNum offset[3], turn[3];
+    mju_rotVecMat(cvel, qvel + 3, xmat);
+    Sub(offset, xipos, xpos);
+    Cross(turn, cvel, offset);
+    for (int i = 0; i < 3; ++i) cvel[3 + i] = qvel[i] + turn[i];
+    // the body-frame angular velocity in the principal axes (iquat^-1 w)
+    mjtNum inverse[4], principal[3];
+    mju_negQuat(inverse, m->body_iquat + 4 * b);
+    mju_rotVecQuat(principal, qvel + 3, inverse);
+    const mjtNum* inertia = m->body_inertia + 3 * b;
+    kinetic += 0.5 * (m->body_mass[b] * Dot(cvel + 3, cvel + 3) +
+                      inertia[0] * principal[0] * principal[0] +
+                      inertia[1] * principal[1] * principal[1] +
+                      inertia[2] * principal[2] * principal[2]);
+  }
+  return kinetic;
+}
+
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],
                    mjtNum vel[3]) {
   const mjModel* m = model.model();

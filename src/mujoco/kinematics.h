@@ -26,6 +26,26 @@ void AddPointForce(const mjModel* m, const mjData* d, int body, const mjtNum poi
 // mj_applyFT(m, d, 0, torque, ...) adds), walking only the body's chain.
 void AddTorque(const mjModel* m, const mjData* d, int body, const mjtNum torque[3], mjtNum* qfrc);
 
+// Whether body is a free body alone in its tree: its own free joint, from the
+// world, no bodies below it (its inertia is its own).
+bool SingleFreeBody(const mjModel* m, int body);
+
+// True when every body that moves is a single free body (SingleFreeBody) and
+// none is driven (no mocap bodies): FreeBodyKinematics then gives every
+// moving body's kinematics.
+bool OnlySingleFreeBodies(const mjModel* m);
+
+// For every single free body, from d's qpos (its quaternion normalized in
+// place, as mj_kinematics does) and qvel, what a trajectory row
+// reads, without the rest of MuJoCo's pipeline (positions of geoms and sites,
+// cdof, cinert, cdof_dot, the mass matrix): xpos, xquat, xmat, xipos and
+// ximat from the calls mj_kinematics makes (the same bits); subtree_com
+// (xipos) and cvel ((angular, linear) at the com, world frame) equal to
+// mj_comPos's and mj_comVel's to rounding. Returns their kinetic energy, 1/2
+// qvel^T M qvel to rounding: 1/2 m |v_com|^2 + 1/2 w^T I w, w in the body's
+// principal axes. Leaves every other body, geom and site as it is.
+double FreeBodyKinematics(const mjModel* m, mjData* d);
+
 // World-frame velocity of a point fixed to body (driven bodies: their
 // prescribed motion at d->time). Needs cvel.
 void PointVelocity(const ContactModel& model, const mjData* d, int body, const mjtNum point[3],

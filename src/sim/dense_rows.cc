@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "memory/contact_memory.h"
+#include "mujoco/kinematics.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws {
@@ -24,7 +25,8 @@ double Hermite(double s, double y0, double m0, double y1, double m1) {
 
 }  // namespace
 
-DenseRows::DenseRows(Simulation* sim) : sim_(sim) {
+DenseRows::DenseRows(Simulation* sim)
+    : sim_(sim), free_bodies_(OnlySingleFreeBodies(sim->model())) {
   scratch_.reset(mj_makeData(sim->model()));
   if (!scratch_) throw Error(fmt::format("{}: MuJoCo could not allocate mjData", sim->source()));
 }
@@ -93,7 +95,7 @@ void DenseRows::Row(double t, double tolerance, std::vector<double>* row) {
   const double dissipated =
       Hermite(s, a.dissipated, h * (a.dissipated_power - friction_rate), b.dissipated,
               h * (b.dissipated_power - friction_rate));
-  sim_->Row(scratch_.get(), readings_, spring + friction_spring, dissipated, row);
+  sim_->Row(scratch_.get(), readings_, spring + friction_spring, dissipated, row, kinetic_);
 }
 
 void DenseRows::Interpolate(double t) {
@@ -146,6 +148,10 @@ void DenseRows::Interpolate(double t) {
   d->time = t;
   for (const Drive& drive : sim_->contact_model().drives()) {
     drive.Position(t, d->mocap_pos + 3 * drive.mocap);
+  }
+  if (free_bodies_) {
+    kinetic_ = FreeBodyKinematics(m, d);
+    return;
   }
   mj_kinematics(m, d);
   mj_comPos(m, d);

@@ -2,8 +2,11 @@
 
 #include "contactlaws/simulation.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <utility>
 
 #include <fmt/format.h>
@@ -59,6 +62,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   motion_only_ = !columns_.pairs && !columns_.friction && !columns_.energy &&
                  WithoutConstraints(contacts_->model_view());
   RecordBodiesAndJoints();
+  row_size_ = Columns().size();
   Reset(/*fresh=*/true);
   if (options.settle) {
     // relaxed under Euler, the run's integrator given back (settle.h says why)
@@ -157,13 +161,19 @@ EnergyLedger Simulation::MechanicalEnergy(mjData* d) const {
   mj_mulM(m, d, mv, d->qvel);
   e.kinetic = 0.5 * mju_dot(d->qvel, mv, m->nv);
   d->pstack = mark;
+  e.potential = PotentialEnergy(d);
+  return e;
+}
 
-  // potential: the weight of the bodies that move through dofs (static and
-  // driven bodies are not part of the simulated system) ...
+double Simulation::PotentialEnergy(const mjData* d) const {
+  const mjModel* m = model_.get();
+  double potential = 0;
+  // the weight of the bodies that move through dofs (static and driven
+  // bodies are not part of the simulated system) ...
   if (!(m->opt.disableflags & mjDSBL_GRAVITY)) {
     for (int b = 1; b < m->nbody; ++b) {
       if (m->body_weldid[b] != 0) {
-        e.potential -= m->body_mass[b] * mju_dot3(m->opt.gravity, d->xipos + 3 * b);
+        potential -= m->body_mass[b] * mju_dot3(m->opt.gravity, d->xipos + 3 * b);
       }
     }
   }
@@ -173,10 +183,10 @@ EnergyLedger Simulation::MechanicalEnergy(mjData* d) const {
     if (m->jnt_stiffness[j] > 0 && (type == mjJNT_SLIDE || type == mjJNT_HINGE)) {
       const int adr = m->jnt_qposadr[j];
       const double stretch = d->qpos[adr] - m->qpos_spring[adr];
-      e.potential += 0.5 * m->jnt_stiffness[j] * stretch * stretch;
+      potential += 0.5 * m->jnt_stiffness[j] * stretch * stretch;
     }
   }
-  return e;
+  return potential;
 }
 
 std::vector<TagReading> Simulation::Readings() const {
@@ -201,41 +211,54 @@ void Simulation::SampleMotion(std::vector<double>* row) {
 }
 
 void Simulation::Row(mjData* d, const std::vector<TagReading>& readings, double elastic,
-                     double dissipated, std::vector<double>* row) const {
+                     double dissipated, std::vector<double>* row,
+                     std::optional<double> kinetic) const {
   const mjModel* m = model();
-  row->clear();
+  // written in place: a row of 49 balls is 640 values, 300 appends
+  row->resize(row_size_);
+  double* out = row->data();
+  auto put = [&out](std::initializer_list<double> values) {
+    out = std::copy(values.begin(), values.end(), out);
+  };
+  auto put_array = [&out](const double* values, int n) { out = std::copy(values, values + n, out); };
   // d->time accumulates timesteps: show it to the nanosecond
-  row->push_back(std::round(d->time * 1e9) / 1e9);
+  put({std::round(d->time * 1e9) / 1e9});
   for (size_t i = 0; columns_.bodies && i < recorded_bodies_.size(); ++i) {
     const int b = recorded_bodies_[i];
     mjtNum vel[3];
     PointVelocity(*contact_model_, d, b, d->xpos + 3 * b, vel);
-    row->insert(row->end(), d->xpos + 3 * b, d->xpos + 3 * b + 3);
-    row->insert(row->end(), vel, vel + 3);
+    put_array(d->xpos + 3 * b, 3);
+    put_array(vel, 3);
     // cvel: (angular, linear) in the world frame
     if (oriented_[i]) {
-      row->insert(row->end(), d->xquat + 4 * b, d->xquat + 4 * b + 4);
-      row->insert(row->end(), d->cvel + 6 * b, d->cvel + 6 * b + 3);
+      put_array(d->xquat + 4 * b, 4);
+      put_array(d->cvel + 6 * b, 3);
     }
   }
   for (size_t i = 0; columns_.joints && i < recorded_joints_.size(); ++i) {
     const int j = recorded_joints_[i];
-    row->push_back(d->qpos[m->jnt_qposadr[j]]);
-    row->push_back(d->qvel[m->jnt_dofadr[j]]);
+    put({d->qpos[m->jnt_qposadr[j]], d->qvel[m->jnt_dofadr[j]]});
   }
   for (size_t t = 0; columns_.pairs && t < readings.size(); ++t) {
     const TagReading& r = readings[t];
-    row->insert(row->end(), {r.depth, r.depth_rate, r.force});
+    put({r.depth, r.depth_rate, r.force});
   }
   for (size_t t = 0; columns_.friction && t < readings.size(); ++t) {
-    row->insert(row->end(), readings[t].friction, readings[t].friction + 3);
+    put_array(readings[t].friction, 3);
   }
   if (columns_.energy) {
-    EnergyLedger e = MechanicalEnergy(d);
+    EnergyLedger e;
+    if (kinetic) {
+      e.kinetic = *kinetic;
+      e.potential = PotentialEnergy(d);
+    } else {
+      e = MechanicalEnergy(d);
+    }
     e.elastic = elastic;
     e.dissipated = dissipated;
-    row->insert(row->end(), {e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
+    put({e.kinetic, e.potential, e.elastic, e.dissipated, e.total()});
   }
+  assert(out == row->data() + row->size());
 }
 
 bool Simulation::Undriven() const {

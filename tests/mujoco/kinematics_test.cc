@@ -182,5 +182,86 @@ TEST_F(KinematicsTest, BoundingGapIsTheBroadphasesSpheresOrAPlane) {
   EXPECT_FALSE(FarApart(m.get(), d, floor, wall));
 }
 
+TEST_F(KinematicsTest, FreeBodyKinematicsIsMujocosPipelineForFreeBodies) {
+  // free bodies whose inertial frames are off their frames (an off-centre
+  // geom, a tilted capsule, two geoms), among static bodies
+  UniqueModel m = Load(R"(<mujoco>
+  <worldbody>
+    <geom type="plane" size="1 1 0.1"/>
+    <body name="static" pos="0 0 -1"><geom type="box" size="0.1 0.1 0.1"/></body>
+    <body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="0.05" mass="0.4"/></body>
+    <body name="offset" pos="0.5 0 1" euler="10 20 30"><freejoint/>
+      <geom type="box" pos="0.1 -0.05 0.02" size="0.2 0.1 0.05" mass="2"/></body>
+    <body name="pair" pos="-0.5 0 1"><freejoint/>
+      <geom type="capsule" fromto="0 0 0 0.2 0.1 0.3" size="0.03" mass="0.7"/>
+      <geom type="sphere" pos="-0.1 0 0" size="0.04" mass="0.3"/></body>
+  </worldbody>
+</mujoco>)");
+  ASSERT_TRUE(OnlySingleFreeBodies(m.get()));
+  mjData* mujoco = MakeData(m.get());
+  mjData* ours = MakeData(m.get());
+  for (int i = 0; i < m->nq; ++i) mujoco->qpos[i] += 0.3 * std::sin(2.0 * i + 1);
+  for (int i = 0; i < m->nv; ++i) mujoco->qvel[i] = 2.0 * std::cos(1.3 * i + 0.5);
+  mj_normalizeQuat(m.get(), mujoco->qpos);
+  // a quaternion off unit length, as interpolation leaves one before its
+  // normalization
+  mujoco->qpos[m->jnt_qposadr[1] + 3] *= 1.001;
+  std::copy(mujoco->qpos, mujoco->qpos + m->nq, ours->qpos);
+  std::copy(mujoco->qvel, mujoco->qvel + m->nv, ours->qvel);
+  mj_kinematics(m.get(), mujoco);
+  mj_comPos(m.get(), mujoco);
+  mj_comVel(m.get(), mujoco);
+  mj_crb(m.get(), mujoco);
+  const double kinetic = FreeBodyKinematics(m.get(), ours);
+  std::vector<mjtNum> mv(m->nv);
+  mj_mulM(m.get(), mujoco, mv.data(), mujoco->qvel);
+  const double mujoco_kinetic = 0.5 * mju_dot(mujoco->qvel, mv.data(), m->nv);
+  // the same calls: the same bits
+  for (int i = 0; i < m->nq; ++i) EXPECT_EQ(ours->qpos[i], mujoco->qpos[i]);
+  for (int b = 1; b < m->nbody; ++b) {
+    if (!SingleFreeBody(m.get(), b)) continue;
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(ours->xpos[3 * b + i], mujoco->xpos[3 * b + i]);
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(ours->xquat[4 * b + i], mujoco->xquat[4 * b + i]);
+    for (int i = 0; i < 9; ++i) {
+      EXPECT_EQ(ours->xmat[9 * b + i], mujoco->xmat[9 * b + i]);
+      EXPECT_EQ(ours->ximat[9 * b + i], mujoco->ximat[9 * b + i]);
+    }
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(ours->xipos[3 * b + i], mujoco->xipos[3 * b + i]);
+    // the same quantities summed in another order: rounding of values of
+    // order 1 (positions of 1 m, velocities of 2 m/s and rad/s)
+    constexpr double kRounding = 1e-14;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(ours->subtree_com[3 * b + i], mujoco->subtree_com[3 * b + i], kRounding);
+    }
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_NEAR(ours->cvel[6 * b + i], mujoco->cvel[6 * b + i], kRounding) << "body " << b;
+    }
+  }
+  ASSERT_GT(mujoco_kinetic, 1.0);
+  EXPECT_NEAR(kinetic, mujoco_kinetic, 1e-14 * mujoco_kinetic);
+}
+
+TEST_F(KinematicsTest, OnlySingleFreeBodiesRefusesTreesAndDrivenBodies) {
+  UniqueModel tree = Load(R"(<mujoco><worldbody>
+    <body><freejoint/><geom type="sphere" size="0.1"/>
+      <body pos="0.2 0 0"><geom type="sphere" size="0.1"/></body></body>
+  </worldbody></mujoco>)");
+  EXPECT_FALSE(OnlySingleFreeBodies(tree.get()));
+  UniqueModel hinge = Load(R"(<mujoco><worldbody>
+    <body><joint type="hinge"/><geom type="sphere" size="0.1"/></body>
+  </worldbody></mujoco>)");
+  EXPECT_FALSE(OnlySingleFreeBodies(hinge.get()));
+  UniqueModel driven = Load(R"(<mujoco><worldbody>
+    <body mocap="true"><geom type="sphere" size="0.1"/></body>
+    <body pos="1 0 0"><freejoint/><geom type="sphere" size="0.1"/></body>
+  </worldbody></mujoco>)");
+  EXPECT_FALSE(OnlySingleFreeBodies(driven.get()));
+  UniqueModel balls = Load(R"(<mujoco><worldbody>
+    <body><geom type="box" size="0.1 0.1 0.1"/></body>
+    <body pos="1 0 0"><freejoint/><geom type="sphere" size="0.1"/></body>
+  </worldbody></mujoco>)");
+  EXPECT_TRUE(OnlySingleFreeBodies(balls.get()));
+}
+
 }  // namespace
 }  // namespace contactlaws
