@@ -30,6 +30,8 @@ class PendingFile {
   void Commit();
 
  private:
+  static constexpr size_t kBuffer = 1 << 20;  // bytes
+
   std::string path_;
   std::string temp_;
   std::FILE* file_ = nullptr;
