@@ -70,6 +70,9 @@ struct SettleReport {
   double distance = 0;     // m, how far it moved
   double angle = 0;        // rad, the largest turn of any of them
   double relaxation = 0;   // s of relaxation taken
+  // a body its contacts carry that friction does not hold at rest (it rolls
+  // or tips from its contacts' depth in the run), "" when none
+  std::string unheld;
   // "settled 3 bodies: the farthest, box2, by 2.1e-05 m (turns <= 1e-9 rad)"
   std::string Line() const;
 };

@@ -157,10 +157,16 @@ OptionError Tips(const Simulation& sim, int b, const std::string& evidence) {
 
 std::string SettleReport::Line() const {
   if (bodies == 0) return "settle: no body touches another at t = 0: nothing moved";
-  return fmt::format(
+  std::string line = fmt::format(
       "settled {} bod{} in contact at t = 0 ({:.3g} s of relaxation): the farthest, '{}', "
       "by {:.3g} m; turns <= {:.3g} rad",
       bodies, bodies == 1 ? "y" : "ies", relaxation, body, distance, angle);
+  if (!unheld.empty()) {
+    line += fmt::format("; '{}' has no resting pose: it starts at its contacts' depth and rolls "
+                        "or tips from there",
+                        unheld);
+  }
+  return line;
 }
 
 SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contacts) {
@@ -180,8 +186,10 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
   const std::vector<mjtNum> xquat0(d->xquat, d->xquat + 4 * m->nbody);
   const double start = d->time;
 
-  // the farthest touching body from its start, and the largest turn
-  auto measure = [&] {
+  // the farthest touching body from its start, and the largest turn; a
+  // body that left its contacts' reach: the refusal that says how
+  int departed = -1;  // the body measure refused
+  auto measure = [&]() -> std::optional<OptionError> {
     for (int b = 1; b < m->nbody; ++b) {
       if (!touching.body[b]) continue;
       mjtNum offset[3];
@@ -197,12 +205,13 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
       report.angle = std::max(report.angle, angle);
       // moved mostly by turning (its turn at its reach at least half the
       // distance): it tips over its contacts rather than sinking through them
+      if (distance > touching.limit[b]) departed = b;
       if (distance > touching.limit[b] && angle * Reach(m, b) >= 0.5 * distance) {
-        throw Tips(*sim, b, fmt::format("it turned {:.3g} rad in {:.3g} s of relaxation", angle,
-                                        d->time - start));
+        return Tips(*sim, b, fmt::format("it turned {:.3g} rad in {:.3g} s of relaxation", angle,
+                                         d->time - start));
       }
       if (distance > touching.limit[b]) {
-        throw OptionError(
+        return OptionError(
             fmt::format("{}: {}: no contact holds body '{}': it moved {:.3g} m in {:.3g} s of "
                         "relaxation, farther than its contacts can compress ({:.3g} m): it "
                         "would fall",
@@ -211,6 +220,7 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
             {kSettle});
       }
     }
+    return std::nullopt;
   };
 
   // quasi-static relaxation: the other bodies held, the velocities quenched
@@ -226,7 +236,9 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
   // the run's own wherever those allow it (a scene at its fine step)
   const double timestep = sim->contacts().options().timestep;
   AutoTimestep steps(sim->contacts());
-  auto relax = [&](const SettleDirections& directions) {
+  // refuse: a body leaving its contacts is refused (the normal equilibrium),
+  // else it ends the relaxation unconverged
+  auto relax = [&](const SettleDirections& directions, bool refuse) {
     mju_copy(d->qfrc_applied, applied.data(), m->nv);
     mju_zero(d->qvel, m->nv);
     mj_forward(m, d);
@@ -250,7 +262,10 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
         mju_zero(d->qvel + m->jnt_dofadr[j], DofSize(type));
       }
       directions.Project(m, d);
-      measure();
+      if (std::optional<OptionError> departure = measure()) {
+        if (refuse) throw *departure;
+        return false;
+      }
       const double kinetic = Kinetic(m, d, &mv);
       if (kinetic < previous) {
         mju_zero(d->qvel, m->nv);
@@ -263,12 +278,15 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
     }
     mju_copy(d->qfrc_applied, applied.data(), m->nv);
     mj_forward(m, d);
-    measure();
+    if (std::optional<OptionError> departure = measure()) {
+      if (refuse) throw *departure;
+      return false;
+    }
     return converged;
   };
 
   // the normal equilibrium
-  if (!relax(touching.directions)) {
+  if (!relax(touching.directions, /*refuse=*/true)) {
     // a body whose contacts carry its weight and not its turn tips: a domino
     // stood on an edge; no relaxation ends that, and the refusal says so
     int tipping = -1;
@@ -299,15 +317,23 @@ SettleReport Settle(Simulation* sim, std::vector<PointEvaluation>* start_contact
   bool sliding = false;
   std::vector<PointEvaluation> contacts = StartFriction(*sim, touching.directions, &sliding);
   // nothing slides: on to the static equilibrium, the friction's springs
-  // loaded (kept where it does not converge, or a contact ends sliding)
+  // loaded (kept where it does not converge, a contact ends sliding, or a
+  // body leaves: a ball on a slope its friction holds rolls, a domino on an
+  // edge tips, as a block on a steeper slope slides; the run starts them
+  // from their normal equilibrium)
   if (!sliding) {
     const std::vector<mjtNum> normal(d->qpos, d->qpos + m->nq);
-    bool held = relax(anywhere);
+    const SettleReport normal_report = report;
+    const double normal_time = d->time;
+    bool held = relax(anywhere, /*refuse=*/false);
     for (const PointEvaluation& e : sim->contacts().latest()) held = held && !e.friction_state.sliding;
     if (held) {
       contacts = HeldFriction(*sim);
     } else {
       mju_copy(d->qpos, normal.data(), m->nq);
+      report = normal_report;
+      if (departed >= 0) report.unheld = ObjectName(m, mjOBJ_BODY, departed);
+      d->time = normal_time;
       mj_forward(m, d);
     }
   }

@@ -6,7 +6,10 @@
 // one of them dropping into its penalty springs. Their positions along the
 // contact surfaces, their velocities, the time and everything else are the
 // scene's: a body pushed along the surface (an actuator, an applied force, a
-// slope steeper than its friction) starts at its depth and slides in the run.
+// slope steeper than its friction) starts at its depth and slides in the run,
+// and one whose contacts carry its weight and not its turn (a ball on a
+// slope, a domino tilted on an edge) starts there and rolls or tips
+// (SettleReport::unheld names it).
 //
 // The method is a quasi-static relaxation: from the scene's positions at
 // rest, the dynamics (gravity, the scene's actuator and applied forces, the
