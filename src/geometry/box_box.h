@@ -68,11 +68,22 @@ enum class BoxFeature {
 
 struct BoxPoint {
   Vector3 pos{};     // midway between the surfaces, world frame (m)
-  double depth = 0;  // along the normal, > 0 overlapping (m)
+  double depth = 0;  // along the contact's normal, > 0 overlapping (m)
   // the point's share of the contact's force: the law's force at depth
   // times weight (a face patch's points: geometry/patch.h, PatchBelow; an
   // edge contact's one point: 1)
   double weight = 1;
+  // The gradient of depth with respect to a displacement of b relative to a
+  // at pos is -slope * normal (unit, from a towards b; slope >= 1): the
+  // force whose work the elastic energy weight * U(depth) stores pushes b
+  // along normal with slope times the law's force times weight, and depth
+  // changes at slope times the approach speed along normal. A face patch's
+  // point that slides along an edge or lies on the reference face's corner
+  // has a normal turned from the contact's (geometry/patch.h, ClipVertex);
+  // an incident corner and an edge contact's point have the contact's, and
+  // slope 1.
+  Vector3 normal{};
+  double slope = 1;
 };
 
 struct BoxBoxContact {

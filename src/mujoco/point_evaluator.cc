@@ -12,7 +12,10 @@
 namespace contactlaws::internal {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
-    : model_(model), contacts_(MakeContactBuffer()), weights_(mjMAXCONPAIR) {
+    : model_(model),
+      contacts_(MakeContactBuffer()),
+      weights_(mjMAXCONPAIR),
+      slopes_(mjMAXCONPAIR) {
   for (const GeomPair& pair : model.pairs()) {
     reads_mass_.push_back(ReadsEffectiveMass(pair.params));
   }
@@ -43,7 +46,8 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
     // midway between the surfaces
     const int count =
-        std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data()), pair.slots);
+        std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data(), slopes_.data()),
+                 pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
@@ -53,7 +57,7 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
       }
       // the point is made where it is kept (it is large: no copy)
       PointEvaluation& e = latest_.emplace_back();
-      EvaluatePoint(d, p, con, weights_[i], episodes, start, &taken, &e);
+      EvaluatePoint(d, p, con, weights_[i], slopes_[i], episodes, start, &taken, &e);
 
       // equal and opposite, at the same point: geom[1] pushed along +normal
       mjtNum push[3];
@@ -68,14 +72,18 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
 }
 
 void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
-                                   const EpisodeLog& episodes, const StepStartVelocities& start,
-                                   uint64_t* taken, PointEvaluation* out) const {
+                                   double slope, const EpisodeLog& episodes,
+                                   const StepStartVelocities& start, uint64_t* taken,
+                                   PointEvaluation* out) const {
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
   PointEvaluation& e = *out;
   mjtNum v0[3], v1[3];
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
+  // the depth's rate, slope times the approach speed along the normal
+  e.depth_rate *= slope;
   e.weight = weight;
+  e.slope = slope;
   e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
 
   // the slip before its projection into the tangent plane (SlipAndSpin):
@@ -84,7 +92,8 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
   if (reads_mass_[p]) {
-    state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal);
+    // the mass the depth's coordinate moves (slope times the normal's)
+    state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal) / (slope * slope);
   }
   const int open = e.episode;
   e.touch = open < 0;
@@ -92,8 +101,8 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
     // v0: the rate at the step before first touch, which no force has slowed
     e.at_start = !start.has_previous();
     e.touch_velocity = start.has_previous()
-                           ? ApproachRate(model_, d, pair, con.pos, normal, start.previous(),
-                                          start.previous_time())
+                           ? slope * ApproachRate(model_, d, pair, con.pos, normal,
+                                                  start.previous(), start.previous_time())
                            : e.depth_rate;
     state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);
     // the law at the touch itself (d = 0+, d' = v0)
@@ -112,7 +121,10 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
   }
   e.impact_velocity = state.impact_velocity;
   const ContactForce f = EvaluateLaw(pair.params, state);
-  e.force = weight * f.total;
+  // along the normal: slope times the law's, the gradient of the elastic
+  // energy weight * U(depth) (BoxPoint::slope); the damping's power is then
+  // the law's at the depth's rate
+  e.force = weight * slope * f.total;
   e.dissipated_power = weight * f.dissipated_power(e.depth_rate);
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, normal);
