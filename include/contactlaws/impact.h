@@ -53,11 +53,6 @@ struct PointEvaluation {
   // the patch's: docs/geometry.md); force, dissipated and touch power,
   // elastic energy and the friction's springs are the law's times weight
   double weight = 1;
-  // how fast depth changes along normal (>= 1; a face patch's point that
-  // slides along an edge: docs/geometry.md): depth_rate is slope times the
-  // approach speed along normal, and force slope times the law's times
-  // weight, the force whose work the elastic energy stores
-  double slope = 1;
   double impact_velocity = 0;  // the law's v0 (floored; Episode::max_approach_velocity)
   double max_approach = 0;     // the episode's largest d' so far, this one included
   double touch_velocity = 0;   // touch: d' at the step before first touch

@@ -144,8 +144,7 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
     point.depth = -x[2];
     point.weight = patch.weight[c];
     const Vector3 world = Add(Add(Scale(u, g[0]), Scale(v, g[1])), Scale(n, g[2]));
-    point.slope = geometry::Norm(world);
-    point.normal = Scale(world, towards_b / point.slope);
+    point.gradient = Scale(world, towards_b);
   }
   out->count = patch.count;
 }
@@ -166,7 +165,7 @@ void EdgeContact(const OrientedBox& a, int i, const OrientedBox& b, int j, const
   geometry::ClosestOnEdges(ea, Axis(a, i), a.half[i], eb, Axis(b, j), b.half[j], &pa, &pb);
   const double depth = Dot(Sub(pa, pb), normal);
   if (!(depth > -margin)) return;
-  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal, 1.0};
+  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal};
   out->count = 1;
 }
 

@@ -73,17 +73,14 @@ struct BoxPoint {
   // times weight (a face patch's points: geometry/patch.h, PatchBelow; an
   // edge contact's one point: 1)
   double weight = 1;
-  // The gradient of depth with respect to a displacement of b relative to a
-  // at pos is -slope * normal (unit, from a towards b; slope >= 1): the
-  // force whose work the elastic energy weight * U(depth) stores pushes b
-  // along normal with slope times the law's force times weight, and depth
-  // changes at slope times the approach speed along normal. A face patch's
-  // point that slides along an edge or lies on the reference face's corner
-  // has a normal turned from the contact's (geometry/patch.h, ClipVertex);
-  // an incident corner and an edge contact's point have the contact's, and
-  // slope 1.
-  Vector3 normal{};
-  double slope = 1;
+  // How depth changes with a displacement x of b relative to a at pos:
+  // -gradient . x (world frame; its component along the contact's normal is
+  // 1). The force whose work the elastic energy weight * U(depth) stores
+  // pushes b along gradient with the law's force times weight. An incident
+  // corner and an edge contact's point: the contact's normal. A face patch's
+  // point that slides along an incident edge or lies on the reference face's
+  // corner: turned from it, and longer (geometry/patch.h, ClipVertex).
+  Vector3 gradient{};
 };
 
 struct BoxBoxContact {

@@ -166,8 +166,7 @@ bool FaceContact(const Hull& ref, int k, const Hull& inc, double margin, double 
     point.depth = -x[2];
     point.weight = patch.weight[c];
     const Vector3 world = Add(Add(Scale(u, g[0]), Scale(v, g[1])), Scale(face.normal, g[2]));
-    point.slope = Norm(world);
-    point.normal = Scale(world, towards_b / point.slope);
+    point.gradient = Scale(world, towards_b);
   }
   out->count = patch.count;
   return true;
@@ -210,7 +209,7 @@ void EdgeContact(const Hull& a, int i, const Hull& b, int j, const Vector3& norm
   geometry::ClosestOnEdges(ca, da, ha, cb, db, hb, &pa, &pb);
   const double depth = Dot(Sub(pa, pb), normal);
   if (!(depth > -margin)) return;
-  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal, 1.0};
+  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal};
   out->count = 1;
 }
 

@@ -62,43 +62,43 @@ void PolytopeOf(const mjModel* m, const mjData* d, int g, Polytope* p) {
   }
 }
 
-// The contact's points as MuJoCo's: dist, pos, frame[0..2] the point's
-// normal; their weights and slopes in weight and slope (when given).
+// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal;
+// their weights and depth gradients in weight and gradient (when given).
 template <typename Contact>
-int Write(const Contact& contact, mjContact* out, double* weight, double* slope) {
+int Write(const Contact& contact, mjContact* out, double* weight, mjtNum* gradient) {
   for (int i = 0; i < contact.count; ++i) {
     const BoxPoint& point = contact.points[i];
     if (weight) weight[i] = point.weight;
-    if (slope) slope[i] = point.slope;
+    if (gradient) std::copy(point.gradient.begin(), point.gradient.end(), gradient + 3 * i);
     mjContact& c = out[i];
     std::memset(&c, 0, sizeof(c));
     c.dist = -point.depth;
     std::copy(point.pos.begin(), point.pos.end(), c.pos);
-    std::copy(point.normal.begin(), point.normal.end(), c.frame);
+    std::copy(contact.normal.begin(), contact.normal.end(), c.frame);
   }
   return contact.count;
 }
 
 // Two polytopes, or -1 when the kernel declines (degenerate hull).
 int CollidePolytopePair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin,
-                        mjContact* out, double* weight, double* slope) {
+                        mjContact* out, double* weight, mjtNum* gradient) {
   Polytope a, b;
   PolytopeOf(m, d, g0, &a);
   PolytopeOf(m, d, g1, &b);
   const PolytopeContact contact = CollidePolytopes(a, b, margin);
   if (contact.feature == PolytopeFeature::kUnsupported) return -1;
-  return Write(contact, out, weight, slope);
+  return Write(contact, out, weight, gradient);
 }
 
 }  // namespace
 
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out,
-            double* weight, double* slope) {
+            double* weight, mjtNum* gradient) {
   switch (NarrowphaseOf(m, g0, g1)) {
     case Narrowphase::kBoxBox:
-      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out, weight, slope);
+      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out, weight, gradient);
     case Narrowphase::kPolytope:
-      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out, weight, slope);
+      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out, weight, gradient);
           count >= 0) {
         return count;
       }
@@ -107,7 +107,7 @@ int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mj
   }
   const int count = mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]](m, d, out, g0, g1, margin);
   if (weight) std::fill(weight, weight + count, 1.0);
-  if (slope) std::fill(slope, slope + count, 1.0);
+  for (int i = 0; gradient && i < count; ++i) std::copy(out[i].frame, out[i].frame + 3, gradient + 3 * i);
   return count;
 }
 
