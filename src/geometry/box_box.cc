@@ -114,17 +114,19 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
                               Add(g, Sub(p, q))};
 
   // its corners in the reference face's frame, clipped to the face's sides
-  std::array<Vector3, geometry::kClipCapacity> poly, next;
+  std::array<geometry::ClipVertex, geometry::kClipCapacity> poly, next;
   for (int c = 0; c < 4; ++c) {
     const Vector3 r = Sub(corners[c], f);
-    poly[c] = {Dot(r, u), Dot(r, v), Dot(r, n)};
+    poly[c] = {{Dot(r, u), Dot(r, v), Dot(r, n)}};
   }
+  const Vector3 m = Scale(Axis(inc, j), side);
+  const Vector3 incident_normal = {Dot(m, u), Dot(m, v), Dot(m, n)};
   int count = 4;
   const double bounds[2] = {hu, hv};
   for (int c = 0; c < 2; ++c) {
     for (const double sign : {1.0, -1.0}) {
       count = geometry::Clip(poly.data(), count, c == 0 ? sign : 0.0, c == 1 ? sign : 0.0,
-                             bounds[c], next.data());
+                             bounds[c], 2 * c + (sign > 0 ? 0 : 1), incident_normal, next.data());
       std::swap(poly, next);
     }
   }
@@ -132,12 +134,17 @@ void FaceContact(const OrientedBox& ref, int k, const Vector3& n, const Oriented
   // the vertices below the reference plane (height -depth), midway points
   const geometry::Patch patch =
       geometry::PatchBelow(poly.data(), count, margin, merge, kMaxBoxBoxPoints);
+  // the contact's normal is n (a's face) or -n (b's)
+  const double towards_b = Dot(n, out->normal) > 0 ? 1.0 : -1.0;
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
+    const Vector3& g = patch.gradient[c];
     BoxPoint& point = out->points[c];
     point.pos = Add(Add(f, Add(Scale(u, x[0]), Scale(v, x[1]))), Scale(n, 0.5 * x[2]));
     point.depth = -x[2];
     point.weight = patch.weight[c];
+    const Vector3 world = Add(Add(Scale(u, g[0]), Scale(v, g[1])), Scale(n, g[2]));
+    point.gradient = Scale(world, towards_b);
   }
   out->count = patch.count;
 }
@@ -158,7 +165,7 @@ void EdgeContact(const OrientedBox& a, int i, const OrientedBox& b, int j, const
   geometry::ClosestOnEdges(ea, Axis(a, i), a.half[i], eb, Axis(b, j), b.half[j], &pa, &pb);
   const double depth = Dot(Sub(pa, pb), normal);
   if (!(depth > -margin)) return;
-  out->points[0] = {Scale(Add(pa, pb), 0.5), depth};
+  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal};
   out->count = 1;
 }
 

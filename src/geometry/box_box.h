@@ -68,11 +68,19 @@ enum class BoxFeature {
 
 struct BoxPoint {
   Vector3 pos{};     // midway between the surfaces, world frame (m)
-  double depth = 0;  // along the normal, > 0 overlapping (m)
+  double depth = 0;  // along the contact's normal, > 0 overlapping (m)
   // the point's share of the contact's force: the law's force at depth
   // times weight (a face patch's points: geometry/patch.h, PatchBelow; an
   // edge contact's one point: 1)
   double weight = 1;
+  // How depth changes with a displacement x of b relative to a at pos:
+  // -gradient . x (world frame; its component along the contact's normal is
+  // 1). The force whose work the elastic energy weight * U(depth) stores
+  // pushes b along gradient with the law's force times weight. An incident
+  // corner and an edge contact's point: the contact's normal. A face patch's
+  // point that slides along an incident edge or lies on the reference face's
+  // corner: turned from it, and longer (geometry/patch.h, ClipVertex).
+  Vector3 gradient{};
 };
 
 struct BoxBoxContact {

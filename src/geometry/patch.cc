@@ -7,16 +7,29 @@
 namespace contactlaws {
 namespace geometry {
 
-int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out) {
+int Clip(const ClipVertex* in, int n, double a, double b, double h, int side,
+         const Vector3& incident_normal, ClipVertex* out) {
+  const uint64_t bit = uint64_t{1} << side;
   int m = 0;
   for (int k = 0; k < n && m < kClipCapacity - 1; ++k) {
-    const Vector3& p = in[k];
-    const Vector3& q = in[(k + 1) % n];
-    const double dp = a * p[0] + b * p[1] - h;
-    const double dq = a * q[0] + b * q[1] - h;
+    const ClipVertex& p = in[k];
+    const ClipVertex& q = in[(k + 1) % n];
+    const double dp = a * p.p[0] + b * p.p[1] - h;
+    const double dq = a * q.p[0] + b * q.p[1] - h;
     if (dp <= 0) out[m++] = p;
     if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
-      out[m++] = geometry::Add(p, Scale(Sub(q, p), dp / (dp - dq)));
+      ClipVertex& x = out[m++];
+      x.p = geometry::Add(p.p, Scale(Sub(q.p, p.p), dp / (dp - dq)));
+      const uint64_t along = p.sides & q.sides;
+      x.sides = along | bit;
+      if (along != 0) {
+        // p q runs along an earlier side: x is the reference face's corner
+        x.gradient = Scale(incident_normal, 1 / incident_normal[2]);
+      } else {
+        // p q is part of an incident edge: s . e = dp - dq, nonzero here
+        const double rise = (q.p[2] - p.p[2]) / (dq - dp);
+        x.gradient = {-a * rise, -b * rise, 1};
+      }
     }
   }
   return m;
@@ -26,18 +39,22 @@ namespace {
 
 // Keeps the part of polygon in (n vertices) at height <= level; writes it to
 // out, returns its count.
-int ClipHeight(const Vector3* in, int n, double level, Vector3* out) {
+int ClipHeight(const ClipVertex* in, int n, double level, ClipVertex* out) {
   int m = 0;
   for (int k = 0; k < n && m < kClipCapacity - 1; ++k) {
-    const Vector3& p = in[k];
-    const Vector3& q = in[(k + 1) % n];
-    const double dp = p[2] - level;
-    const double dq = q[2] - level;
+    const ClipVertex& p = in[k];
+    const ClipVertex& q = in[(k + 1) % n];
+    const double dp = p.p[2] - level;
+    const double dq = q.p[2] - level;
     if (dp <= 0) out[m++] = p;
     if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
       // on the plane by construction: at zero depth, not round-off below
-      out[m] = geometry::Add(p, Scale(Sub(q, p), dp / (dp - dq)));
-      out[m++][2] = level;
+      // (where no force acts: the normal's gradient)
+      ClipVertex& x = out[m++];
+      x.p = geometry::Add(p.p, Scale(Sub(q.p, p.p), dp / (dp - dq)));
+      x.p[2] = level;
+      x.gradient = {0, 0, 1};
+      x.sides = 0;
     }
   }
   return m;
@@ -45,22 +62,33 @@ int ClipHeight(const Vector3* in, int n, double level, Vector3* out) {
 
 // Merges each vertex closer than merge to the last one kept (around the
 // polygon, the last against the first too) into it, the deeper of the two
-// kept; returns the count left.
-int MergeClose(Vector3* p, int n, double merge) {
-  const auto close = [&](const Vector3& x, const Vector3& y) {
-    const Vector3 d = Sub(x, y);
+// kept with the gradient nearer the normal of the two (a corner split by
+// round-off across a side plane: the split on an edge nearly along the side
+// has a large sideways gradient that the corner does not); returns the count
+// left.
+int MergeClose(ClipVertex* p, int n, double merge) {
+  const auto close = [&](const ClipVertex& x, const ClipVertex& y) {
+    const Vector3 d = Sub(x.p, y.p);
     return Dot(d, d) < merge * merge;
+  };
+  const auto into = [](const ClipVertex& x, ClipVertex* kept) {
+    const Vector3 gradient =
+        Dot(x.gradient, x.gradient) < Dot(kept->gradient, kept->gradient) ? x.gradient
+                                                                          : kept->gradient;
+    if (x.p[2] < kept->p[2]) kept->p = x.p;
+    kept->gradient = gradient;
+    kept->sides |= x.sides;
   };
   int m = 0;
   for (int k = 0; k < n; ++k) {
     if (m > 0 && close(p[k], p[m - 1])) {
-      if (p[k][2] < p[m - 1][2]) p[m - 1] = p[k];
+      into(p[k], &p[m - 1]);
       continue;
     }
     p[m++] = p[k];
   }
   while (m > 1 && close(p[m - 1], p[0])) {
-    if (p[m - 1][2] < p[0][2]) p[0] = p[m - 1];
+    into(p[m - 1], &p[0]);
     --m;
   }
   return m;
@@ -69,12 +97,12 @@ int MergeClose(Vector3* p, int n, double merge) {
 // Each vertex's weight: kPatchWeight times its exterior angle (the turn
 // between its two edges, in the plane: u, v) over a full turn; equal shares
 // on a polygon of no extent.
-void AngleWeights(const Vector3* p, int n, double* weight) {
+void AngleWeights(const ClipVertex* p, int n, double* weight) {
   double total = 0;
   for (int k = 0; k < n; ++k) {
-    const Vector3& a = p[(k + n - 1) % n];
-    const Vector3& b = p[k];
-    const Vector3& c = p[(k + 1) % n];
+    const Vector3& a = p[(k + n - 1) % n].p;
+    const Vector3& b = p[k].p;
+    const Vector3& c = p[(k + 1) % n].p;
     const double eu = b[0] - a[0], ev = b[1] - a[1];
     const double fu = c[0] - b[0], fv = c[1] - b[1];
     // zero for a vertex on a straight edge or one of a zero-length edge
@@ -103,6 +131,7 @@ void Order(Patch* patch, int from, int to) {
   for (int k = from; k < to; ++k) {
     patch->p[k] = copy.p[order[k]];
     patch->weight[k] = copy.weight[order[k]];
+    patch->gradient[k] = copy.gradient[order[k]];
   }
 }
 
@@ -111,6 +140,8 @@ void Remove(Patch* patch, int k) {
   std::copy(patch->p.begin() + k + 1, patch->p.begin() + patch->count, patch->p.begin() + k);
   std::copy(patch->weight.begin() + k + 1, patch->weight.begin() + patch->count,
             patch->weight.begin() + k);
+  std::copy(patch->gradient.begin() + k + 1, patch->gradient.begin() + patch->count,
+            patch->gradient.begin() + k);
   --patch->count;
 }
 
@@ -138,16 +169,18 @@ void Reduce(Patch* patch, int max_points) {
 
 }  // namespace
 
-Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points) {
+Patch PatchBelow(const ClipVertex* clipped, int count, double margin, double merge,
+                 int max_points) {
   Patch patch;
-  std::array<Vector3, kClipCapacity> poly;
+  std::array<ClipVertex, kClipCapacity> poly;
   std::array<double, kClipCapacity> weight;
   // in contact: the polygon below the plane
   int n = MergeClose(poly.data(), ClipHeight(clipped, count, 0.0, poly.data()), merge);
   AngleWeights(poly.data(), n, weight.data());
   for (int k = 0; k < n; ++k) {
-    if (!(poly[k][2] < 0)) continue;
-    patch.p[patch.count] = poly[k];
+    if (!(poly[k].p[2] < 0)) continue;
+    patch.p[patch.count] = poly[k].p;
+    patch.gradient[patch.count] = poly[k].gradient;
     patch.weight[patch.count++] = weight[k];
   }
   Reduce(&patch, max_points);
@@ -162,12 +195,13 @@ Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge,
   std::array<int, kClipCapacity> near;
   int near_count = 0;
   for (int k = 0; k < n; ++k) {
-    if (poly[k][2] >= 0 && poly[k][2] < margin) near[near_count++] = k;
+    if (poly[k].p[2] >= 0 && poly[k].p[2] < margin) near[near_count++] = k;
   }
   std::sort(near.begin(), near.begin() + near_count,
-            [&](int x, int y) { return poly[x][2] < poly[y][2]; });
+            [&](int x, int y) { return poly[x].p[2] < poly[y].p[2]; });
   for (int k = 0; k < near_count && patch.count < max_points; ++k) {
-    patch.p[patch.count] = poly[near[k]];
+    patch.p[patch.count] = poly[near[k]].p;
+    patch.gradient[patch.count] = poly[near[k]].gradient;
     patch.weight[patch.count++] = weight[near[k]];
   }
   Order(&patch, deep, patch.count);

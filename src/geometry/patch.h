@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace contactlaws {
 
@@ -74,9 +75,29 @@ constexpr double kAxisTieFraction = 1e-11;
 // input could add more, and is cut at the capacity.
 constexpr int kClipCapacity = 64;
 
-// Keeps the part of polygon in (n vertices, in a reference face's frame: u,
-// v, height) where a * u + b * v <= h; writes it to out, returns its count.
-int Clip(const Vector3* in, int n, double a, double b, double h, Vector3* out);
+// A vertex of a clipped polygon in a reference face's frame (u, v, height
+// along the normal), with the gradient of its height: how the height moves
+// with a displacement of the incident face relative to the reference face
+// (in the same frame), its height component 1. The force that is the
+// gradient of a point's elastic energy is along it, so a force along the
+// normal alone does work the energy does not store where the gradient has a
+// sideways part. An incident corner is a point of the incident face: (0, 0,
+// 1). A vertex where an incident edge e crosses a side plane s slides along
+// the edge as the faces move: (0, 0, 1) - s e_n / (s . e), perpendicular to
+// the edge (the common normal of the edge and the reference face's side).
+// A reference face's corner lies on the incident plane, normal m (any
+// length): m / m_n, perpendicular to the incident face.
+struct ClipVertex {
+  Vector3 p{};
+  Vector3 gradient{0, 0, 1};
+  uint64_t sides = 0;  // the reference face's sides (Clip's side) it lies on, a bit each
+};
+
+// Keeps the part of polygon in (n vertices) where a * u + b * v <= h, the
+// reference face's side number side (< 64) of an incident face of normal
+// incident_normal (in the same frame); writes it to out, returns its count.
+int Clip(const ClipVertex* in, int n, double a, double b, double h, int side,
+         const Vector3& incident_normal, ClipVertex* out);
 
 // What a face patch's points carry together: the force of this many points
 // at its depth. A box resting flat on a face carries its load on 4 points
@@ -89,6 +110,7 @@ constexpr double kPatchWeight = 4;
 struct Patch {
   std::array<Vector3, kClipCapacity> p{};
   std::array<double, kClipCapacity> weight{};
+  std::array<Vector3, kClipCapacity> gradient{};  // of its height (ClipVertex)
   int count = 0;
 };
 
@@ -112,7 +134,7 @@ struct Patch {
 // that polygon), at most max_points (a larger patch gives the lightest
 // point's weight to its nearest), each kind ordered by angle about its
 // centre from the u axis.
-Patch PatchBelow(const Vector3* clipped, int count, double margin, double merge, int max_points);
+Patch PatchBelow(const ClipVertex* clipped, int count, double margin, double merge, int max_points);
 
 // The closest points of two edges, each given by its centre, unit direction
 // and half length, whose directions are not parallel (1 - (da.db)^2 > 0).

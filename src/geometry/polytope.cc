@@ -137,25 +137,36 @@ bool FaceContact(const Hull& ref, int k, const Hull& inc, double margin, double 
   for (int g = 1; g < inc.face_count; ++g) {
     if (Dot(inc.faces[g].normal, face.normal) < Dot(inc.faces[j].normal, face.normal)) j = g;
   }
-  std::array<Vector3, geometry::kClipCapacity> side, poly, next;
+  std::array<Vector3, geometry::kClipCapacity> side, corners;
+  std::array<geometry::ClipVertex, geometry::kClipCapacity> poly, next;
   const int sides = FacePolygon(ref, face, f, u, v, face.normal, side.data());
-  int count = FacePolygon(inc, inc.faces[j], f, u, v, face.normal, poly.data());
+  int count = FacePolygon(inc, inc.faces[j], f, u, v, face.normal, corners.data());
   if (sides < 0 || count < 0) return false;
+  for (int c = 0; c < count; ++c) poly[c] = {corners[c]};
+  const Vector3& m = inc.faces[j].normal;
+  const Vector3 incident_normal = {Dot(m, u), Dot(m, v), Dot(m, face.normal)};
   for (int s = 0; s < sides && count > 0; ++s) {
     const Vector3& p = side[s];
     const Vector3& q = side[(s + 1) % sides];
     const double a = q[1] - p[1], b = p[0] - q[0];  // outward, counterclockwise
-    count = geometry::Clip(poly.data(), count, a, b, a * p[0] + b * p[1], next.data());
+    count = geometry::Clip(poly.data(), count, a, b, a * p[0] + b * p[1], s, incident_normal,
+                           next.data());
     std::swap(poly, next);
   }
   const geometry::Patch patch =
       geometry::PatchBelow(poly.data(), count, margin, merge, kMaxPolytopePoints);
+  // the contact's normal is the face's (a's) or its opposite (b's)
+  const double towards_b = Dot(face.normal, out->normal) > 0 ? 1.0 : -1.0;
   for (int c = 0; c < patch.count; ++c) {
     const Vector3& x = patch.p[c];
+    const Vector3& g = patch.gradient[c];
     const Vector3 in_plane = Add(f, Add(Scale(u, x[0]), Scale(v, x[1])));
-    out->points[c].pos = Add(in_plane, Scale(face.normal, 0.5 * x[2]));
-    out->points[c].depth = -x[2];
-    out->points[c].weight = patch.weight[c];
+    BoxPoint& point = out->points[c];
+    point.pos = Add(in_plane, Scale(face.normal, 0.5 * x[2]));
+    point.depth = -x[2];
+    point.weight = patch.weight[c];
+    const Vector3 world = Add(Add(Scale(u, g[0]), Scale(v, g[1])), Scale(face.normal, g[2]));
+    point.gradient = Scale(world, towards_b);
   }
   out->count = patch.count;
   return true;
@@ -198,7 +209,7 @@ void EdgeContact(const Hull& a, int i, const Hull& b, int j, const Vector3& norm
   geometry::ClosestOnEdges(ca, da, ha, cb, db, hb, &pa, &pb);
   const double depth = Dot(Sub(pa, pb), normal);
   if (!(depth > -margin)) return;
-  out->points[0] = {Scale(Add(pa, pb), 0.5), depth};
+  out->points[0] = {Scale(Add(pa, pb), 0.5), depth, 1.0, normal};
   out->count = 1;
 }
 

@@ -62,16 +62,18 @@ void PolytopeOf(const mjModel* m, const mjData* d, int g, Polytope* p) {
   }
 }
 
-// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal; their
-// weights in weight (when given).
+// The contact's points as MuJoCo's: dist, pos, frame[0..2] the normal;
+// their weights and depth gradients in weight and gradient (when given).
 template <typename Contact>
-int Write(const Contact& contact, mjContact* out, double* weight) {
+int Write(const Contact& contact, mjContact* out, double* weight, mjtNum* gradient) {
   for (int i = 0; i < contact.count; ++i) {
-    if (weight) weight[i] = contact.points[i].weight;
+    const BoxPoint& point = contact.points[i];
+    if (weight) weight[i] = point.weight;
+    if (gradient) std::copy(point.gradient.begin(), point.gradient.end(), gradient + 3 * i);
     mjContact& c = out[i];
     std::memset(&c, 0, sizeof(c));
-    c.dist = -contact.points[i].depth;
-    std::copy(contact.points[i].pos.begin(), contact.points[i].pos.end(), c.pos);
+    c.dist = -point.depth;
+    std::copy(point.pos.begin(), point.pos.end(), c.pos);
     std::copy(contact.normal.begin(), contact.normal.end(), c.frame);
   }
   return contact.count;
@@ -79,24 +81,25 @@ int Write(const Contact& contact, mjContact* out, double* weight) {
 
 // Two polytopes, or -1 when the kernel declines (degenerate hull).
 int CollidePolytopePair(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin,
-                        mjContact* out, double* weight) {
+                        mjContact* out, double* weight, mjtNum* gradient) {
   Polytope a, b;
   PolytopeOf(m, d, g0, &a);
   PolytopeOf(m, d, g1, &b);
   const PolytopeContact contact = CollidePolytopes(a, b, margin);
   if (contact.feature == PolytopeFeature::kUnsupported) return -1;
-  return Write(contact, out, weight);
+  return Write(contact, out, weight, gradient);
 }
 
 }  // namespace
 
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out,
-            double* weight) {
+            double* weight, mjtNum* gradient) {
   switch (NarrowphaseOf(m, g0, g1)) {
     case Narrowphase::kBoxBox:
-      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out, weight);
+      return Write(CollideBoxes(BoxOf(m, d, g0), BoxOf(m, d, g1), margin), out, weight, gradient);
     case Narrowphase::kPolytope:
-      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out, weight); count >= 0) {
+      if (const int count = CollidePolytopePair(m, d, g0, g1, margin, out, weight, gradient);
+          count >= 0) {
         return count;
       }
       break;
@@ -104,6 +107,7 @@ int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mj
   }
   const int count = mjCOLLISIONFUNC[m->geom_type[g0]][m->geom_type[g1]](m, d, out, g0, g1, margin);
   if (weight) std::fill(weight, weight + count, 1.0);
+  for (int i = 0; gradient && i < count; ++i) std::copy(out[i].frame, out[i].frame + 3, gradient + 3 * i);
   return count;
 }
 

@@ -22,10 +22,14 @@ namespace contactlaws {
 // surfaces, frame[0..2] the unit normal from g0 towards g1. With weight (room
 // for mjMAXCONPAIR), each contact's share of the force (geometry/box_box.h:
 // a face patch's points are weighted; MuJoCo's contacts and an edge
-// contact's point weigh 1): the law's force at its depth times weight.
-// Allocates nothing.
+// contact's point weigh 1): the law's force at its depth times weight. With
+// gradient (room for 3 mjMAXCONPAIR), each depth's gradient
+// (BoxPoint::gradient: turned from frame[0..2] and longer at a face patch's
+// point that slides along an edge; frame[0..2] for the others): the depth
+// changes at its dot product with the approach velocity, and the force
+// that the elastic energy stores acts along it. Allocates nothing.
 int Collide(const mjModel* m, const mjData* d, int g0, int g1, mjtNum margin, mjContact* out,
-            double* weight = nullptr);
+            double* weight = nullptr, mjtNum* gradient = nullptr);
 
 // Room for Collide's output, left uninitialized: Collide writes the contacts
 // it counts, and only those are read (zeroing mjMAXCONPAIR contacts is 7

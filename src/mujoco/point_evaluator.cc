@@ -12,7 +12,10 @@
 namespace contactlaws::internal {
 
 PointEvaluator::PointEvaluator(const ContactModel& model)
-    : model_(model), contacts_(MakeContactBuffer()), weights_(mjMAXCONPAIR) {
+    : model_(model),
+      contacts_(MakeContactBuffer()),
+      weights_(mjMAXCONPAIR),
+      gradients_(3 * mjMAXCONPAIR) {
   for (const GeomPair& pair : model.pairs()) {
     reads_mass_.push_back(ReadsEffectiveMass(pair.params));
   }
@@ -43,7 +46,8 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     // is penetration, frame[0..2] the normal from geom[0] to geom[1], pos
     // midway between the surfaces
     const int count =
-        std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data()), pair.slots);
+        std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data(), gradients_.data()),
+                 pair.slots);
     uint64_t taken = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
@@ -53,12 +57,15 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
       }
       // the point is made where it is kept (it is large: no copy)
       PointEvaluation& e = latest_.emplace_back();
-      EvaluatePoint(d, p, con, weights_[i], episodes, start, &taken, &e);
+      const mjtNum* gradient = gradients_.data() + 3 * i;
+      EvaluatePoint(d, p, con, weights_[i], gradient, episodes, start, &taken, &e);
 
-      // equal and opposite, at the same point: geom[1] pushed along +normal
+      // equal and opposite, at the same point: geom[1] pushed along the
+      // depth's gradient (+normal but at a face patch's sliding points),
+      // its component along the normal the law's force
       mjtNum push[3];
       for (int b = 0; inner == nullptr && b < 2; ++b) {
-        vec3::Scale(push, con.frame, b == 1 ? e.force : -e.force);
+        vec3::Scale(push, gradient, b == 1 ? e.force : -e.force);
         AddPointForce(m, d, pair.body[b], con.pos, push, d->qfrc_passive);
       }
       AddFriction(model_, d, episodes, pair, con, &e,
@@ -68,8 +75,9 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
 }
 
 void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
-                                   const EpisodeLog& episodes, const StepStartVelocities& start,
-                                   uint64_t* taken, PointEvaluation* out) const {
+                                   const mjtNum gradient[3], const EpisodeLog& episodes,
+                                   const StepStartVelocities& start, uint64_t* taken,
+                                   PointEvaluation* out) const {
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
   PointEvaluation& e = *out;
@@ -81,10 +89,14 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
   // the slip before its projection into the tangent plane (SlipAndSpin):
   // the same two velocities, computed once
   vec3::Sub(e.slip, v1, v0);
+  // the depth's rate along its gradient (the normal's but at a face patch's
+  // sliding points: narrowphase.h), which the rates, masses and the touch
+  // below are taken along
+  e.depth_rate = -vec3::Dot(e.slip, gradient);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
   if (reads_mass_[p]) {
-    state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, normal);
+    state.effective_mass = EffectiveMass(model_.model(), d, pair, con.pos, gradient);
   }
   const int open = e.episode;
   e.touch = open < 0;
@@ -92,7 +104,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
     // v0: the rate at the step before first touch, which no force has slowed
     e.at_start = !start.has_previous();
     e.touch_velocity = start.has_previous()
-                           ? ApproachRate(model_, d, pair, con.pos, normal, start.previous(),
+                           ? ApproachRate(model_, d, pair, con.pos, gradient, start.previous(),
                                           start.previous_time())
                            : e.depth_rate;
     state.impact_velocity = std::max(e.touch_velocity, pair.params.min_impact_velocity);

@@ -48,9 +48,10 @@ class PointEvaluator {
 
  private:
   // The normal law at a contact point of pair p (narrowphase output con, of
-  // weight), into *e (default-constructed); taken: the pair's open episodes already
-  // matched in this evaluation.
+  // weight and depth gradient), into *e (default-constructed); taken: the
+  // pair's open episodes already matched in this evaluation.
   void EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
+                     const mjtNum gradient[3],
                      const EpisodeLog& episodes,
                      const StepStartVelocities& start, uint64_t* taken, PointEvaluation* e) const;
 
@@ -60,6 +61,7 @@ class PointEvaluator {
   std::vector<char> reads_mass_;
   ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
   std::vector<double> weights_;  // its points' weights, mjMAXCONPAIR
+  std::vector<mjtNum> gradients_;  // its points' depth gradients, 3 mjMAXCONPAIR
   std::vector<PointEvaluation> latest_;
   double latest_time_ = 0;
 };
