@@ -677,6 +677,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   }
   impulse_.assign(rows, 0.0);
   impulse_sum_.assign(rows, 0.0);
+  rest_shift_.assign(m->nv, 0.0);
   rates_.clear();
 
   double t = 0;  // since the step's start, s
@@ -812,6 +813,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     x_start_ = x;
     rate_start_ = rate;
     Rk4SubStep(t, step, force, contact_v0, &x, &rate);
+    RestingShift(m, step, acting, &x);
     ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
@@ -861,6 +863,39 @@ FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const doubl
   *stiffness = in.stiffness;
   if (damping) *damping = in.damping + params.viscous;
   return EvaluateFriction(params, in);
+}
+
+void ContactStepper::RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
+                                  std::vector<double>* x) {
+  const int n = static_cast<int>(points_.size());
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    if (!acting[i]) continue;
+    if (!resting_[i]) return;
+    any = true;
+  }
+  if (!any) return;
+  // the dofs of the resting points' trees: their acceleration at the
+  // sub-step's start, a_free - M^-1 J^T f0 (Rk4SubStep's first stage left
+  // M^-1 J^T f0 in stage_spread_), over step^2 / 2 more
+  root_marked_.resize(m->nbody, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!acting[i]) continue;
+    for (const int body : model_.pairs()[points_[i].pair].body) root_marked_[m->body_rootid[body]] = 1;
+  }
+  std::vector<double>& shift = spread_rate_;
+  shift.assign(nv_, 0.0);
+  const double* u = stage_spread_.data();
+  for (int k = 0; k < nv_; ++k) {
+    if (root_marked_[m->body_rootid[m->dof_bodyid[k]]]) {
+      shift[k] = 0.5 * step * step * (a_free_[k] - u[k]);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (const int body : model_.pairs()[points_[i].pair].body) root_marked_[m->body_rootid[body]] = 0;
+  }
+  for (int k = 0; k < nv_; ++k) rest_shift_[k] += shift[k];
+  for (int r = 0; r < rows_; ++r) (*x)[r] += j_rows_.Dot(r, shift.data());
 }
 
 void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
@@ -1198,7 +1233,11 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][i] = points_[i].weight *
                   EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
       }
-      if (!acting || !(d[s][i] > 0)) continue;
+      // (a resting point's force is held whatever the stage's depth, and
+      // so is its implicit friction: the stages' predicted depths, from
+      // forces held over a long sub-step, can leave the contact)
+      const bool held = acting && resting_[i];
+      if (!held && (!acting || !(d[s][i] > 0))) continue;
       // the friction at the stage's normal force, against the sub-sample's
       // memory
       const int t = tangent_row_[i];
@@ -1209,6 +1248,7 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][t + 1] = start_force[t + 1];
         continue;
       }
+      if (!(d[s][i] > 0)) continue;
       double slip[3], stiffness;
       const FrictionOutput out = Friction(i, f[s][i], v0[i], d[s], r[s], slip, &stiffness);
       for (int j = 0; j < 2; ++j) {
@@ -1253,7 +1293,7 @@ void ContactStepper::CorrectPositions(const mjModel* m, mjData* d) const {
   const double c = m->opt.integrator == mjINT_RK4 ? 0.5 : 1.0;
   const int nv = m->nv;
   std::vector<double> shift(nv);
-  for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k];
+  for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k] + rest_shift_[k];
   for (int i = 0; i < static_cast<int>(impulse_.size()); ++i) {
     minv_jt_rows_.AddTo(i, -(impulse_sum_[i] - c * h_ * impulse_[i]), shift.data());
   }

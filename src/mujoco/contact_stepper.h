@@ -141,6 +141,11 @@ class ContactStepper {
   void ImplicitRows(double step, const std::vector<char>& acting,
                     const std::vector<double>& start_force, const std::vector<double>& v0,
                     std::vector<double>* x, std::vector<double>* rate);
+  // Before ImplicitRows, in a sub-step whose points in contact all rest:
+  // moves x (and rest_shift_) by the displacement that makes the sub-step
+  // backward Euler's, x1 = x0 + step x1', in the dofs of their trees.
+  void RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
+                    std::vector<double>* x);
   // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L in the rows
   // (SolveInRows), or, with z = M^-1 J_H^T delta_H the held rows' velocity
@@ -264,6 +269,7 @@ class ContactStepper {
   std::vector<double> impulse_;    // per row: P at the step's end, N s
   std::vector<double> impulse_sum_;  // per row: delta * sum_k P_k, N s^2
   std::vector<double> force_;      // nv: the generalized force added
+  std::vector<double> rest_shift_; // nv: RestingShift's displacement over the step
   std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
   std::vector<int> implicit_rows_; // ImplicitRows' rows

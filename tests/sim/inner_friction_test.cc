@@ -161,6 +161,52 @@ TEST_F(InnerFrictionTest, ADieWithFrictionComesToRestWithoutGainingEnergy) {
   EXPECT_EQ(sim.contacts().last_substeps(), 1);
 }
 
+// A die let go just above the depth its four corners carry it at: it comes
+// to rest there, and then each step is one backward-Euler sub-step
+// (docs/timestep.md, "Contacts at rest"). Its corners' vibration (omega h =
+// 17) is not resolved by one sub-step: a resting step that took the start's
+// unbalanced force over the step exactly (h^2 / 2) and only its change by
+// backward Euler (h^2) left the corners a rate of h a / 2 (a: that
+// imbalance), whose carry over the next step, h^2 a / 2, was above the
+// resting rule's 10% of the depth for any imbalance above 0.1% of g: the
+// steps then went 470 sub-steps and 1 in turn to the end (600,000 in 5 s).
+TEST_F(InnerFrictionTest, ADieLetGoAboveItsRestingDepthSettlesIntoOneSubStepAStep) {
+  constexpr double kLoad = 0.008 * kGravity / 4;  // N, per corner
+  constexpr double kAbove = 5e-7;                 // m, above the surface at rest
+  constexpr double kStiffness = 2e8;             // N/m^1.5
+  constexpr double kSettledHeight = 1e-12;        // m
+  constexpr double kSettledSpeed = 1e-9;          // m/s
+  // K d^1.5 carries the load at rest
+  const double depth = std::pow(kLoad / kStiffness, 2.0 / 3.0);
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="die" pos="0 0 {}"><freejoint/>
+      <geom name="die" type="box" size="0.01 0.01 0.01" mass="0.008"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:die" data="geom1=die geom2=floor law=lankarani-nikravesh
+    restitution=0.6 stiffness={} friction=coulomb mu=0.4"/></custom>
+</mujoco>)",
+                                      kMujocoStep, 0.01 - depth + kAbove, kStiffness);
+  Simulation& sim = MakeSimulation(xml, InnerSteps());
+  // its first bounces (0.5 s), then 2 s at rest
+  EXPECT_LT(testing::WorstMechanicalRise(sim, 250), kEnergyRiseTolerance);
+  int substeps = 0;
+  constexpr int kSteps = 1000;
+  for (int step = 0; step < kSteps; ++step) {
+    sim.Step();
+    substeps += sim.contacts().last_substeps();
+  }
+  EXPECT_EQ(substeps, kSteps);
+  // at the law's own depth under its load: backward Euler's equilibrium is
+  // the law's, to roundoff (measured: 0 m off, 2e-16 m/s): 1e-12 m is 5e-6
+  // of the 0.21 um depth, 1e-9 m/s a nanometre a second
+  const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
+  EXPECT_NEAR(sim.data()->xpos[3 * body + 2], 0.01 - depth, kSettledHeight);
+  EXPECT_LT(mju_norm(sim.data()->qvel, 6), kSettledSpeed);
+}
+
 // The closed forms of friction_test.cc's soft scenes (K = 1e6), there at
 // 1e-4 s and RK4, here at 2 ms and Euler with contact steps, with their
 // tolerances (friction_scenes.h).
