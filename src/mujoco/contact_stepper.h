@@ -246,6 +246,7 @@ class ContactStepper {
   std::vector<double> minv_jdt_;   // rows x nv: M^-1 J'^T
   std::vector<double> b1_;         // per row: 2 J' a_free, m/s^3
   bool moving_ = false;            // some J' is not zero
+  std::vector<char> velocity_only_;  // per point: its J' in b only (J' v0)
   std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
   std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
   size_t entries_bound_ = 0;       // the most nonzero entries of J (and alike)
