@@ -127,6 +127,11 @@ TEST_F(InnerFrictionTest, ABoxBelowTheFrictionAngleStaysWhereItIs) {
   }
 }
 
+// A tipping die's tilt against the fine run's, degrees: twice what Euler's
+// first-order error at 2 ms moved it by in
+// ADieTippingOverAnEdgeKeepsItOnTheTableAsTheFineRun (0.76).
+constexpr double kTipTolerance = 1.5;
+
 // The issue's goals for a thrown die: at rest within 0.1 mm of its height,
 // its mechanical energy (kinetic, potential, the laws' springs) never rising
 // by more than 1e-5 J from one sample (here: step) to the next.
@@ -205,6 +210,55 @@ TEST_F(InnerFrictionTest, ADieLetGoAboveItsRestingDepthSettlesIntoOneSubStepASte
   const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
   EXPECT_NEAR(sim.data()->xpos[3 * body + 2], 0.01 - depth, kSettledHeight);
   EXPECT_LT(mju_norm(sim.data()->qvel, 6), kSettledSpeed);
+}
+
+// A die stood on an edge 5 degrees past balance tips over it onto a face.
+// Beyond 0.01 rad a step (5 rad/s) its edge's rows keep the frozen J, and
+// without J' v0 (the edge's acceleration relative to the die's centre, r
+// w^2) the edge lifted by r w^2 h^2 / 2 a step against the inner
+// trajectory: it left the table at 5.7 rad/s and bounced on it at every
+// step, where the fine run keeps it in contact until the face lands
+// (docs/timestep.md, "Carried or struck").
+TEST_F(InnerFrictionTest, ADieTippingOverAnEdgeKeepsItOnTheTableAsTheFineRun) {
+  constexpr double kTilt = 40;  // degrees from flat on its face
+  constexpr double kHalf = 0.01;
+  // the edge at about its depth under the die's weight
+  const double z = kHalf * (std::cos(kTilt * M_PI / 180) + std::sin(kTilt * M_PI / 180)) - 2.5e-7;
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="die" pos="0 0 {}" euler="0 {} 0"><freejoint/>
+      <geom name="die" type="box" size="{} {} {}" mass="0.008"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:die" data="geom1=die geom2=floor law=lankarani-nikravesh
+    restitution=0.6 stiffness=2e8 friction=coulomb mu=0.4"/></custom>
+</mujoco>)",
+                                      kMujocoStep, z, kTilt, kHalf, kHalf, kHalf);
+  // up to 7 rad/s (0.014 rad a step): the edge in contact at every step
+  constexpr double kSpin = 7;  // rad/s
+  Simulation& sim = MakeSimulation(xml, InnerSteps());
+  const auto spin = [](const Simulation& s) { return mju_norm3(s.data()->qvel + 3); };
+  const auto tilt = [](const Simulation& s) {
+    return std::acos(std::min(1.0, std::abs(s.data()->xmat[9 + 8]))) * 180 / M_PI;
+  };
+  int lifted = 0;
+  while (spin(sim) < kSpin && sim.time() < 0.5) {
+    sim.Step();
+    lifted += sim.contacts().latest().empty();
+  }
+  EXPECT_EQ(lifted, 0) << "the edge left the table before " << sim.time() << " s";
+  EXPECT_GE(spin(sim), kSpin);
+  // the tilt then against the fine run's (RK4 at 1e-5 s, without contact
+  // steps) at the same time (0.088 s): the outer step is Euler's, whose
+  // first-order error lags the tip (measured: 0.76 degrees behind the 13.9
+  // the fine run turned by then)
+  SimulationOptions fine;
+  fine.timestep = 1e-5;
+  fine.integrator = mjINT_RK4;
+  Simulation& reference = MakeSimulation(xml, fine);
+  while (reference.time() < sim.time() - 0.5e-5) reference.Step();
+  EXPECT_NEAR(tilt(sim), tilt(reference), kTipTolerance);
 }
 
 // The closed forms of friction_test.cc's soft scenes (K = 1e6), there at
