@@ -342,15 +342,30 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
   jdot_.assign(static_cast<size_t>(rows) * nv, 0.0);
+  velocity_only_.assign(n, 0);
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
     const GeomPair& pair = model_.pairs()[e.pair];
-    // a point whose rows turn by more than kMovingJacobianTurn within the
-    // step keeps the frozen J: the linear J + J' t is no better there; so
-    // does a resting one: its rows are backward Euler's (ImplicitRows), which
-    // take no J' (with it, the die of die_throw.xml at rest began to rock
-    // after 1.5 s and took 470 sub-steps a step)
-    if (resting_[i] || RowTurn(m, d, e) * h_ > kMovingJacobianTurn) continue;
+    // a resting point keeps the frozen J: its rows are backward Euler's
+    // (ImplicitRows), which take no J' (with it, the die of die_throw.xml at
+    // rest began to rock after 1.5 s and took 470 sub-steps a step)
+    if (resting_[i]) continue;
+    // so does a point whose rows turn by more than kMovingJacobianTurn
+    // within the step: the linear J + J' t is no better there. But one in
+    // contact at the step's start that its rate moves by less than its
+    // depth within the step (carried, not struck) keeps J' v0 in b, its contact point's
+    // acceleration at the start's velocity (a body tipping about the point:
+    // the centripetal r w^2): without it the die of die_throw.xml, tipping
+    // over an edge at 5 rad/s, lifted the edge by r w^2 h^2 / 2 = 0.7 um a
+    // step (twice its depth) and bounced on it at every step (10,800
+    // sub-steps from 0.70 s to 0.85 s). Not for a point struck within the
+    // step (out of contact, or its rate carrying it past its depth): the
+    // impulse P then leaves the law's work and the bodies' energy apart by
+    // P h J' v0 / 2 (a die thrown spinning gained 2e-5 J in a step, two
+    // balls of InnerContactTest's box 8e-5 J)
+    const bool far = RowTurn(m, d, e) * h_ > kMovingJacobianTurn;
+    if (far && !(std::abs(e.depth_rate) * h_ < e.depth)) continue;
+    velocity_only_[i] = far;
     // the normal row, d' = -(J1 - J0)^T n, at the points that carry the
     // depth: a sphere's centre (its contact point rolls: no material point;
     // the normal force passes through the centre), else the contact point
@@ -400,6 +415,12 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
   }
   // x'' = J' v + J v' to first order in J' (contact_stepper.h, Rk4SubStep):
   // b gains J' v0, and b1 = 2 J' a_free per second
+  for (int r = 0; r < rows; ++r) {
+    if (!velocity_only_[row_point_[r]]) continue;
+    double* row = jdot_.data() + static_cast<size_t>(r) * nv;
+    b_[r] += mju_dot(row, d->qvel, nv);
+    std::fill(row, row + nv, 0.0);
+  }
   moving_ = false;
   b1_.assign(rows, 0.0);
   jdot_rows_.Assign(jdot_.data(), rows, nv, entries_bound_);
@@ -677,6 +698,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   }
   impulse_.assign(rows, 0.0);
   impulse_sum_.assign(rows, 0.0);
+  rest_shift_.assign(m->nv, 0.0);
   rates_.clear();
 
   double t = 0;  // since the step's start, s
@@ -812,6 +834,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     x_start_ = x;
     rate_start_ = rate;
     Rk4SubStep(t, step, force, contact_v0, &x, &rate);
+    RestingShift(m, step, acting, &x);
     ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
@@ -861,6 +884,39 @@ FrictionOutput ContactStepper::Friction(int i, double fn, double v0, const doubl
   *stiffness = in.stiffness;
   if (damping) *damping = in.damping + params.viscous;
   return EvaluateFriction(params, in);
+}
+
+void ContactStepper::RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
+                                  std::vector<double>* x) {
+  const int n = static_cast<int>(points_.size());
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    if (!acting[i]) continue;
+    if (!resting_[i]) return;
+    any = true;
+  }
+  if (!any) return;
+  // the dofs of the resting points' trees: their acceleration at the
+  // sub-step's start, a_free - M^-1 J^T f0 (Rk4SubStep's first stage left
+  // M^-1 J^T f0 in stage_spread_), over step^2 / 2 more
+  root_marked_.resize(m->nbody, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!acting[i]) continue;
+    for (const int body : model_.pairs()[points_[i].pair].body) root_marked_[m->body_rootid[body]] = 1;
+  }
+  std::vector<double>& shift = spread_rate_;
+  shift.assign(nv_, 0.0);
+  const double* u = stage_spread_.data();
+  for (int k = 0; k < nv_; ++k) {
+    if (root_marked_[m->body_rootid[m->dof_bodyid[k]]]) {
+      shift[k] = 0.5 * step * step * (a_free_[k] - u[k]);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (const int body : model_.pairs()[points_[i].pair].body) root_marked_[m->body_rootid[body]] = 0;
+  }
+  for (int k = 0; k < nv_; ++k) rest_shift_[k] += shift[k];
+  for (int r = 0; r < rows_; ++r) (*x)[r] += j_rows_.Dot(r, shift.data());
 }
 
 void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,
@@ -1198,7 +1254,11 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][i] = points_[i].weight *
                   EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
       }
-      if (!acting || !(d[s][i] > 0)) continue;
+      // (a resting point's force is held whatever the stage's depth, and
+      // so is its implicit friction: the stages' predicted depths, from
+      // forces held over a long sub-step, can leave the contact)
+      const bool held = acting && resting_[i];
+      if (!held && (!acting || !(d[s][i] > 0))) continue;
       // the friction at the stage's normal force, against the sub-sample's
       // memory
       const int t = tangent_row_[i];
@@ -1209,6 +1269,7 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][t + 1] = start_force[t + 1];
         continue;
       }
+      if (!(d[s][i] > 0)) continue;
       double slip[3], stiffness;
       const FrictionOutput out = Friction(i, f[s][i], v0[i], d[s], r[s], slip, &stiffness);
       for (int j = 0; j < 2; ++j) {
@@ -1253,7 +1314,7 @@ void ContactStepper::CorrectPositions(const mjModel* m, mjData* d) const {
   const double c = m->opt.integrator == mjINT_RK4 ? 0.5 : 1.0;
   const int nv = m->nv;
   std::vector<double> shift(nv);
-  for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k];
+  for (int k = 0; k < nv; ++k) shift[k] = (0.5 - c) * h_ * h_ * a_free_[k] + rest_shift_[k];
   for (int i = 0; i < static_cast<int>(impulse_.size()); ++i) {
     minv_jt_rows_.AddTo(i, -(impulse_sum_[i] - c * h_ * impulse_[i]), shift.data());
   }

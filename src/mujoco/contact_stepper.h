@@ -141,6 +141,11 @@ class ContactStepper {
   void ImplicitRows(double step, const std::vector<char>& acting,
                     const std::vector<double>& start_force, const std::vector<double>& v0,
                     std::vector<double>* x, std::vector<double>* rate);
+  // Before ImplicitRows, in a sub-step whose points in contact all rest:
+  // moves x (and rest_shift_) by the displacement that makes the sub-step
+  // backward Euler's, x1 = x0 + step x1', in the dofs of their trees.
+  void RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
+                    std::vector<double>* x);
   // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L in the rows
   // (SolveInRows), or, with z = M^-1 J_H^T delta_H the held rows' velocity
@@ -241,6 +246,7 @@ class ContactStepper {
   std::vector<double> minv_jdt_;   // rows x nv: M^-1 J'^T
   std::vector<double> b1_;         // per row: 2 J' a_free, m/s^3
   bool moving_ = false;            // some J' is not zero
+  std::vector<char> velocity_only_;  // per point: its J' in b only (J' v0)
   std::vector<double> mass_matrix_;  // M at the step's start (MuJoCo's qM)
   std::vector<int> root_dofs_;     // per body: the dofs of the tree it roots
   size_t entries_bound_ = 0;       // the most nonzero entries of J (and alike)
@@ -264,6 +270,7 @@ class ContactStepper {
   std::vector<double> impulse_;    // per row: P at the step's end, N s
   std::vector<double> impulse_sum_;  // per row: delta * sum_k P_k, N s^2
   std::vector<double> force_;      // nv: the generalized force added
+  std::vector<double> rest_shift_; // nv: RestingShift's displacement over the step
   std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
   std::vector<int> implicit_rows_; // ImplicitRows' rows

@@ -127,6 +127,11 @@ TEST_F(InnerFrictionTest, ABoxBelowTheFrictionAngleStaysWhereItIs) {
   }
 }
 
+// A tipping die's tilt against the fine run's, degrees: twice what Euler's
+// first-order error at 2 ms moved it by in
+// ADieTippingOverAnEdgeKeepsItOnTheTableAsTheFineRun (0.76).
+constexpr double kTipTolerance = 1.5;
+
 // The issue's goals for a thrown die: at rest within 0.1 mm of its height,
 // its mechanical energy (kinetic, potential, the laws' springs) never rising
 // by more than 1e-5 J from one sample (here: step) to the next.
@@ -159,6 +164,101 @@ TEST_F(InnerFrictionTest, ADieWithFrictionComesToRestWithoutGainingEnergy) {
   // at rest its corners' forces are implicit: one sub-step a step, where
   // its 0.2 ms contact would take 470 explicit ones
   EXPECT_EQ(sim.contacts().last_substeps(), 1);
+}
+
+// A die let go just above the depth its four corners carry it at: it comes
+// to rest there, and then each step is one backward-Euler sub-step
+// (docs/timestep.md, "Contacts at rest"). Its corners' vibration (omega h =
+// 17) is not resolved by one sub-step: a resting step that took the start's
+// unbalanced force over the step exactly (h^2 / 2) and only its change by
+// backward Euler (h^2) left the corners a rate of h a / 2 (a: that
+// imbalance), whose carry over the next step, h^2 a / 2, was above the
+// resting rule's 10% of the depth for any imbalance above 0.1% of g: the
+// steps then went 470 sub-steps and 1 in turn to the end (600,000 in 5 s).
+TEST_F(InnerFrictionTest, ADieLetGoAboveItsRestingDepthSettlesIntoOneSubStepAStep) {
+  constexpr double kLoad = 0.008 * kGravity / 4;  // N, per corner
+  constexpr double kAbove = 5e-7;                 // m, above the surface at rest
+  constexpr double kStiffness = 2e8;             // N/m^1.5
+  constexpr double kSettledHeight = 1e-12;        // m
+  constexpr double kSettledSpeed = 1e-9;          // m/s
+  // K d^1.5 carries the load at rest
+  const double depth = std::pow(kLoad / kStiffness, 2.0 / 3.0);
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="die" pos="0 0 {}"><freejoint/>
+      <geom name="die" type="box" size="0.01 0.01 0.01" mass="0.008"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:die" data="geom1=die geom2=floor law=lankarani-nikravesh
+    restitution=0.6 stiffness={} friction=coulomb mu=0.4"/></custom>
+</mujoco>)",
+                                      kMujocoStep, 0.01 - depth + kAbove, kStiffness);
+  Simulation& sim = MakeSimulation(xml, InnerSteps());
+  // its first bounces (0.5 s), then 2 s at rest
+  EXPECT_LT(testing::WorstMechanicalRise(sim, 250), kEnergyRiseTolerance);
+  int substeps = 0;
+  constexpr int kSteps = 1000;
+  for (int step = 0; step < kSteps; ++step) {
+    sim.Step();
+    substeps += sim.contacts().last_substeps();
+  }
+  EXPECT_EQ(substeps, kSteps);
+  // at the law's own depth under its load: backward Euler's equilibrium is
+  // the law's, to roundoff (measured: 0 m off, 2e-16 m/s): 1e-12 m is 5e-6
+  // of the 0.21 um depth, 1e-9 m/s a nanometre a second
+  const int body = mj_name2id(sim.model(), mjOBJ_BODY, "die");
+  EXPECT_NEAR(sim.data()->xpos[3 * body + 2], 0.01 - depth, kSettledHeight);
+  EXPECT_LT(mju_norm(sim.data()->qvel, 6), kSettledSpeed);
+}
+
+// A die stood on an edge 5 degrees past balance tips over it onto a face.
+// Beyond 0.01 rad a step (5 rad/s) its edge's rows keep the frozen J, and
+// without J' v0 (the edge's acceleration relative to the die's centre, r
+// w^2) the edge lifted by r w^2 h^2 / 2 a step against the inner
+// trajectory: it left the table at 5.7 rad/s and bounced on it at every
+// step, where the fine run keeps it in contact until the face lands
+// (docs/timestep.md, "Carried or struck").
+TEST_F(InnerFrictionTest, ADieTippingOverAnEdgeKeepsItOnTheTableAsTheFineRun) {
+  constexpr double kTilt = 40;  // degrees from flat on its face
+  constexpr double kHalf = 0.01;
+  // the edge at about its depth under the die's weight
+  const double z = kHalf * (std::cos(kTilt * M_PI / 180) + std::sin(kTilt * M_PI / 180)) - 2.5e-7;
+  const std::string xml = fmt::format(R"(<mujoco>
+  <option timestep="{}" integrator="Euler"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="die" pos="0 0 {}" euler="0 {} 0"><freejoint/>
+      <geom name="die" type="box" size="{} {} {}" mass="0.008"/></body>
+  </worldbody>
+  <custom><text name="contactlaw:die" data="geom1=die geom2=floor law=lankarani-nikravesh
+    restitution=0.6 stiffness=2e8 friction=coulomb mu=0.4"/></custom>
+</mujoco>)",
+                                      kMujocoStep, z, kTilt, kHalf, kHalf, kHalf);
+  // up to 7 rad/s (0.014 rad a step): the edge in contact at every step
+  constexpr double kSpin = 7;  // rad/s
+  Simulation& sim = MakeSimulation(xml, InnerSteps());
+  const auto spin = [](const Simulation& s) { return mju_norm3(s.data()->qvel + 3); };
+  const auto tilt = [](const Simulation& s) {
+    return std::acos(std::min(1.0, std::abs(s.data()->xmat[9 + 8]))) * 180 / M_PI;
+  };
+  int lifted = 0;
+  while (spin(sim) < kSpin && sim.time() < 0.5) {
+    sim.Step();
+    lifted += sim.contacts().latest().empty();
+  }
+  EXPECT_EQ(lifted, 0) << "the edge left the table before " << sim.time() << " s";
+  EXPECT_GE(spin(sim), kSpin);
+  // the tilt then against the fine run's (RK4 at 1e-5 s, without contact
+  // steps) at the same time (0.088 s): the outer step is Euler's, whose
+  // first-order error lags the tip (measured: 0.76 degrees behind the 13.9
+  // the fine run turned by then)
+  SimulationOptions fine;
+  fine.timestep = 1e-5;
+  fine.integrator = mjINT_RK4;
+  Simulation& reference = MakeSimulation(xml, fine);
+  while (reference.time() < sim.time() - 0.5e-5) reference.Step();
+  EXPECT_NEAR(tilt(sim), tilt(reference), kTipTolerance);
 }
 
 // The closed forms of friction_test.cc's soft scenes (K = 1e6), there at
