@@ -133,6 +133,14 @@ void EpisodeLog::MatchOpenEpisodes(int pair, const double* local, int count, dou
     }
     return nearest;
   };
+  // each point's distance to each episode, once
+  std::vector<double>& distances = distances_;
+  distances.resize(static_cast<size_t>(count) * episodes);
+  for (int i = 0; i < count; ++i) {
+    for (int k = 0; k < episodes; ++k) {
+      distances[static_cast<size_t>(i) * episodes + k] = distance(i, k);
+    }
+  }
   uint64_t taken = 0;
   for (int matched = 0; matched < std::min(count, episodes); ++matched) {
     // the nearest of the points and episodes left, within tolerance
@@ -142,7 +150,7 @@ void EpisodeLog::MatchOpenEpisodes(int pair, const double* local, int count, dou
       if (episode[i] >= 0) continue;
       for (int k = 0; k < episodes; ++k) {
         if (taken & (uint64_t{1} << k)) continue;
-        const double dist = distance(i, k);
+        const double dist = distances[static_cast<size_t>(i) * episodes + k];
         // (a tie: the first point listed, and its last episode)
         const bool tie = dist == best_distance && (best_point < 0 || best_point == i);
         if (dist < best_distance || tie) {

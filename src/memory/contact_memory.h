@@ -133,6 +133,8 @@ class EpisodeLog {
   void Close(int index, double separation_velocity);
 
   std::vector<std::vector<int>> pair_open_;  // pair -> its open episodes
+  // MatchOpenEpisodes' scratch: each point's distance to each open episode
+  mutable std::vector<double> distances_;
   std::vector<uint8_t> single_point_;        // pair -> its narrowphase returns one point
   std::vector<int> open_;         // indices of open episodes
   std::vector<int> closed_;       // closed by the last CloseVanished
