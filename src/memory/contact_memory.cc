@@ -113,32 +113,66 @@ void EpisodeLog::Reset() {
   previous_commit_ = -INFINITY;
 }
 
-int EpisodeLog::MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
-                                 uint64_t* taken) const {
+void EpisodeLog::MatchOpenEpisodes(int pair, const double* local, int count, double tolerance,
+                                   int* episode) const {
   const std::vector<int>& open = pair_open_[pair];
-  int best = -1;
-  double best_distance = tolerance;
-  for (size_t k = 0; k < open.size() && k < 64; ++k) {
-    if (*taken & (uint64_t{1} << k)) continue;
-    // the nearer of the two bodies' frames: a corner is fixed on its box
-    // however the box slides, a rolling point moves little on either
+  const int episodes = static_cast<int>(std::min<size_t>(open.size(), 64));
+  std::fill(episode, episode + count, -1);
+  // the distance of a point to an open episode's point: the nearer in the
+  // two bodies' frames (a corner is fixed on its box however the box
+  // slides, a rolling point moves little on either)
+  const auto distance = [&](int i, int k) {
     const Track& track = tracks_[open[k]];
+    double nearest = std::numeric_limits<double>::infinity();
     for (const int b : {0, 1}) {
-      const double dx = local[b][0] - track.local[b][0];
-      const double dy = local[b][1] - track.local[b][1];
-      const double dz = local[b][2] - track.local[b][2];
-      const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
-      if (distance <= best_distance) {
-        best_distance = distance;
-        best = static_cast<int>(k);
+      const double* at = local + 6 * i + 3 * b;
+      const double dx = at[0] - track.local[b][0];
+      const double dy = at[1] - track.local[b][1];
+      const double dz = at[2] - track.local[b][2];
+      nearest = std::min(nearest, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return nearest;
+  };
+  // each point's distance to each episode, once
+  std::vector<double>& distances = distances_;
+  distances.resize(static_cast<size_t>(count) * episodes);
+  for (int i = 0; i < count; ++i) {
+    for (int k = 0; k < episodes; ++k) {
+      distances[static_cast<size_t>(i) * episodes + k] = distance(i, k);
+    }
+  }
+  uint64_t taken = 0;
+  for (int matched = 0; matched < std::min(count, episodes); ++matched) {
+    // the nearest of the points and episodes left, within tolerance
+    int best_point = -1, best_episode = -1;
+    double best_distance = tolerance;
+    for (int i = 0; i < count; ++i) {
+      if (episode[i] >= 0) continue;
+      for (int k = 0; k < episodes; ++k) {
+        if (taken & (uint64_t{1} << k)) continue;
+        const double dist = distances[static_cast<size_t>(i) * episodes + k];
+        // (a tie: the first point listed, and its last episode)
+        const bool tie = dist == best_distance && (best_point < 0 || best_point == i);
+        if (dist < best_distance || tie) {
+          best_distance = dist;
+          best_point = i;
+          best_episode = k;
+        }
+      }
+    }
+    if (best_point < 0) break;
+    taken |= uint64_t{1} << best_episode;
+    episode[best_point] = open[best_episode];
+  }
+  // one point per pair: the pair's contact, moved
+  if (single_point_[pair] && open.size() == 1 && !(taken & 1)) {
+    for (int i = 0; i < count; ++i) {
+      if (episode[i] < 0) {
+        episode[i] = open[0];
+        break;
       }
     }
   }
-  // one point per pair: the pair's contact, moved
-  if (best < 0 && single_point_[pair] && open.size() == 1 && !(*taken & 1)) best = 0;
-  if (best < 0) return -1;
-  *taken |= uint64_t{1} << best;
-  return open[best];
 }
 
 void EpisodeLog::Open(double t, const PointEvaluation& e) {

@@ -62,7 +62,7 @@ double DissipatedPower(const std::vector<PointEvaluation>& points);
 // The episodes of every contact point, committed once per accepted step. A
 // point is the same physical point from one step to the next when it sits
 // where an open episode's point sat on either of the pair's two bodies
-// (MatchOpenEpisode), whatever order the narrowphase lists it in. A pair
+// (MatchOpenEpisodes), whatever order the narrowphase lists it in. A pair
 // whose narrowphase returns one point has one contact: its point is its open
 // episode's wherever it moved (MuJoCo's general convex collider puts the
 // point of a face on a face anywhere on it, from one step to the next).
@@ -75,13 +75,16 @@ class EpisodeLog {
   // Forgets every episode.
   void Reset();
 
-  // The open episode of pair whose point sat nearest to local (the point in
-  // the pair's two body frames), within tolerance (m) in either body's frame,
-  // and not yet taken: *taken has a bit per open episode of the pair (in
-  // OpenEpisodes order), set here for the one returned; for a pair of one
-  // point, its open episode, at any distance. -1 when none.
-  int MatchOpenEpisode(int pair, const double local[2][3], double tolerance,
-                       uint64_t* taken) const;
+  // The open episodes of count points of pair at once (local + 6 i: point i
+  // in the pair's two body frames, body 0's then body 1's) into episode[i]
+  // (-1: none): the nearest point and open episode within tolerance (m, in
+  // either frame) first, then the nearest of the rest, each episode to one
+  // point (at most the first 64 open); for a pair of one point, its open
+  // episode to the first point left without one. A point that appears beside
+  // an open one (a face patch's new point) takes no episode from the point
+  // nearer to it, whatever order the narrowphase lists the two in.
+  void MatchOpenEpisodes(int pair, const double* local, int count, double tolerance,
+                         int* episode) const;
 
   // The largest approach rate committed for an open episode, m/s.
   double MaxApproach(int episode) const { return episodes_[episode].max_approach_velocity; }
@@ -130,6 +133,8 @@ class EpisodeLog {
   void Close(int index, double separation_velocity);
 
   std::vector<std::vector<int>> pair_open_;  // pair -> its open episodes
+  // MatchOpenEpisodes' scratch: each point's distance to each open episode
+  mutable std::vector<double> distances_;
   std::vector<uint8_t> single_point_;        // pair -> its narrowphase returns one point
   std::vector<int> open_;         // indices of open episodes
   std::vector<int> closed_;       // closed by the last CloseVanished

@@ -138,6 +138,16 @@ void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjt
   }
 }
 
+void PointInBodies(const mjData* d, const GeomPair& pair, const mjtNum pos[3], double on0[3],
+                   double on1[3]) {
+  double* on[2] = {on0, on1};
+  for (int b = 0; b < 2; ++b) {
+    mjtNum offset[3];
+    Sub(offset, pos, d->xpos + 3 * pair.body[b]);
+    vec3::RotateTransposed(on[b], offset, d->xmat + 9 * pair.body[b]);
+  }
+}
+
 void ReadContactPoint(const ContactModel& model, const mjData* d, int p, const mjContact& con,
                       PointEvaluation* e, mjtNum v0[3], mjtNum v1[3]) {
   const GeomPair& pair = model.pairs()[p];
@@ -145,11 +155,7 @@ void ReadContactPoint(const ContactModel& model, const mjData* d, int p, const m
   e->tag = pair.tag;
   e->depth = -con.dist;
   // which physical point: where it sits on the two bodies
-  for (int b = 0; b < 2; ++b) {
-    mjtNum offset[3];
-    Sub(offset, con.pos, d->xpos + 3 * pair.body[b]);
-    vec3::RotateTransposed(e->local[b], offset, d->xmat + 9 * pair.body[b]);
-  }
+  PointInBodies(d, pair, con.pos, e->local[0], e->local[1]);
   // depth rate: approach speed of geom[0] towards geom[1] along the normal
   PointVelocity(model, d, pair.body[0], con.pos, v0);
   PointVelocity(model, d, pair.body[1], con.pos, v1);

@@ -60,6 +60,11 @@ void PointVelocity(const ContactModel& model, const mjData* d, int body, const m
 void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjtNum point[3],
                           const mjtNum direction[3], mjtNum* row);
 
+// Where the point pos sits on pair's two bodies, in their frames (on0: body
+// 0's, on1: body 1's), as ReadContactPoint's PointEvaluation::local.
+void PointInBodies(const mjData* d, const GeomPair& pair, const mjtNum pos[3], double on0[3],
+                   double on1[3]);
+
 // A narrowphase contact of ContactModel pair p read into e: its pair, tag,
 // depth (-con.dist), place on each body (local) and depth rate along
 // con.frame; v0 and v1 get the two bodies' velocities at con.pos, for a

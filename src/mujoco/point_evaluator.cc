@@ -15,6 +15,8 @@ PointEvaluator::PointEvaluator(const ContactModel& model)
     : model_(model),
       contacts_(MakeContactBuffer()),
       weights_(mjMAXCONPAIR),
+      locals_(6 * mjMAXCONPAIR),
+      matched_(mjMAXCONPAIR),
       gradients_(3 * mjMAXCONPAIR) {
   for (const GeomPair& pair : model.pairs()) {
     reads_mass_.push_back(ReadsEffectiveMass(pair.params));
@@ -48,7 +50,18 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     const int count =
         std::min(Collide(m, d, g0, g1, margin, contacts_.get(), weights_.data(), gradients_.data()),
                  pair.slots);
-    uint64_t taken = 0;
+    // the points in contact: their open episodes, matched all at once (a
+    // face patch's point that appears beside one in contact takes no episode
+    // from the point nearer to it)
+    int touching = 0;
+    for (int i = 0; i < count; ++i) {
+      if (!(-contacts_[i].dist > 0)) continue;
+      double* local = locals_.data() + 6 * touching++;
+      PointInBodies(d, pair, contacts_[i].pos, local, local + 3);
+    }
+    episodes.MatchOpenEpisodes(p, locals_.data(), touching, pair.identity_tolerance,
+                               matched_.data());
+    touching = 0;
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) {
@@ -58,7 +71,7 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
       // the point is made where it is kept (it is large: no copy)
       PointEvaluation& e = latest_.emplace_back();
       const mjtNum* gradient = gradients_.data() + 3 * i;
-      EvaluatePoint(d, p, con, weights_[i], gradient, episodes, start, &taken, &e);
+      EvaluatePoint(d, p, con, weights_[i], gradient, matched_[touching++], episodes, start, &e);
 
       // equal and opposite, at the same point: geom[1] pushed along the
       // depth's gradient (+normal but at a face patch's sliding points),
@@ -75,8 +88,8 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
 }
 
 void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
-                                   const mjtNum gradient[3], const EpisodeLog& episodes,
-                                   const StepStartVelocities& start, uint64_t* taken,
+                                   const mjtNum gradient[3], int episode,
+                                   const EpisodeLog& episodes, const StepStartVelocities& start,
                                    PointEvaluation* out) const {
   const GeomPair& pair = model_.pairs()[p];
   const mjtNum* normal = con.frame;
@@ -84,7 +97,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
   mjtNum v0[3], v1[3];
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
   e.weight = weight;
-  e.episode = episodes.MatchOpenEpisode(p, e.local, pair.identity_tolerance, taken);
+  e.episode = episode;
 
   // the slip before its projection into the tangent plane (SlipAndSpin):
   // the same two velocities, computed once

@@ -48,12 +48,11 @@ class PointEvaluator {
 
  private:
   // The normal law at a contact point of pair p (narrowphase output con, of
-  // weight and depth gradient), into *e (default-constructed); taken: the
-  // pair's open episodes already matched in this evaluation.
+  // weight and depth gradient), into *e (default-constructed); episode: its
+  // open episode (EpisodeLog::MatchOpenEpisodes), or -1.
   void EvaluatePoint(mjData* d, int p, const mjContact& con, double weight,
-                     const mjtNum gradient[3],
-                     const EpisodeLog& episodes,
-                     const StepStartVelocities& start, uint64_t* taken, PointEvaluation* e) const;
+                     const mjtNum gradient[3], int episode, const EpisodeLog& episodes,
+                     const StepStartVelocities& start, PointEvaluation* e) const;
 
   const ContactModel& model_;
   // per pair: its law reads the effective mass (Kelvin-Voigt with its
@@ -61,6 +60,10 @@ class PointEvaluator {
   std::vector<char> reads_mass_;
   ContactBuffer contacts_;  // narrowphase output, mjMAXCONPAIR
   std::vector<double> weights_;  // its points' weights, mjMAXCONPAIR
+  // its points in contact: where they sit on the two bodies (6 each), their
+  // open episodes; mjMAXCONPAIR points
+  std::vector<double> locals_;
+  std::vector<int> matched_;
   std::vector<mjtNum> gradients_;  // its points' depth gradients, 3 mjMAXCONPAIR
   std::vector<PointEvaluation> latest_;
   double latest_time_ = 0;

@@ -130,6 +130,19 @@ PointEvaluation At(double x, double shift, int episode = -1) {
   return e;
 }
 
+// The open episodes log matches to points of pair 0, in their order.
+std::vector<int> Match(const EpisodeLog& log, const std::vector<PointEvaluation>& points,
+                       double tolerance) {
+  std::vector<double> local;
+  for (const PointEvaluation& e : points) {
+    for (const int b : {0, 1}) local.insert(local.end(), e.local[b], e.local[b] + 3);
+  }
+  std::vector<int> episode(points.size());
+  log.MatchOpenEpisodes(0, local.data(), static_cast<int>(points.size()), tolerance,
+                        episode.data());
+  return episode;
+}
+
 // Two corners of a box on the floor, listed in either order, sliding: each
 // evaluation finds its own corner's episode, by where it sits on the box.
 TEST(EpisodeLogTest, PointsAreMatchedByWhereTheySitOnTheBodies) {
@@ -138,21 +151,32 @@ TEST(EpisodeLogTest, PointsAreMatchedByWhereTheySitOnTheBodies) {
   log.Commit(0.0, {At(-0.1, 0), At(0.1, 0)});
   ASSERT_EQ(log.OpenEpisodes(0), (std::vector<int>{0, 1}));
 
-  // listed the other way round, slid 0.5 m along the floor: fixed on body 0
-  uint64_t taken = 0;
+  // listed the other way round, slid 0.5 m along the floor: fixed on body 0;
+  // each episode is taken once: a third point at the same corner is new
   const PointEvaluation right = At(0.1, 0.5);
   const PointEvaluation left = At(-0.1, 0.5);
-  EXPECT_EQ(log.MatchOpenEpisode(0, right.local, kTolerance, &taken), 1);
-  EXPECT_EQ(log.MatchOpenEpisode(0, left.local, kTolerance, &taken), 0);
-  // each episode is taken once: a third point at the same corner is new
-  EXPECT_EQ(log.MatchOpenEpisode(0, right.local, kTolerance, &taken), -1);
+  EXPECT_EQ(Match(log, {right, left}, kTolerance), (std::vector<int>{1, 0}));
+  EXPECT_EQ(Match(log, {right, left, right}, kTolerance), (std::vector<int>{1, 0, -1}));
   // beyond the tolerance on both bodies: a new point
-  taken = 0;
-  const PointEvaluation middle = At(0.0, 0.5);
-  EXPECT_EQ(log.MatchOpenEpisode(0, middle.local, kTolerance, &taken), -1);
+  EXPECT_EQ(Match(log, {At(0.0, 0.5)}, kTolerance), (std::vector<int>{-1}));
   // within it: the nearer episode
-  const PointEvaluation near_right = At(0.095, 0.5);
-  EXPECT_EQ(log.MatchOpenEpisode(0, near_right.local, kTolerance, &taken), 1);
+  EXPECT_EQ(Match(log, {At(0.095, 0.5)}, kTolerance), (std::vector<int>{1}));
+}
+
+// A face patch's point that appears beside a point in contact, within the
+// tolerance of its episode and listed first, takes nothing from it: the
+// episode goes to the nearer point. Taken by the first point listed, the
+// point in contact was a touch at its depth, at the floor of v0 (box_stack.xml
+// at 2 ms with contact steps: a Hunt-Crossley force of 41.7 N against 12.6 N,
+// its friction spring at the cap storing 1.9e-3 J out of nothing).
+TEST(EpisodeLogTest, ANewPointBesideOneInContactTakesNotItsEpisode) {
+  constexpr double kTolerance = 0.01;  // m
+  EpisodeLog log(/*points_per_pair=*/{4}, /*tags=*/1);
+  log.Commit(0.0, {At(0.1, 0)});
+  const PointEvaluation appearing = At(0.097, 0.5);  // 3 mm away
+  const PointEvaluation kept = At(0.1, 0.5);
+  EXPECT_EQ(Match(log, {appearing, kept}, kTolerance), (std::vector<int>{-1, 0}));
+  EXPECT_EQ(Match(log, {kept, appearing}, kTolerance), (std::vector<int>{0, -1}));
 }
 
 // A pair whose narrowphase returns one point (MuJoCo's convex collider: a
@@ -164,19 +188,16 @@ TEST(EpisodeLogTest, APairOfOnePointKeepsItsEpisodeWhereverThePointMoves) {
   constexpr double kTolerance = 0.01;  // m
   EpisodeLog one(/*points_per_pair=*/{1}, /*tags=*/1);
   one.Commit(0.0, {At(-0.04, 0)});
-  uint64_t taken = 0;
   const PointEvaluation across = At(0.04, 0);  // 8 cm away on both bodies
-  EXPECT_EQ(one.MatchOpenEpisode(0, across.local, kTolerance, &taken), 0);
-  EXPECT_EQ(one.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);  // taken once
+  EXPECT_EQ(Match(one, {across}, kTolerance), (std::vector<int>{0}));
+  EXPECT_EQ(Match(one, {across, across}, kTolerance), (std::vector<int>{0, -1}));  // taken once
   // a pair of several points: far away, it is another point
   EpisodeLog several(/*points_per_pair=*/{4}, /*tags=*/1);
   several.Commit(0.0, {At(-0.04, 0)});
-  taken = 0;
-  EXPECT_EQ(several.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);
+  EXPECT_EQ(Match(several, {across}, kTolerance), (std::vector<int>{-1}));
   // no open episode: a touch
   EpisodeLog none(/*points_per_pair=*/{1}, /*tags=*/1);
-  taken = 0;
-  EXPECT_EQ(none.MatchOpenEpisode(0, across.local, kTolerance, &taken), -1);
+  EXPECT_EQ(Match(none, {across}, kTolerance), (std::vector<int>{-1}));
 }
 
 TEST(ImpactLogTest, AnImpactRunsFromTheFirstTouchToTheLastPointLeaving) {
