@@ -61,6 +61,11 @@ struct PointEvaluation {
   double dissipated_power = 0;
   double pos[3] = {0, 0, 0};     // contact point, world frame
   double normal[3] = {0, 0, 0};  // from geom[0] to geom[1]
+  // the direction the law's force pushes body[1] along, per newton of it:
+  // the gradient of the depth (the normal, but at a face patch's point that
+  // slides along an edge: geometry/patch.h, ClipVertex), its component along
+  // the normal 1
+  double gradient[3] = {0, 0, 0};
   // the contact point in the frames of the pair's two bodies (body[0],
   // body[1]): what identifies it from one step to the next
   double local[2][3] = {{0, 0, 0}, {0, 0, 0}};

@@ -232,15 +232,19 @@ double ContactStepper::Reach(const mjData* d, const GeomPair& pair, double h) co
   return kStepReachFactor * (speed * h + mju_norm3(m->opt.gravity) * h * h);
 }
 
-void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con, double weight) {
+void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con, double weight,
+                             const mjtNum gradient[3]) {
   PointEvaluation& e = near_.emplace_back();
   mjtNum v0[3], v1[3];
   ReadContactPoint(model_, d, p, con, &e, v0, v1);
   e.weight = weight;
   vec3::Copy(e.pos, con.pos);
   vec3::Copy(e.normal, con.frame);
-  // the slip, in the tangent plane
+  vec3::Copy(e.gradient, gradient);
+  // the depth's rate along its gradient (PointEvaluator's), the slip in the
+  // tangent plane
   vec3::Sub(e.slip, v1, v0);
+  e.depth_rate = -vec3::Dot(e.slip, gradient);
   const double along = vec3::Dot(e.slip, con.frame);
   for (int k = 0; k < 3; ++k) e.slip[k] -= along * con.frame[k];
 }
@@ -265,9 +269,11 @@ void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   for (int i = 0; i < n; ++i) {
     const PointEvaluation& e = points_[i];
     const GeomPair& pair = model_.pairs()[e.pair];
-    // NormalJacobian gives (J1 - J0)^T n, the separation rate: d' is its opposite
+    // NormalJacobian gives (J1 - J0)^T g, the separation rate along the
+    // depth's gradient g (the hook's push: PointEvaluation::gradient): d' is
+    // its opposite
     double* row = j_.data() + static_cast<size_t>(i) * nv;
-    NormalJacobian(m, d, pair, e.pos, e.normal, row);
+    NormalJacobian(m, d, pair, e.pos, e.gradient, row);
     for (int k = 0; k < nv; ++k) row[k] = -row[k];
     // the tangential rows: body[1]'s velocity relative to body[0] along t1, t2
     const int r = tangent_row_[i];
@@ -377,7 +383,7 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
       const bool sphere = m->geom_type[g] == mjGEOM_SPHERE;
       spheres = spheres && sphere;
       mjtNum direction[3];
-      mju_scl3(direction, e.normal, b == 0 ? 1.0 : -1.0);
+      mju_scl3(direction, e.gradient, b == 0 ? 1.0 : -1.0);
       AddPointJacobianRate(m, d, pair.body[b], sphere ? d->geom_xpos + 3 * g : e.pos, direction,
                            row);
     }

@@ -69,7 +69,8 @@ class ContactStepper {
   void Clear() { near_.clear(); }
   // A point of pair within reach but not in contact (con.dist >= 0), of
   // weight (PointEvaluation::weight).
-  void AddNear(const mjData* d, int pair, const mjContact& con, double weight);
+  void AddNear(const mjData* d, int pair, const mjContact& con, double weight,
+               const mjtNum gradient[3]);
 
   // At the step's start (m: the model as stepped, its timestep h): integrates
   // touching (the evaluator's points in contact, their episodes matched) and

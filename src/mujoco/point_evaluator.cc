@@ -65,7 +65,7 @@ void PointEvaluator::Evaluate(mjData* d, const std::vector<int>& pairs,
     for (int i = 0; i < count; ++i) {
       const mjContact& con = contacts_[i];
       if (!(-con.dist > 0)) {
-        if (inner) inner->AddNear(d, p, con, weights_[i]);
+        if (inner) inner->AddNear(d, p, con, weights_[i], gradients_.data() + 3 * i);
         continue;
       }
       // the point is made where it is kept (it is large: no copy)
@@ -106,6 +106,7 @@ void PointEvaluator::EvaluatePoint(mjData* d, int p, const mjContact& con, doubl
   // sliding points: narrowphase.h), which the rates, masses and the touch
   // below are taken along
   e.depth_rate = -vec3::Dot(e.slip, gradient);
+  vec3::Copy(e.gradient, gradient);
 
   ContactState state{e.depth, e.depth_rate, 0.0, 0.0};
   if (reads_mass_[p]) {

@@ -10,7 +10,6 @@
 // store, and the ledger's total rose by 6.9e-4 J in that impact. Along the
 // depths' gradients (geometry/patch.h, ClipVertex) it does not rise.
 #include <algorithm>
-#include <cstdlib>
 
 #include <gtest/gtest.h>
 
@@ -42,8 +41,6 @@ constexpr char kLidOnCube[] = R"(<mujoco>
 class TiltedLidEnergyTest : public testing::MujocoTest {};
 
 TEST_F(TiltedLidEnergyTest, TheLedgersTotalDoesNotRiseWhenTheLidLandsOnAnEdge) {
-  // the contact steps (contact_stepper.h) push along the normal still
-  if (std::getenv(kTestContactStepsVariable)) GTEST_SKIP() << "the hook's forces only";
   SimulationOptions options;
   options.settle = true;  // the cube at rest on the floor's springs
   Simulation& sim = MakeSimulation(kLidOnCube, options);
