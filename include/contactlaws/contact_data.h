@@ -172,6 +172,10 @@ class ContactData {
   // (docs/timestep.md, "Contact steps").
   double contact_steps_worst_turn() const;
   double contact_steps_worst_turn_time() const;
+  // The first step (its time, s) whose turn was beyond kFrozenTurnWarning,
+  // or -1: where the frozen configuration first costs accuracy (a hammer's
+  // first impact, before its worst turn).
+  double contact_steps_first_far_turn_time() const;
 
   // Forgets every episode, the energy ledger and any divergence. BeforeStep
   // calls it when the time has gone back (mj_resetData).

@@ -32,12 +32,13 @@ std::vector<std::string> RunWarnings(const Simulation& sim, const AdvanceResult&
   const double turn = sim.contacts().contact_steps_worst_turn();
   if (sim.contacts().contact_steps().enabled() && turn > kFrozenTurnWarning) {
     warnings.push_back(fmt::format(
-        "{}: a body in contact turned {:.3g} rad within one step (t = {:.6g} s), "
-        "beyond {} rad: the configuration frozen over the step moves its contact points and "
-        "normals by as much (a die's first rebound at 0.042 rad: 15% off); take a smaller "
-        "{} (docs/timestep.md, \"Contact steps\")",
+        "{}: a body in contact turned {:.3g} rad within one step (t = {:.6g} s; the first step "
+        "beyond {} rad at t = {:.6g} s): the configuration frozen over the step moves its "
+        "contact points and normals by as much (a die's first rebound at 0.042 rad: 15% off); "
+        "take a smaller {} (docs/timestep.md, \"Contact steps\")",
         options.Name("contact_steps"), turn, sim.contacts().contact_steps_worst_turn_time(),
-        kFrozenTurnWarning, options.Name("timestep")));
+        kFrozenTurnWarning, sim.contacts().contact_steps_first_far_turn_time(),
+        options.Name("timestep")));
   }
   for (const MujocoWarning& w : sim.Warnings()) {
     warnings.push_back(fmt::format("MuJoCo: {} ({} time{})", w.text, w.count,

@@ -138,6 +138,10 @@ double ContactData::contact_steps_worst_turn() const { return stepper_->worst_tu
 
 double ContactData::contact_steps_worst_turn_time() const { return stepper_->worst_turn_time(); }
 
+double ContactData::contact_steps_first_far_turn_time() const {
+  return stepper_->first_far_turn_time();
+}
+
 const std::optional<Divergence>& ContactData::divergence() const {
   return committer_->divergence();
 }

@@ -669,6 +669,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
         worst_turn_ = turn;
         worst_turn_time_ = d->time;
       }
+      if (turn > kFrozenTurnWarning && first_far_turn_time_ < 0) first_far_turn_time_ = d->time;
     }
   }
 

@@ -102,6 +102,8 @@ class ContactStepper {
   // configuration was from the step's end.
   double worst_turn() const { return worst_turn_; }
   double worst_turn_time() const { return worst_turn_time_; }
+  // the first step's time (s) that turned beyond kFrozenTurnWarning, or -1
+  double first_far_turn_time() const { return first_far_turn_time_; }
   // The sub-steps the last Integrate took (its touches split some).
   int substeps() const { return substeps_; }
 
@@ -294,6 +296,7 @@ class ContactStepper {
   double h_ = 0;
   double worst_turn_ = 0;
   double worst_turn_time_ = 0;
+  double first_far_turn_time_ = -1;
   bool active_ = false;  // Integrate found points this step
 };
 

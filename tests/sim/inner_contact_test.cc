@@ -264,5 +264,23 @@ TEST_F(InnerContactTest, EightBallsLaunchedInABoxNeitherDivergeNorGainEnergy) {
   EXPECT_GT(sim.contacts().impacts().size(), 20u);
 }
 
+// The frozen configuration's measure names where it first costs accuracy,
+// not only its worst step: die_throw.xml's die lands spinning at 21 rad/s,
+// 0.042 rad a 2 ms step, beyond kFrozenTurnWarning from its first impact.
+TEST_F(InnerContactTest, TheFirstTurnBeyondTheFrozenLimitIsTheDiesFirstImpact) {
+  Simulation& sim = MakeSceneSimulation("die_throw.xml", InnerSteps());
+  while (sim.time() < 0.5) sim.Step();
+  ASSERT_FALSE(sim.contacts().impacts().empty());
+  const double first = sim.contacts().contact_steps_first_far_turn_time();
+  ASSERT_GE(first, 0) << "no step turned beyond the limit";
+  EXPECT_GT(sim.contacts().contact_steps_worst_turn(), kFrozenTurnWarning);
+  EXPECT_LE(first, sim.contacts().contact_steps_worst_turn_time());
+  // within the steps that reach the first impact: its points are in the
+  // step's reach up to two steps before it touches (the approach's margin)
+  const double touch = sim.contacts().impacts()[0].time_contact;
+  constexpr double kReach = 2 * kMujocoStep;  // s
+  EXPECT_NEAR(first, touch, kReach) << "first impact at " << touch;
+}
+
 }  // namespace
 }  // namespace contactlaws
