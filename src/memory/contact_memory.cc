@@ -92,14 +92,17 @@ EpisodeLog::EpisodeLog(const std::vector<int>& points_per_pair, int tags)
     : pair_open_(points_per_pair.size()), single_point_(points_per_pair.size()),
       tag_count_(tags, 0) {
   // no allocation while stepping: room for every pair's points
-  size_t points = 0;
+  size_t points = 0, widest = 0;
   for (size_t p = 0; p < points_per_pair.size(); ++p) {
     pair_open_[p].reserve(points_per_pair[p]);
     single_point_[p] = points_per_pair[p] == 1;
     points += points_per_pair[p];
+    widest = std::max<size_t>(widest, points_per_pair[p]);
   }
   open_.reserve(points);
   closed_.reserve(points);
+  // MatchOpenEpisodes' distances: a pair's points against its open episodes
+  distances_.reserve(widest * widest);
 }
 
 void EpisodeLog::Reset() {
