@@ -32,7 +32,7 @@ py::list SummaryRows(const Simulation& sim, double end_time) {
   py::list rows;
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
     const PairTag& tag = cm.tags()[t];
-    const RunSummary s = SummarizeTag(sim.contacts(), t, end_time);
+    const RunSummary s = SummarizeTag(sim, t, end_time);
     py::object restitution = py::none();
     if (ReadsRestitution(tag.law)) restitution = py::float_(tag.restitution);
     rows.append(py::make_tuple(tag.label, std::string(LawName(tag.law)), restitution, s.impacts,

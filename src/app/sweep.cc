@@ -14,6 +14,7 @@
 #include "app/parallel.h"
 #include "app/run_warnings.h"
 #include "ident/wire.h"
+#include "sim/run_report.h"
 #include "sim/start_contact.h"
 
 namespace contactlaws::app {
@@ -90,7 +91,7 @@ RunOutput Execute(const Scene& scene, const SimulationOptions& options, const Ru
         break;
       }
     }
-    out.summary = Summarize(sim->contacts().impacts(), end_time);
+    out.summary = Summarize(sim->contacts().impacts(), end_time, SettlingImpacts(*sim));
     out.dissipated = sim->contacts().DissipatedEnergy();
   } catch (const OptionError& e) {
     out.status = RunOutput::Status::kFailed;

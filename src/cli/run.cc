@@ -29,7 +29,7 @@ void PrintRunSummary(const Simulation& sim, double end_time, std::FILE* out) {
              "collisions", "first e_post", "max force (N)");
   for (int t = 0; t < static_cast<int>(cm.tags().size()); ++t) {
     const PairTag& tag = cm.tags()[t];
-    const RunSummary s = SummarizeTag(sim.contacts(), t, end_time);
+    const RunSummary s = SummarizeTag(sim, t, end_time);
     fmt::print(out, "{:<20} {:<20} {:>11} {:>10} {:>14} {:>14.6g}\n", tag.label,
                LawName(tag.law), ReadsRestitution(tag.law) ? Field(tag.restitution) : "-",
                s.impacts, Cell(s.restitution_post, "{:.6f}"), s.max_force);

@@ -63,6 +63,15 @@ double SceneSettling(const Simulation& sim) {
 
 }  // namespace
 
+std::vector<uint8_t> SettlingImpacts(const Simulation& sim) {
+  const double scene_settling = SceneSettling(sim);
+  std::vector<uint8_t> settling;
+  for (const Episode& c : sim.contacts().impacts()) {
+    settling.push_back(SettledUnderLoad(sim, c, scene_settling));
+  }
+  return settling;
+}
+
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spelling& spelling) {
   // the library handles any rise (Episode::max_approach_velocity); a chained
   // contact is one a warning should name, once per tag: many pairs of a tag

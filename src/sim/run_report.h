@@ -5,6 +5,7 @@
 #ifndef CONTACTLAWS_SIM_RUN_REPORT_H_
 #define CONTACTLAWS_SIM_RUN_REPORT_H_
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,14 @@ namespace contactlaws {
 // no push: such impacts make one line for the scene, pointing to settling
 // (the option spelled by spelling, the caller's front-end).
 std::vector<std::string> ChainedContactWarnings(const Simulation& sim, const Spelling& spelling);
+
+// Per impact of sim.contacts().impacts(): whether it is bodies that touched
+// slower than their law's floor of v0 sinking into their contact under their
+// load (placed touching, or come to rest; the rule of the settling line
+// above, chained or not): no impact, so no first impact's e_post (a contact
+// placed touching that a later push lifts would read its lift-off speed
+// against nothing).
+std::vector<uint8_t> SettlingImpacts(const Simulation& sim);
 
 }  // namespace contactlaws
 

@@ -5,17 +5,23 @@
 #include <algorithm>
 #include <map>
 
+#include "sim/run_report.h"
+
 namespace contactlaws {
 
-RunSummary Summarize(const std::vector<Episode>& impacts, double end_time) {
+RunSummary Summarize(const std::vector<Episode>& impacts, double end_time,
+                     const std::vector<uint8_t>& settling) {
   RunSummary s;
   s.impacts = static_cast<int>(impacts.size());
   if (impacts.empty()) return s;
 
   // the first impact with an approach: bodies placed overlapping and
-  // pushed apart at t = 0 rebound from nothing (their e_post would be x / 0)
-  const auto first = std::find_if(impacts.begin(), impacts.end(),
-                                  [](const Episode& i) { return i.approached(); });
+  // pushed apart at t = 0 rebound from nothing (their e_post would be x / 0),
+  // and bodies settling into their contacts are no impact
+  const auto first = std::find_if(impacts.begin(), impacts.end(), [&](const Episode& i) {
+    const size_t k = &i - impacts.data();
+    return i.approached() && !(k < settling.size() && settling[k]);
+  });
   if (first != impacts.end()) {
     s.impact_velocity = first->impact_velocity;
     if (!first->open) {
@@ -51,12 +57,17 @@ RunSummary Summarize(const std::vector<Episode>& impacts, double end_time) {
   return s;
 }
 
-RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time) {
+RunSummary SummarizeTag(const Simulation& sim, int tag, double end_time) {
+  const std::vector<uint8_t> all = SettlingImpacts(sim);
   std::vector<Episode> impacts;
-  for (const Episode& impact : contacts.impacts()) {
-    if (impact.tag == tag) impacts.push_back(impact);
+  std::vector<uint8_t> settling;
+  for (size_t k = 0; k < sim.contacts().impacts().size(); ++k) {
+    const Episode& impact = sim.contacts().impacts()[k];
+    if (impact.tag != tag) continue;
+    impacts.push_back(impact);
+    settling.push_back(all[k]);
   }
-  return Summarize(impacts, end_time);
+  return Summarize(impacts, end_time, settling);
 }
 
 }  // namespace contactlaws

@@ -10,7 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "contactlaws/contact_data.h"
+#include <cstdint>
+
+#include "contactlaws/simulation.h"
 
 namespace contactlaws {
 
@@ -33,11 +35,16 @@ struct RunSummary {
 // episode (a contact that has not outlasted every bounce before it cannot be
 // told from one more bounce). It is the latest such first touch over the
 // pairs; empty when a pair is not at rest, or there was no contact at all.
-RunSummary Summarize(const std::vector<Episode>& impacts, double end_time);
+// settling, when given (one per impact): the impacts that are bodies
+// settling into their contacts (run_report.h, SettlingImpacts), which are
+// not the first impact whose e_post is reported.
+RunSummary Summarize(const std::vector<Episode>& impacts, double end_time,
+                     const std::vector<uint8_t>& settling = {});
 
-// Summarize of the impacts of one tag (ContactData::impacts() whose tag
-// is tag): the row per tag of `run`'s table and of the Python run().
-RunSummary SummarizeTag(const ContactData& contacts, int tag, double end_time);
+// Summarize of the impacts of one tag of sim (ContactData::impacts() whose
+// tag is tag, SettlingImpacts): the row per tag of `run`'s table and of the
+// Python run().
+RunSummary SummarizeTag(const Simulation& sim, int tag, double end_time);
 
 }  // namespace contactlaws
 

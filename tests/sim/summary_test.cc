@@ -65,6 +65,17 @@ TEST(SummaryTest, ImpactsAndTimeToRestByHand) {
   EXPECT_EQ(after.restitution_post, 0.75);
   EXPECT_EQ(after.impact_velocity, 2.0);
   EXPECT_FALSE(Summarize({pushed_apart}, 1.0).restitution_post);
+  // a contact placed touching that sank into its spring at 6 mm/s and was
+  // lifted at 25 mm/s by a push (SettlingImpacts): no impact; the first
+  // impact after it is the first
+  Episode settled = Impact(0, 0.0, 0.0216);
+  settled.impact_velocity = 0;
+  settled.max_approach_velocity = 0.006;
+  settled.separation_velocity = 0.025;
+  const RunSummary landing = Summarize({settled, Impact(0, 0.3, 0.31)}, 1.0, {1, 0});
+  EXPECT_EQ(landing.restitution_post, 0.75);
+  EXPECT_NEAR(*Summarize({settled, Impact(0, 0.3, 0.31)}, 1.0).restitution_post, 25.0 / 6, 1e-12)
+      << "without the flags, its lift-off against its sinking";
   // no contact at all
   const RunSummary none = Summarize({}, 1.0);
   EXPECT_EQ(none.impacts, 0);
