@@ -88,6 +88,9 @@ py::tuple Run(const std::string& scene_path, const py::dict& kwargs) {
   for (std::string& w : app::RunWarnings(*sim, result, Keywords())) {
     warnings.push_back(std::move(w));
   }
+  // a settled body with no resting pose rolls or tips from the start: the
+  // command line's settled line says so on its own, Python hears it
+  if (sim->settled() && !sim->settled()->unheld.empty()) warnings.push_back(sim->settled()->Line());
   const double end_time = result.divergence ? result.divergence->time : sim->time();
   std::string divergence;
   if (result.divergence) divergence = DivergenceMessage(*sim, *result.divergence, advice, kKeywordSpelling);

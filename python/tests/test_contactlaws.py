@@ -71,6 +71,25 @@ def test_a_block_starting_deep_warns_as_the_command_line_does_in_keywords(tmp_pa
     assert "starts 0.0001 m deep in contact: its law pushes with 40 N" in deep[0]
 
 
+def test_a_settled_ball_that_rolls_away_is_named(tmp_path):
+    # a ball on a 10 degree ramp its friction holds: it rolls, so it has no
+    # resting pose; settled into its contact's depth, it starts rolling
+    scene = tmp_path / "ramp.xml"
+    scene.write_text("""<mujoco><option timestep="1e-4" integrator="RK4"/><worldbody>
+      <geom name="ramp" type="plane" size="2 1 0.1" euler="0 10 0"/>
+      <body name="roller" pos="0 0 0.0505"><freejoint/>
+        <geom name="roller" type="sphere" size="0.05" mass="1"/></body></worldbody>
+      <custom><text name="contactlaw:roll" data="geom1=ramp geom2=roller law=hunt-crossley
+        restitution=0.5 stiffness=1e7 friction=coulomb mu=0.6"/></custom></mujoco>""")
+    with pytest.warns(UserWarning) as caught:
+        result = contactlaws.run(scene, duration=0.5, timestep="auto", settle=True)
+    assert any("'roller' has no resting pose" in str(w.message) for w in caught)
+    # 5/7 g sin 10 degrees down the ramp (its x part), as the command line's
+    # settle_test: the lever R - d/2 makes it 0.06% slow
+    rolling = 5 / 7 * 9.81 * np.sin(np.radians(10)) * np.cos(np.radians(10))
+    assert result.trajectory["roller.vx"].iloc[-1] == pytest.approx(rolling * 0.5, rel=5e-3)
+
+
 def test_refused_values_raise_the_command_lines_message():
     refused = cli("run", BALL, "--restitution=1.5", check=False)
     assert refused.returncode == 2
