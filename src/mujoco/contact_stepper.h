@@ -119,9 +119,16 @@ class ContactStepper {
   };
 
   // Sub-steps for the step of h s: options_.substeps, or each point's elastic
-  // duration and its dampers' lag (normal and tangential), and each friction
-  // point's tangential period, over the per-contact counts.
-  int SubSteps(double h) const;
+  // duration (an impact's, or the vibration's of a point that stays in
+  // contact) and its dampers' lag (normal and tangential), and each friction
+  // point's tangential period, over the per-contact counts; the couplings
+  // weighed by the points' weights.
+  // Sets row_sum_ and leaves out the points out_of_reach_ marks.
+  int SubSteps(double h);
+  // The sub-step of point i touching at speed within the step (an
+  // out-of-reach point: SubSteps left it out): its impact's duration over
+  // the per-contact count, and its damper's lag at the impact's deepest.
+  double TouchSubStep(int i, double speed) const;
   // One RK4 sub-step, starting t0 s into the step, of the rows' positions
   // and rates (b - A f(x, x'), and the terms of the moving J:
   // Acceleration), from the forces at its start; adds to impulse_ and
@@ -288,6 +295,12 @@ class ContactStepper {
   std::vector<int> envelope_;      // per row of ImplicitRows' matrix: its first nonzero
   std::vector<char> acting_;       // per point: in contact at the sub-step's start
   std::vector<char> resting_;      // per point: at rest (kRestingFraction)
+  // per point: in contact through the step, vibrating (kSustainedFraction)
+  std::vector<char> sustained_;
+  // per point: out of contact beyond what the step can close (SubSteps
+  // leaves it out until it touches)
+  std::vector<char> out_of_reach_;
+  std::vector<double> row_sum_;    // per point: SubSteps' Gershgorin sum, 1/kg
   std::vector<double> x_start_;    // per row: x at the sub-step's start
   std::vector<double> rate_start_; // per row: x' at the sub-step's start
   std::vector<InnerSample> samples_;
