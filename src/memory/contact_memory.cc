@@ -10,8 +10,9 @@ namespace contactlaws {
 
 void PeakForce::Add(double t, double force) {
   peak_ = std::max(peak_, force);
-  if (count_ == 2 && force_[1] >= force_[0] && force_[1] >= force && t > time_[1] &&
-      time_[1] > time_[0]) {
+  const double before = time_[1] - time_[0], after = t - time_[1];
+  if (count_ == 2 && force_[1] >= force_[0] && force_[1] >= force && after > 0 && before > 0 &&
+      std::max(before, after) <= kPeakSpacing * std::min(before, after)) {
     // Newton's form through (t0, f0), (t1, f1), (t, force)
     const double d01 = (force_[1] - force_[0]) / (time_[1] - time_[0]);
     const double d12 = (force - force_[1]) / (t - time_[1]);

@@ -22,9 +22,16 @@ namespace contactlaws {
 // neighbours, the vertex of the parabola through the three, the peak between
 // samples. A sample misses a smooth peak by O(h^2) of it, the vertex by
 // O(h^3): the peak force then meets the accuracy of the rebound at the same
-// step (auto_accuracy_test).
+// step (auto_accuracy_test). Only where the two intervals are within
+// kPeakSpacing of each other: a sliver beside a long interval (contact
+// steps' sub-samples, one ended just past a touch or at the step's end)
+// makes the parabola's curvature the sliver's noise. A 39 ns sub-step after
+// a 13 us one put a box_stack.xml contact's peak at 4,167 N, five times its
+// largest sample, 752 N.
 class PeakForce {
  public:
+  static constexpr double kPeakSpacing = 4;
+
   void Add(double t, double force);
   double peak() const { return peak_; }
 

@@ -46,6 +46,19 @@ TEST(PeakForceTest, AParabolaSampledUnevenlyGivesItsVertex) {
   EXPECT_EQ(rising.peak(), 4.0);
 }
 
+TEST(PeakForceTest, ASliverBesideALongIntervalGivesNoVertex) {
+  // contact steps' sub-samples: 752 N twice 13 us apart, then 711 N 39 ns
+  // later (a sub-step cut short at the step's end). The parabola through the
+  // three would put a vertex of about 752 + 41 13e-6 / (4 39e-9) = 4,170 N
+  // between the first two, from the sliver's slope alone; the samples are
+  // 1:333 apart, beyond PeakForce::kPeakSpacing: the largest sample
+  PeakForce peak;
+  peak.Add(0.0, 752.0);
+  peak.Add(13e-6, 752.0);
+  peak.Add(13.039e-6, 711.0);
+  EXPECT_EQ(peak.peak(), 752.0);
+}
+
 TEST(EpisodeLogTest, AnEpisodeOpensAdvancesAndCloses) {
   EpisodeLog log(/*points_per_pair=*/{1, 1}, /*tags=*/1);
   // first seen at t = 1 at depth 1e-3, rate 1 m/s, having touched at 3 m/s:
