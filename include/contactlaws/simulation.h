@@ -202,6 +202,7 @@ class Simulation {
   std::unique_ptr<ContactData> contacts_;
   ColumnGroups columns_;
   bool motion_only_ = false;  // SampleMotion: the kinematic stages suffice
+  std::vector<mjtNum> kept_positions_;  // Sample's qpos, kept through its forward pass
   std::vector<int> recorded_bodies_;
   std::vector<uint8_t> oriented_;  // per recorded body: it has a free or ball joint
   std::vector<int> recorded_joints_;  // hinge and slide joints

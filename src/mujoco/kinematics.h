@@ -8,6 +8,9 @@
 #ifndef CONTACTLAWS_KINEMATICS_H_
 #define CONTACTLAWS_KINEMATICS_H_
 
+#include <algorithm>
+#include <vector>
+
 #include <mujoco/mujoco.h>
 
 #include "contactlaws/contact_model.h"
@@ -105,6 +108,30 @@ bool FarApart(const mjModel* m, const mjData* d, int g1, int g2);
 // Translates each driven body (and its geoms) to its pose at d->time: exact
 // at every RK4 stage, where mocap_pos still holds the step's start.
 void ApplyDrives(const ContactModel& model, mjData* d);
+
+// Keeps d->qpos through the forward passes done to read a state (a
+// trajectory's row, a dense output's capture): mj_kinematics normalizes
+// qpos's quaternions in place (MuJoCo 2.2), and normalizing is not
+// idempotent in floating point (a normalized quaternion's norm is 1 to
+// rounding, and dividing by it again can move its last bit). A read that
+// wrote qpos made the run depend on its output: box_stack.xml under
+// contact steps gave a first e_post of 0.197475 with --output and 0.197473
+// without. The positions are saved into saved (no allocation once it has
+// grown) and restored when this object goes.
+class PositionsKept {
+ public:
+  PositionsKept(const mjModel* m, mjData* d, std::vector<mjtNum>* saved)
+      : d_(d), saved_(saved) {
+    saved_->assign(d->qpos, d->qpos + m->nq);
+  }
+  ~PositionsKept() { std::copy(saved_->begin(), saved_->end(), d_->qpos); }
+  PositionsKept(const PositionsKept&) = delete;
+  PositionsKept& operator=(const PositionsKept&) = delete;
+
+ private:
+  mjData* d_;
+  std::vector<mjtNum>* saved_;
+};
 
 }  // namespace contactlaws
 

@@ -34,6 +34,7 @@ DenseRows::DenseRows(Simulation* sim)
 void DenseRows::Capture(State* state) {
   const mjModel* m = sim_->model();
   mjData* d = sim_->data();
+  const PositionsKept kept(m, d, &kept_positions_);
   mj_forward(m, d);
   state->time = d->time;
   state->qpos.assign(d->qpos, d->qpos + m->nq);

@@ -84,6 +84,7 @@ class DenseRows {
   State start_;
   State end_;
   std::vector<TagReading> readings_;  // interpolated
+  std::vector<mjtNum> kept_positions_;  // Capture's qpos, kept through its forward pass
 };
 
 }  // namespace contactlaws

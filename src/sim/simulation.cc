@@ -198,12 +198,14 @@ std::vector<TagReading> Simulation::Readings() const {
 }
 
 void Simulation::Sample(std::vector<double>* row) {
+  const PositionsKept kept(model(), data_.get(), &kept_positions_);
   mj_forward(model(), data_.get());  // the run's options: mj_forward reads its timestep
   Row(data_.get(), Readings(), contacts_->ElasticEnergy(), contacts_->DissipatedEnergy(), row);
 }
 
 void Simulation::SampleMotion(std::vector<double>* row) {
   if (!motion_only_) return Sample(row);
+  const PositionsKept kept(model(), data_.get(), &kept_positions_);
   mj_kinematics(model(), data_.get());
   mj_comPos(model(), data_.get());
   mj_comVel(model(), data_.get());
