@@ -19,7 +19,10 @@ constexpr double kSubStepLags = 1.0;
 
 // A sub-step that meets a touch ends this fraction of it past the surface
 // (inside the contact: d = 0+); none is shorter than kShortestSubStep of the
-// sub-step (a touch that close is taken at the sub-step's end).
+// touching point's own sub-step (TouchSubStep; a touch that close is taken
+// at the sub-step's end), nor of the step's sub-step, which a point out of
+// contact does not set (a touch 2 us into a 2 ms sub-step would be taken
+// 5 um deep at 2.6 m/s).
 constexpr double kPastTouch = 1e-6;
 constexpr double kShortestSubStep = 1e-3;
 // The inner integration ends within this fraction of the step.
@@ -71,17 +74,18 @@ constexpr double kSustainedFraction = 0.5;
 constexpr double kSustainedDepth = 2.0;
 constexpr double kSustainedTurn = 0.25;
 
-// A point out of contact at the step's start whose gap is wider than
-// kStepReachFactor times what its start's approach rate and acceleration
-// (the free one, and its neighbours' forces at the start: b - A f) close
-// within the step cannot touch in it: it sets no sub-step, and is left out
-// of its neighbours' Gershgorin sums (it carries no force). The narrowphase
-// keeps such points within the bodies' reach (their spins and bounding
-// radii: Reach), far wider than a point's own. die_throw.xml's die, in
-// flight with one corner 5 mm from the floor closing at 1.4 m/s, took 600
-// sub-steps a step in flight. Should one touch within the step after all
-// (its neighbours' forces grew), the rest of the step is divided again at
-// that point's own sub-step (TouchSubStep).
+// A point out of contact at the step's start sets no sub-step: the sub-step
+// meets its touch (foreseen from the rows' acceleration at the sub-step's
+// start: its neighbours' forces with b), and the rest of the step is
+// divided again at the point's own (TouchSubStep). Taken from the step's
+// start, the impact's sub-step was spent on the whole step: die_throw.xml's
+// die, rocking on an edge with the other 0.25 mm above the floor, took 600
+// sub-steps a step, of which the far edge touched in none. A point whose gap
+// is wider than kStepReachFactor times what its start's approach rate and
+// acceleration (b, and b - A f at the start's forces) close within the step
+// is also left out of its neighbours' Gershgorin sums: it carries no force
+// (the narrowphase keeps points within the bodies' reach, their spins and
+// bounding radii: Reach, far wider than a point's own).
 
 // The held rows of a sub-step (ImplicitRows) are taken by the trapezoid rule
 // when they are all stick springs it resolves: each row's rate
@@ -127,19 +131,20 @@ double TangentialEnergy(const FrictionParams& params, const FrictionState& state
 }
 
 // The time (s, in (0, limit]) at which a depth d <= 0 at rate r and
-// acceleration b reaches 0: the first root of d + r t + b t^2 / 2.
+// acceleration b reaches 0: the first root of d + r t + b t^2 / 2, or limit.
+// The roots as d / q and 2 q / b, q = -(r + sign(r) sqrt(r^2 - 2 b d)) / 2,
+// which no b loses: the textbook (-r + sqrt(r^2 - 2 b d)) / b cancels to
+// nothing for b near 0 (a ball 0.14 mm from another closing at 0.76 m/s at
+// b = -7e-17 m/s^2 was found to touch at the end of the step, 1.4 mm deep).
 double TimeToSurface(double d, double r, double b, double limit) {
   const double discriminant = r * r - 2 * b * d;
-  if (b != 0 && discriminant >= 0) {
-    const double root = (-r + std::sqrt(discriminant)) / b;
-    const double other = (-r - std::sqrt(discriminant)) / b;
-    double first = limit;
-    for (const double x : {root, other}) {
-      if (x > 0) first = std::min(first, x);
-    }
-    return first;
-  }
-  return r > 0 ? std::min(limit, -d / r) : limit;
+  if (discriminant < 0) return limit;
+  const double q = -0.5 * (r + std::copysign(std::sqrt(discriminant), r));
+  double first = limit;
+  // d / q is 0 at the surface: touching now when approaching
+  if (q != 0 && (d / q > 0 || (d / q == 0 && r > 0))) first = std::min(first, d / q);
+  if (b != 0 && 2 * q / b > 0) first = std::min(first, 2 * q / b);
+  return first;
 }
 
 // The first time (s, in (0, limit]) at which a depth d <= 0 at rate r,
@@ -615,7 +620,9 @@ int ContactStepper::SubSteps(double h) {
       }
     }
     row_sum_[i] = row;
-    if (!(row > 0) || out_of_reach_[i]) continue;
+    // a point out of contact sets its sub-step from its touch on
+    // (TouchSubStep)
+    if (!(row > 0) || !(e.depth > 0)) continue;
     // an impact's speed: its v0 once in contact, its rate and what b adds
     // within the step before
     const double speed = std::max({std::abs(e.depth_rate) + std::abs(b_[i]) * h,
@@ -706,7 +713,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   sustained_.assign(n, 0);
   if (options_.substeps <= 0) {
     // x'' = b - A f at the start's forces (u = M^-1 J^T f)
-    std::vector<double>& start = free_acc_;
+    std::vector<double>& start = start_force_;
     start.assign(rows_, 0.0);
     for (int j = 0; j < n; ++j) {
       if (!(points_[j].depth > 0)) continue;
@@ -765,6 +772,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   std::vector<double> v0(n), committed(n);
   std::vector<double> contact_v0(n);  // the law's v0 of this sub-step
   std::vector<char> open(n);
+  std::vector<char> divided(n, 0);  // per point: its touch divided the step again
   // per point: the rolling and torsional part of its friction's stored
   // energy and power at the step's start, which stay through the step
   std::vector<double> rolling_energy(n, 0.0), rolling_power(n, 0.0);
@@ -839,10 +847,11 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
                                  mass_[i]};
         e.touch_power = e.weight * EvaluateLaw(law, touch).dissipated_power(e.touch_velocity);
         open[i] = true;
-        if (out_of_reach_[i]) {
-          // a touch SubSteps did not foresee: the rest of the step in even
-          // sub-steps no longer than the point's own
-          out_of_reach_[i] = 0;
+        if (!(points_[i].depth > 0) && !divided[i]) {
+          // the first touch of a point out of contact at the step's start,
+          // which SubSteps left out: the rest of the step in even sub-steps
+          // no longer than the point's own
+          divided[i] = 1;
           const double own = TouchSubStep(i, std::abs(e.touch_velocity));
           const double rest = h_ - t;
           if (own < delta && rest > 0) delta = rest / std::ceil(rest / own);
@@ -889,6 +898,10 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       mju_mulMatTVec(local, anchor_turn_.data() + 9 * i, moved, 3, 3);
       for (int c = 0; c < 3; ++c) e.local[0][c] = points_[i].local[0][c] + local[c];
     }
+    // the rows' acceleration at the sub-step's start (RK4's first stage),
+    // which the touches within it are foreseen from
+    Rk4Start(t, force, x, rate);
+    const double* start_acc = stage_.data() + 3 * rows;
     // the sub-step, ended just past a touch within it (as the auto timestep
     // does), so that a force that jumps at d = 0+ acts from the touch on
     double step = std::min(delta, h_ - t);
@@ -899,16 +912,9 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     bool free = true;
     for (int i = 0; i < n && free; ++i) free = !(x[i] > 0);
     if (free) {
-      free_acc_.resize(rows);
-      zero_force_.assign(rows, 0.0);
-      // u = w = 0, and p = M^-1 J^T P
-      stage_spread_.assign(static_cast<size_t>(2) * m->nv, 0.0);
-      double* p = stage_spread_.data() + m->nv;
-      if (moving_) Spread(impulse_.data(), p);
-      Acceleration(t, stage_spread_.data(), stage_spread_.data(), p, free_acc_.data());
       double touch = std::numeric_limits<double>::infinity();
       for (int i = 0; i < n; ++i) {
-        touch = std::min(touch, FirstCrossing(x[i], rate[i], free_acc_[i],
+        touch = std::min(touch, FirstCrossing(x[i], rate[i], start_acc[i],
                                               moving_ ? b1_[i] : 0.0, h_ - t));
       }
       if (touch > delta) {
@@ -917,10 +923,15 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
         free = false;
       }
     }
+    // a point out of contact: its touch from its acceleration at the
+    // sub-step's start, its neighbours' forces with it (b alone missed the
+    // touches of points that those forces pushed into contact)
     for (int i = 0; !free && i < n; ++i) {
-      if (x[i] > 0 || x[i] + step * rate[i] + 0.5 * step * step * b_[i] <= 0) continue;
-      const double touch = TimeToSurface(x[i], rate[i], b_[i], step);
-      step = std::min(step, std::max(touch * (1 + kPastTouch), kShortestSubStep * delta));
+      const double a = start_acc[i];
+      if (x[i] > 0 || x[i] + step * rate[i] + 0.5 * step * step * a <= 0) continue;
+      const double touch = TimeToSurface(x[i], rate[i], a, step);
+      const double shortest = kShortestSubStep * std::min(delta, TouchSubStep(i, rate[i] + a * step));
+      step = std::min(step, std::max(touch * (1 + kPastTouch), shortest));
     }
     // classical RK4 on (x, x'), the points in contact at the sub-step's
     // start the ones with a force (a touch ends a sub-step), each at its v0
@@ -1299,17 +1310,43 @@ bool ContactStepper::SolveInDofs(const std::vector<int>& held,
   return true;
 }
 
+void ContactStepper::Rk4Start(double t0, const std::vector<double>& start_force,
+                              const std::vector<double>& x, const std::vector<double>& rate) {
+  const int rows = rows_;
+  const int nv = nv_;
+  stage_.resize(static_cast<size_t>(16) * rows);
+  stage_spread_.resize(static_cast<size_t>(10) * nv);
+  // stage 0 (Rk4SubStep's layout): the sub-step's start
+  double* d0 = stage_.data();
+  double* r0 = stage_.data() + rows;
+  double* f0 = stage_.data() + 2 * rows;
+  double* acc0 = stage_.data() + 3 * rows;
+  std::copy(x.begin(), x.end(), d0);
+  std::copy(rate.begin(), rate.end(), r0);
+  std::copy(start_force.begin(), start_force.end(), f0);
+  double* u0 = stage_spread_.data();
+  double* w0 = stage_spread_.data() + 4 * nv;
+  double* p = stage_spread_.data() + 8 * nv;
+  double* stage_p = stage_spread_.data() + 9 * nv;
+  if (moving_) {
+    Spread(impulse_.data(), p);
+    std::copy(p, p + nv, stage_p);
+  }
+  SpreadForces(f0, nullptr, nullptr, nullptr, u0, w0);
+  Acceleration(t0, u0, w0, stage_p, acc0);
+}
+
 void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double>& start_force,
                                 const std::vector<double>& v0, std::vector<double>* x,
                                 std::vector<double>* rate) {
   const int n = static_cast<int>(points_.size());
   const int rows = rows_;
-  // stage s: position, rate, force, and the acceleration b - A f, per row
+  // stage s: position, rate, force, and the acceleration b - A f, per row;
+  // stage 0 is Rk4Start's
   double* d[4];
   double* r[4];
   double* f[4];
   double* acc[4];
-  stage_.resize(static_cast<size_t>(16) * rows);
   for (int s = 0; s < 4; ++s) {
     d[s] = stage_.data() + (4 * s + 0) * rows;
     r[s] = stage_.data() + (4 * s + 1) * rows;
@@ -1319,7 +1356,6 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
   // per stage: u = M^-1 J^T f; with J', w = M^-1 J'^T f, and p = M^-1 J^T
   // P at the sub-step's start and at the stage
   const int nv = nv_;
-  stage_spread_.resize(static_cast<size_t>(10) * nv);
   double* u[4];
   double* w[4];
   for (int s = 0; s < 4; ++s) {
@@ -1328,20 +1364,14 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
   }
   double* p = stage_spread_.data() + 8 * nv;
   double* stage_p = stage_spread_.data() + 9 * nv;
-  if (moving_) Spread(impulse_.data(), p);
   const double offsets[4] = {0, 0.5 * step, 0.5 * step, step};
-  for (int s = 0; s < 4; ++s) {
+  for (int s = 1; s < 4; ++s) {
     for (int i = 0; i < rows; ++i) {
-      if (s == 0) {
-        d[0][i] = (*x)[i];
-        r[0][i] = (*rate)[i];
-      } else {
-        d[s][i] = (*x)[i] + offsets[s] * r[s - 1][i];
-        r[s][i] = (*rate)[i] + offsets[s] * acc[s - 1][i];
-      }
-      f[s][i] = s == 0 ? start_force[i] : 0.0;
+      d[s][i] = (*x)[i] + offsets[s] * r[s - 1][i];
+      r[s][i] = (*rate)[i] + offsets[s] * acc[s - 1][i];
+      f[s][i] = 0.0;
     }
-    for (int i = 0; s > 0 && i < n; ++i) {
+    for (int i = 0; i < n; ++i) {
       const bool acting = (*x)[i] > 0;  // in contact at the sub-step's start
       if (acting && resting_[i]) {
         // held over the sub-step; ImplicitRows corrects it at its end
@@ -1375,16 +1405,10 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
     }
     // the impulse at the stage, as RK4 takes P' = f: M^-1 J^T P = p + offset
     // u of the stage before (p: the sub-step's start), and x''
-    for (int k = 0; moving_ && k < nv; ++k) {
-      stage_p[k] = s == 0 ? p[k] : p[k] + offsets[s] * u[s - 1][k];
-    }
+    for (int k = 0; moving_ && k < nv; ++k) stage_p[k] = p[k] + offsets[s] * u[s - 1][k];
     // u and w of a later stage from the first's, through the rows whose
     // force the stage changed
-    if (s == 0) {
-      SpreadForces(f[0], nullptr, nullptr, nullptr, u[0], w[0]);
-    } else {
-      SpreadForces(f[s], f[0], u[0], w[0], u[s], w[s]);
-    }
+    SpreadForces(f[s], f[0], u[0], w[0], u[s], w[s]);
     Acceleration(t0 + offsets[s], u[s], w[s], stage_p, acc[s]);
   }
   for (int i = 0; i < rows; ++i) {

@@ -123,13 +123,18 @@ class ContactStepper {
   // contact) and its dampers' lag (normal and tangential), and each friction
   // point's tangential period, over the per-contact counts; the couplings
   // weighed by the points' weights.
-  // Sets row_sum_ and leaves out the points out_of_reach_ marks.
+  // Sets row_sum_. A point out of contact sets none (TouchSubStep).
   int SubSteps(double h);
-  // The sub-step of point i touching at speed within the step (an
-  // out-of-reach point: SubSteps left it out): its impact's duration over
+  // The sub-step of point i touching at speed within the step (out of
+  // contact at its start: SubSteps left it out): its impact's duration over
   // the per-contact count, and its damper's lag at the impact's deepest.
   double TouchSubStep(int i, double speed) const;
-  // One RK4 sub-step, starting t0 s into the step, of the rows' positions
+  // RK4's first stage at t0 s into the step, from x, rate and the forces
+  // start_force (stage_, stage_spread_): its acceleration foresees the
+  // sub-step's touches before Rk4SubStep takes it.
+  void Rk4Start(double t0, const std::vector<double>& start_force, const std::vector<double>& x,
+                const std::vector<double>& rate);
+  // One RK4 sub-step (Rk4Start's first stage), starting t0 s into the step, of the rows' positions
   // and rates (b - A f(x, x'), and the terms of the moving J:
   // Acceleration), from the forces at its start; adds to impulse_ and
   // impulse_sum_.
@@ -273,8 +278,7 @@ class ContactStepper {
   // nv each: Rk4SubStep's M^-1 J^T f at its four stages, M^-1 J^T P at its
   // start and at a stage
   std::vector<double> stage_spread_;
-  std::vector<double> free_acc_;   // per row: x'' at a free sub-step's start
-  std::vector<double> zero_force_; // per row: 0 (a free sub-step's forces)
+  std::vector<double> start_force_;  // per row: the step's start forces (the resting test)
   // per row: f, the row's force with x'' = b - A f (normal: F_n; tangential:
   // minus the friction force on body[1] along the tangent)
   std::vector<double> impulse_;    // per row: P at the step's end, N s
@@ -297,8 +301,8 @@ class ContactStepper {
   std::vector<char> resting_;      // per point: at rest (kRestingFraction)
   // per point: in contact through the step, vibrating (kSustainedFraction)
   std::vector<char> sustained_;
-  // per point: out of contact beyond what the step can close (SubSteps
-  // leaves it out until it touches)
+  // per point: out of contact beyond what the step can close (left out of
+  // its neighbours' Gershgorin sums)
   std::vector<char> out_of_reach_;
   std::vector<double> row_sum_;    // per point: SubSteps' Gershgorin sum, 1/kg
   std::vector<double> x_start_;    // per row: x at the sub-step's start

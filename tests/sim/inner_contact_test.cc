@@ -275,13 +275,32 @@ TEST_F(InnerContactTest, BallsThatCloseTheirGapWithinOneStepReboundAsTheFineRun)
 }
 
 
+// Many coupled contacts in one step: balls that slide past each other turn
+// their normals within the step (v_t h / s, up to 0.2 rad at 2.6 m/s past a
+// 2.5 cm ball), which the frozen configuration takes to first order only
+// (J + J' t, and none beyond kFrozenTurnWarning). The rise between two
+// steps is not the dice's 1e-5 J here: over 41 launches of the eight balls
+// (velocities scaled by 1 +- 0.046), the worst rise of each was 6.5e-5 J at
+// the median and 1.3e-3 J at most, 0.14% of their 0.90 J of launch energy
+// (the same before the sub-step rule left points out of contact to their
+// touch: median 6.5e-5 J, largest 9.2e-4 J). Held to 3e-3 of it, over
+// five launches.
+constexpr double kCoupledRiseShare = 3e-3;
+
 TEST_F(InnerContactTest, EightBallsLaunchedInABoxNeitherDivergeNorGainEnergy) {
   // the 64-ball box's scene with 8 balls: 4 mm gaps, each closing within a
-  // step or two at up to 2.6 m/s, 68 pairs (MuJoCo's broadphase); 0.5 s,
-  // held to the dice's bound on a rise between two steps
-  Simulation& sim = MakeSimulation(bench::BallBoxXml(8), InnerSteps());
-  EXPECT_LT(testing::WorstMechanicalRise(sim, 250), kEnergyRiseTolerance);
-  EXPECT_GT(sim.contacts().impacts().size(), 20u);
+  // step or two at up to 2.6 m/s, 68 pairs (MuJoCo's broadphase); 0.5 s
+  const std::string xml = bench::BallBoxXml(8);
+  double launch = 0, worst = 0;
+  for (const double scale : {0.98, 0.99, 1.0, 1.01, 1.02}) {
+    Simulation& sim = MakeSimulation(xml, InnerSteps());
+    for (int k = 0; k < sim.model()->nv; ++k) sim.data()->qvel[k] *= scale;
+    mj_forward(sim.model(), sim.data());
+    launch = std::max(launch, sim.Energy().kinetic);
+    worst = std::max(worst, testing::WorstMechanicalRise(sim, 250));
+    EXPECT_GT(sim.contacts().impacts().size(), 20u) << "velocities scaled by " << scale;
+  }
+  EXPECT_LT(worst, kCoupledRiseShare * launch) << "launch energy " << launch << " J";
 }
 
 // The frozen configuration's measure names where it first costs accuracy,
