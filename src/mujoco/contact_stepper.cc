@@ -107,43 +107,6 @@ constexpr double kTrapezoidRate = 1.0;
 // same turn: kFrozenTurnWarning).
 constexpr double kMovingJacobianTurn = kFrozenTurnWarning;
 
-// A cylinder lying on its side (its axis within this cosine of the contact's
-// tangent plane) rolls on it: its contact points, MuJoCo's lowest points of
-// its two rims, are then no material points.
-constexpr double kAcrossAxis = 1e-2;
-
-// The point whose motion carries a contact's depth on geom g, the contact
-// at pos with normal n: where the surface is smooth and the contact point
-// rolls over it, its centre of curvature (a sphere's centre, the nearest
-// point of a capsule's segment, of a cylinder's axis when it lies on its
-// side), which moves along n as the surface does; elsewhere the contact
-// point itself, a material point (a vertex, an edge, a face's point). The
-// point's J' (the moving Jacobian) is taken there: at a rolling capsule's
-// material contact point it is the point's centripetal r w^2 along n, which
-// the contact never sees (a capsule rolling at 50 rad/s took 75 m/s^2 of
-// lift a step, and its ledger booked 0.48 J of damping in 0.3 s of rolling
-// that dissipates nothing). Returns false for a material point.
-bool RollingCentre(const mjModel* m, const mjData* d, int g, const double pos[3],
-                   const double n[3], double centre[3]) {
-  const int type = m->geom_type[g];
-  const mjtNum* xpos = d->geom_xpos + 3 * g;
-  if (type == mjGEOM_SPHERE) {
-    vec3::Copy(centre, xpos);
-    return true;
-  }
-  if (type != mjGEOM_CAPSULE && type != mjGEOM_CYLINDER) return false;
-  // the geom's axis: its frame's z
-  const mjtNum* xmat = d->geom_xmat + 9 * g;
-  const double axis[3] = {xmat[2], xmat[5], xmat[8]};
-  if (type == mjGEOM_CYLINDER && std::abs(vec3::Dot(axis, n)) > kAcrossAxis) return false;
-  double offset[3];
-  vec3::Sub(offset, pos, xpos);
-  const double half = m->geom_size[3 * g + 1];
-  const double along = std::clamp(vec3::Dot(offset, axis), -half, half);
-  for (int k = 0; k < 3; ++k) centre[k] = xpos[k] + along * axis[k];
-  return true;
-}
-
 // An orthonormal tangent pair (t1, t2) of the unit normal n.
 void TangentBasis(const double n[3], double t[6]) {
   // the world axis least along n, crossed with it
@@ -450,19 +413,17 @@ void ContactStepper::BuildJacobianRates(const mjModel* m, mjData* d) {
     if (far && !(std::abs(e.depth_rate) * h_ < e.depth)) continue;
     velocity_only_[i] = far;
     // the normal row, d' = -(J1 - J0)^T n, at the points that carry the
-    // depth (RollingCentre): a sphere's centre, a capsule's segment point, a
-    // cylinder's axis point on its side (the contact point rolls: no
-    // material point), else the contact point (a vertex, an edge's or a
-    // face's point)
+    // depth (AddDepthJacobianRate): a sphere's centre, a capsule's segment
+    // point, a cylinder's rim centre (the contact point rolls: no material
+    // point), else the contact point (a vertex, an edge's or a face's point)
     double* row = jdot_.data() + static_cast<size_t>(i) * nv;
     bool spheres = true;
     for (int b = 0; b < 2; ++b) {
       const int g = pair.geom[b];
       spheres = spheres && m->geom_type[g] == mjGEOM_SPHERE;
-      mjtNum direction[3], centre[3];
+      mjtNum direction[3];
       mju_scl3(direction, e.gradient, b == 0 ? 1.0 : -1.0);
-      const bool rolling = RollingCentre(m, d, g, e.pos, e.normal, centre);
-      AddPointJacobianRate(m, d, pair.body[b], rolling ? centre : e.pos, direction, row);
+      AddDepthJacobianRate(m, d, pair.body[b], g, e.pos, direction, row);
     }
     if (spheres) {
       // two spheres: the normal is their centres' line, which turns at

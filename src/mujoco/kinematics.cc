@@ -2,6 +2,8 @@
 
 #include "mujoco/kinematics.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <Eigen/Core>
@@ -136,6 +138,69 @@ void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjt
     const mjtNum* dot = d->cdof_dot + 6 * j;
     row[j] += Dot(dot + 3, direction) + Dot(dot, r_dir) + Dot(d->cdof + 6 * j, vel_dir);
   }
+}
+
+namespace {
+
+// A cylinder's contact point is on its rim (or its side) when it lies at
+// least this share of the radius from the axis, and the rim is no flat face
+// on the other surface when the axis is at least this sine away from the
+// normal (a cylinder standing on its face: its rim points are the face's
+// material points).
+constexpr double kRimShare = 0.5;
+constexpr double kFlatSine = 0.05;
+
+}  // namespace
+
+void AddDepthJacobianRate(const mjModel* m, const mjData* d, int body, int g,
+                          const double pos[3], const double direction[3], double* row) {
+  const int type = m->geom_type[g];
+  const mjtNum* xpos = d->geom_xpos + 3 * g;
+  if (type == mjGEOM_SPHERE) {
+    AddPointJacobianRate(m, d, body, xpos, direction, row);
+    return;
+  }
+  if (type != mjGEOM_CAPSULE && type != mjGEOM_CYLINDER) {
+    AddPointJacobianRate(m, d, body, pos, direction, row);
+    return;
+  }
+  // the geom's axis (its frame's z) and the nearest axis point
+  const mjtNum* xmat = d->geom_xmat + 9 * g;
+  const double a[3] = {xmat[2], xmat[5], xmat[8]};
+  double offset[3], c[3];
+  vec3::Sub(offset, pos, xpos);
+  const double half = m->geom_size[3 * g + 1];
+  const double along = std::clamp(vec3::Dot(offset, a), -half, half);
+  for (int k = 0; k < 3; ++k) c[k] = xpos[k] + along * a[k];
+  if (type == mjGEOM_CAPSULE) {
+    AddPointJacobianRate(m, d, body, c, direction, row);
+    return;
+  }
+  double radial[3];
+  vec3::Sub(radial, pos, c);
+  const double da = vec3::Dot(direction, a);
+  const double sine = std::sqrt(std::max(0.0, 1 - da * da));
+  const double radius = m->geom_size[3 * g];
+  if (mju_norm3(radial) < kRimShare * radius || sine < kFlatSine) {
+    AddPointJacobianRate(m, d, body, pos, direction, row);
+    return;
+  }
+  AddPointJacobianRate(m, d, body, c, direction, row);
+  // -r (delta . a)(delta . (w x a)) / s, differentiated with w held:
+  // -r [k^2 + (delta . a)(delta . (w x a'))] / s - r (delta . a)^2 k^2 / s^3,
+  // k = delta . a', a' = w x a; as a row in w: torque . w
+  const mjtNum* spin = d->cvel + 6 * body;
+  double turn[3], a_delta[3], turn_delta[3];
+  mju_cross(turn, spin, a);
+  const double k = vec3::Dot(direction, turn);
+  mju_cross(a_delta, a, direction);
+  mju_cross(turn_delta, turn, direction);
+  double torque[3];
+  for (int i = 0; i < 3; ++i) {
+    torque[i] = -radius / sine * (k * a_delta[i] + da * turn_delta[i]) -
+                radius * da * da * k / (sine * sine * sine) * a_delta[i];
+  }
+  AddTorque(m, d, body, torque, row);
 }
 
 void PointInBodies(const mjData* d, const GeomPair& pair, const mjtNum pos[3], double on0[3],

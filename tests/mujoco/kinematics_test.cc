@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <random>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "mujoco_test_util.h"
@@ -102,6 +105,142 @@ TEST_F(KinematicsTest, PointJacobianRateGivesMujocosAccelerationAtRestingJoints)
       // rounding of sums of terms up to |w|^2 r ~ 100 m/s^2
       EXPECT_NEAR(mju_dot(row.data(), d->qvel, m->nv), expected[3 + i], 1e-12)
           << name << " " << i;
+    }
+  }
+}
+
+// The height above z = 0 of geom g's lowest point at d's state: a
+// cylinder's lowest rim point, a capsule's or a sphere's lowest surface
+// point, a box's vertex (vertex: 0-7, its corner's signs; -1: the lowest).
+double LowestHeight(const mjModel* m, const mjData* d, int g, int vertex = -1) {
+  const mjtNum* xpos = d->geom_xpos + 3 * g;
+  const mjtNum* xmat = d->geom_xmat + 9 * g;
+  const mjtNum* size = m->geom_size + 3 * g;
+  const double az = xmat[8];  // the axis's z
+  double lowest = std::numeric_limits<double>::infinity();
+  switch (m->geom_type[g]) {
+    case mjGEOM_SPHERE:
+      return xpos[2] - size[0];
+    case mjGEOM_CAPSULE:
+      return xpos[2] - size[1] * std::abs(az) - size[0];
+    case mjGEOM_CYLINDER:
+      return xpos[2] - size[1] * std::abs(az) - size[0] * std::sqrt(1 - az * az);
+    default:  // a box: its eight vertices
+      for (int k = 0; k < 8; ++k) {
+        if (vertex >= 0 && k != vertex) continue;
+        double z = xpos[2];
+        for (int j = 0; j < 3; ++j) z += ((k >> j) & 1 ? 1 : -1) * size[j] * xmat[6 + j];
+        lowest = std::min(lowest, z);
+      }
+      return lowest;
+  }
+}
+
+TEST_F(KinematicsTest, TheDepthsJacobianRateIsItsSecondDerivativeAlongTheMotion) {
+  // a free body above the floor, tilted and moving at a constant qvel: the
+  // depth of its lowest point (direction -z) has d''(t) = row . qvel at q''
+  // = 0, the row AddDepthJacobianRate's, against the central second
+  // difference of LowestHeight over q(t) = q + qvel t (MuJoCo's
+  // mj_integratePos: exact for a free body). At a rolling contact the
+  // material point's centripetal acceleration is not the depth's: a
+  // cylinder on its rim, spinning about its axis, keeps its rim's lowest
+  // point where it is. The second difference at 1e-5 s is off by dt^2 / 12
+  // times the fourth derivative (w^4 r: 1e-5 m/s^2 at 70 rad/s) and by the
+  // heights' roundoff over dt^2 (1e-6 m/s^2 at 0.1 m).
+  constexpr double kDt = 1e-5;          // s
+  constexpr double kTolerance = 1e-4;   // m/s^2
+  const char* geoms[] = {R"(type="cylinder" size="0.03 0.01")", R"(type="capsule" size="0.02 0.06")",
+                         R"(type="sphere" size="0.03")", R"(type="box" size="0.03 0.04 0.05")"};
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (const char* geom : geoms) {
+    UniqueModel m = Load(fmt::format(R"(<mujoco>
+  <worldbody><body name="body" pos="0 0 0.1"><freejoint/><geom {}/></body></worldbody>
+</mujoco>)", geom));
+    mjData* d = MakeData(m.get());
+    for (int trial = 0; trial < 5; ++trial) {
+      // an orientation whose axis is 15 to 75 degrees from the vertical
+      // (neither flat on a face nor on its side), and a velocity
+      const double tilt = (15 + 15 * trial) * M_PI / 180;
+      const double quat[4] = {std::cos(tilt / 2), std::sin(tilt / 2) * std::cos(trial),
+                              std::sin(tilt / 2) * std::sin(trial), 0};
+      std::vector<mjtNum> q0(m->nq), v(m->nv);
+      q0[2] = 0.1;
+      for (int k = 0; k < 4; ++k) q0[3 + k] = quat[k];
+      mju_normalize4(q0.data() + 3);
+      for (int k = 0; k < 6; ++k) v[k] = (k < 3 ? 1.0 : 40.0) * uniform(random);
+      // a box's lowest vertex at q0, followed
+      int vertex = -1;
+      mju_copy(d->qpos, q0.data(), m->nq);
+      mj_kinematics(m.get(), d);
+      for (int k = 0; m->geom_type[0] == mjGEOM_BOX && k < 8; ++k) {
+        if (vertex < 0 || LowestHeight(m.get(), d, 0, k) < LowestHeight(m.get(), d, 0, vertex)) {
+          vertex = k;
+        }
+      }
+      const auto height = [&](double t) {
+        mju_copy(d->qpos, q0.data(), m->nq);
+        mj_integratePos(m.get(), d->qpos, v.data(), t);
+        mj_kinematics(m.get(), d);
+        return LowestHeight(m.get(), d, 0, vertex);
+      };
+      const double second = (height(kDt) - 2 * height(0) + height(-kDt)) / (kDt * kDt);
+      // the row at q0: the lowest point's position, the depth along -z
+      mju_copy(d->qpos, q0.data(), m->nq);
+      mju_copy(d->qvel, v.data(), m->nv);
+      mj_forward(m.get(), d);
+      const double z = LowestHeight(m.get(), d, 0);
+      // the lowest point itself: its x and y from the geometry (the rim's or
+      // the end's point below the centre), found as the point of the surface
+      // at height z nearest below the geom's frame: by the same formulas
+      double pos[3];
+      const mjtNum* xpos = d->geom_xpos;
+      const mjtNum* xmat = d->geom_xmat;
+      const mjtNum* size = m->geom_size;
+      const double axis[3] = {xmat[2], xmat[5], xmat[8]};
+      const double sign = axis[2] > 0 ? -1 : 1;  // toward the lower end
+      switch (m->geom_type[0]) {
+        case mjGEOM_CYLINDER: {
+          // the lower rim's centre, and its radius toward -z in its plane
+          double u[3] = {-axis[2] * axis[0], -axis[2] * axis[1], -(1 - axis[2] * axis[2])};
+          mju_normalize3(u);
+          for (int k = 0; k < 3; ++k) pos[k] = xpos[k] + sign * size[1] * axis[k] + size[0] * u[k];
+          break;
+        }
+        case mjGEOM_CAPSULE:
+          for (int k = 0; k < 3; ++k) pos[k] = xpos[k] + sign * size[1] * axis[k];
+          pos[2] -= size[0];
+          break;
+        case mjGEOM_SPHERE:
+          mju_copy3(pos, xpos);
+          pos[2] -= size[0];
+          break;
+        default: {
+          int lowest = 0;
+          double best = std::numeric_limits<double>::infinity();
+          for (int k = 0; k < 8; ++k) {
+            double vertex[3];
+            mju_copy3(vertex, xpos);
+            for (int j = 0; j < 3; ++j) {
+              for (int c = 0; c < 3; ++c) {
+                vertex[c] += ((k >> j) & 1 ? 1 : -1) * size[j] * xmat[3 * c + j];
+              }
+            }
+            if (vertex[2] < best) {
+              best = vertex[2];
+              lowest = k;
+              mju_copy3(pos, vertex);
+            }
+          }
+          (void)lowest;
+        }
+      }
+      ASSERT_NEAR(pos[2], z, 1e-12) << geom << ": the lowest point";
+      std::vector<mjtNum> row(m->nv, 0.0);
+      const double direction[3] = {0, 0, -1};
+      AddDepthJacobianRate(m.get(), d, 1, 0, pos, direction, row.data());
+      const double rate = mju_dot(row.data(), v.data(), m->nv);
+      EXPECT_NEAR(rate, -second, kTolerance) << geom << ", tilt " << tilt;
     }
   }
 }
