@@ -301,6 +301,9 @@ class ContactStepper {
   std::vector<char> resting_;      // per point: at rest (kRestingFraction)
   // per point: in contact through the step, vibrating (kSustainedFraction)
   std::vector<char> sustained_;
+  // the episodes of the points at rest or sustained in the last step, and
+  // this step's (kCalmBeforeRest)
+  std::vector<int> calm_, calm_next_;
   // per point: out of contact beyond what the step can close (left out of
   // its neighbours' Gershgorin sums)
   std::vector<char> out_of_reach_;
