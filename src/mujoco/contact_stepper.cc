@@ -653,6 +653,9 @@ int ContactStepper::SubSteps(double h) {
 }
 
 double ContactStepper::TouchSubStep(int i, double speed) const {
+  // a fixed count of sub-steps is the user's: no touch divides it (nor are
+  // the rule's row sums formed)
+  if (options_.substeps > 0) return std::numeric_limits<double>::infinity();
   const LawParams& law = model_.pairs()[points_[i].pair].params;
   const double row = row_sum_[i];
   if (!(row > 0)) return std::numeric_limits<double>::infinity();

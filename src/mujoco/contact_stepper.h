@@ -127,7 +127,8 @@ class ContactStepper {
   int SubSteps(double h);
   // The sub-step of point i touching at speed within the step (out of
   // contact at its start: SubSteps left it out): its impact's duration over
-  // the per-contact count, and its damper's lag at the impact's deepest.
+  // the per-contact count, and its damper's lag at the impact's deepest;
+  // infinity with a fixed count of sub-steps (options_.substeps).
   double TouchSubStep(int i, double speed) const;
   // RK4's first stage at t0 s into the step, from x, rate and the forces
   // start_force (stage_, stage_spread_): its acceleration foresees the

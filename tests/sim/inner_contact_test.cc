@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -65,6 +66,32 @@ TEST_F(InnerContactTest, ThePapersBallReboundsAsTheLawAtTwoMilliseconds) {
     EXPECT_NEAR(impact.restitution_post(), reference, kReboundTolerance * reference)
         << c.law << " e = " << c.e;
   }
+}
+
+TEST_F(InnerContactTest, AFixedCountOfSubStepsIsTheUsers) {
+  // --contact-steps 20: sub-steps of h / 20 while a point is in contact
+  // (the free flight before a touch and after a separation in one), and
+  // one more where a touch ends one, none divided again at a touch (a
+  // touch's division read the rule's row sums, which a fixed count never
+  // forms: the run crashed at the ball's first touch); 1e-4 s sub-steps
+  // resolve the paper's ball within the auto rule's tolerance
+  const Scene scene(std::string(CONTACTLAWS_SOURCE_DIR) + "/mjcf/bouncing_ball.xml");
+  constexpr int kSubSteps = 20;
+  SimulationOptions options = InnerSteps(kSubSteps);
+  options.overrides.law = *ParseLawName("flores");
+  options.overrides.restitution = 0.9;
+  const Episode impact = testing::SweepFirstImpact(scene, options);
+  const double reference =
+      IntegrateDrop(Drop{}, *options.overrides.law, 0.9).restitution_post;
+  EXPECT_NEAR(impact.restitution_post(), reference, kReboundTolerance * reference);
+  const std::unique_ptr<Simulation> sim = scene.Make(options);
+  int most = 0;
+  while (sim->time() < 1.0) {
+    sim->Step();
+    most = std::max(most, sim->contacts().last_substeps());
+  }
+  EXPECT_GT(most, 1);
+  EXPECT_LE(most, kSubSteps + 1);
 }
 
 TEST_F(InnerContactTest, WithoutTheInnerStepsTheSameBallGainsEnergy) {
