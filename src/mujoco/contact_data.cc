@@ -72,6 +72,7 @@ void ContactData::Reset() {
   capture_->Reset();
   committer_->Reset();
   step_start_->Forget();
+  stepper_->Forget();
 }
 
 void ContactData::StartWith(const std::vector<PointEvaluation>& points) {

@@ -67,6 +67,8 @@ class ContactStepper {
 
   // Forgets the points of the previous evaluation.
   void Clear() { near_.clear(); }
+  // Forgets the previous steps (a reset): which episodes were calm.
+  void Forget() { calm_.clear(); }
   // A point of pair within reach but not in contact (con.dist >= 0), of
   // weight (PointEvaluation::weight).
   void AddNear(const mjData* d, int pair, const mjContact& con, double weight,
