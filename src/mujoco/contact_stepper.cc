@@ -748,7 +748,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     // how far its rate carries the point within the step (h d', h d'' / w)
     const double w = std::sqrt(w2);
     const double amplitude = std::hypot(e.depth_rate / w, acc / w2);
-    // (a point comes to rest from a calm step: kCalmBeforeRest)
+    // (a point comes to rest from a calm step only: calm_)
     const bool calm = std::find(calm_.begin(), calm_.end(), e.episode) != calm_.end();
     resting_[i] = calm && !e.friction_state.sliding &&
                   amplitude * std::max(1.0, w * h_) < kRestingFraction * e.depth;

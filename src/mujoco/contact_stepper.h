@@ -305,7 +305,7 @@ class ContactStepper {
   // per point: in contact through the step, vibrating (kSustainedFraction)
   std::vector<char> sustained_;
   // the episodes of the points at rest or sustained in the last step, and
-  // this step's (kCalmBeforeRest)
+  // this step's: a point rests only after a calm step
   std::vector<int> calm_, calm_next_;
   // per point: out of contact beyond what the step can close (left out of
   // its neighbours' Gershgorin sums)

@@ -69,8 +69,7 @@ void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjt
 // the surface is smooth and the contact point rolls over it, not the
 // material point at the contact, whose centripetal r w^2 the contact never
 // sees (a capsule rolling at 50 rad/s took 75 m/s^2 of lift a step, and its
-// ledger booked 0.48 J of damping in 0.3 s that dissipates nothing; a coin
-// spinning on its rim gained 0.35 J and spun up to 1,300 rad/s).
+// ledger booked 0.48 J of damping in 0.3 s that dissipates nothing).
 //  - A sphere: its centre.
 //  - A capsule: the nearest point of its segment, c: the contact point is
 //    c + R direction, whose depth moves as c does.

@@ -190,9 +190,8 @@ TEST_F(KinematicsTest, TheDepthsJacobianRateIsItsSecondDerivativeAlongTheMotion)
       mju_copy(d->qvel, v.data(), m->nv);
       mj_forward(m.get(), d);
       const double z = LowestHeight(m.get(), d, 0);
-      // the lowest point itself: its x and y from the geometry (the rim's or
-      // the end's point below the centre), found as the point of the surface
-      // at height z nearest below the geom's frame: by the same formulas
+      // the lowest point itself (the contact point a narrowphase gives on a
+      // floor), by the geometry LowestHeight reads
       double pos[3];
       const mjtNum* xpos = d->geom_xpos;
       const mjtNum* xmat = d->geom_xmat;
@@ -215,25 +214,13 @@ TEST_F(KinematicsTest, TheDepthsJacobianRateIsItsSecondDerivativeAlongTheMotion)
           mju_copy3(pos, xpos);
           pos[2] -= size[0];
           break;
-        default: {
-          int lowest = 0;
-          double best = std::numeric_limits<double>::infinity();
-          for (int k = 0; k < 8; ++k) {
-            double vertex[3];
-            mju_copy3(vertex, xpos);
-            for (int j = 0; j < 3; ++j) {
-              for (int c = 0; c < 3; ++c) {
-                vertex[c] += ((k >> j) & 1 ? 1 : -1) * size[j] * xmat[3 * c + j];
-              }
-            }
-            if (vertex[2] < best) {
-              best = vertex[2];
-              lowest = k;
-              mju_copy3(pos, vertex);
+        default:  // the box's lowest vertex, found above
+          mju_copy3(pos, xpos);
+          for (int j = 0; j < 3; ++j) {
+            for (int c = 0; c < 3; ++c) {
+              pos[c] += ((vertex >> j) & 1 ? 1 : -1) * size[j] * xmat[3 * c + j];
             }
           }
-          (void)lowest;
-        }
       }
       ASSERT_NEAR(pos[2], z, 1e-12) << geom << ": the lowest point";
       std::vector<mjtNum> row(m->nv, 0.0);
