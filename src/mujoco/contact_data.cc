@@ -123,6 +123,7 @@ void ContactData::AfterStep() {
   if (inner) stepper_->CorrectPositions(&view_, d_);
   committer_->AfterStep(d_, evaluator_->latest(), *capture_, *step_start_,
                         inner ? stepper_.get() : nullptr);
+  stepper_->Committed();
   stepper_->Spend();
   capture_->Release();
 }

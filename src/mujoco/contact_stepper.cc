@@ -307,6 +307,17 @@ int ContactStepper::FindPoint(int pair, const double pos[3]) const {
   return -1;
 }
 
+bool ContactStepper::EndRate(int pair, const double pos[3], double* rate) const {
+  for (const PointEnd& end : previous_end_) {
+    if (end.pair == pair && end.pos[0] == pos[0] && end.pos[1] == pos[1] &&
+        end.pos[2] == pos[2]) {
+      *rate = end.rate;
+      return true;
+    }
+  }
+  return false;
+}
+
 void ContactStepper::BuildContactSpace(const mjModel* m, mjData* d) {
   const int nv = m->nv;
   const int n = static_cast<int>(points_.size());
@@ -681,6 +692,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   active_ = false;
   samples_used_ = 0;
   substeps_ = 0;
+  end_.clear();
   points_ = touching;
   points_.insert(points_.end(), near_.begin(), near_.end());
   force_.assign(m->nv, 0.0);
@@ -967,6 +979,12 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
+  }
+  end_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    end_[i].pair = points_[i].pair;
+    vec3::Copy(end_[i].pos, points_[i].pos);
+    end_[i].rate = rate[i];
   }
   // the step's mean contact force: the rows' forces f(t) act along J(t) =
   // J + J' t, -(J^T P + J'^T Q) / h with Q the impulse's first moment,

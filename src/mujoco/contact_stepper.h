@@ -68,7 +68,11 @@ class ContactStepper {
   // Forgets the points of the previous evaluation.
   void Clear() { near_.clear(); }
   // Forgets the previous steps (a reset): which episodes were calm.
-  void Forget() { calm_.clear(); }
+  void Forget() {
+    calm_.clear();
+    end_.clear();
+    previous_end_.clear();
+  }
   // A point of pair within reach but not in contact (con.dist >= 0), of
   // weight (PointEvaluation::weight).
   void AddNear(const mjData* d, int pair, const mjContact& con, double weight,
@@ -84,6 +88,12 @@ class ContactStepper {
   // After the step: moves d->qpos onto the inner trajectory (no-op when the
   // step had no points).
   void CorrectPositions(const mjModel* m, mjData* d) const;
+  // After every step: its points' end rates (none when Integrate did not run
+  // in it) become EndRate's.
+  void Committed() {
+    previous_end_.swap(end_);
+    end_.clear();
+  }
   // Drops the step's samples (committed, or a step refused).
   void Spend() { samples_used_ = 0; active_ = false; }
 
@@ -97,6 +107,13 @@ class ContactStepper {
   double Rate(int k, int id) const { return rates_[static_cast<size_t>(k) * rows_ + id]; }
   // The inner point of pair at pos, or -1.
   int FindPoint(int pair, const double pos[3]) const;
+  // The depth rate (m/s) at the end of the step before this one of its inner
+  // point of pair at pos, in *rate: the speed a point that separated in that
+  // step's last sub-step left with, which the bodies' velocity at a material
+  // point no longer under the contact misreads (a ball spinning at w, its
+  // contact point moved v_t h on: by w v_t h). False when that step had no
+  // such point.
+  bool EndRate(int pair, const double pos[3], double* rate) const;
   // The episode of inner point id when the step started (-1: none).
   int StartEpisode(int id) const { return points_[id].episode; }
   // The largest angle (rad) a body with points turned within one step, at
@@ -313,6 +330,14 @@ class ContactStepper {
   std::vector<double> row_sum_;    // per point: SubSteps' Gershgorin sum, 1/kg
   std::vector<double> x_start_;    // per row: x at the sub-step's start
   std::vector<double> rate_start_; // per row: x' at the sub-step's start
+  // A point of a step and its depth rate at the step's end: this step's
+  // (end_) and the one's before (previous_end_, EndRate).
+  struct PointEnd {
+    int pair = -1;
+    double pos[3] = {0, 0, 0};
+    double rate = 0;
+  };
+  std::vector<PointEnd> end_, previous_end_;
   std::vector<InnerSample> samples_;
   int samples_used_ = 0;
   int substeps_ = 0;

@@ -145,8 +145,13 @@ void StepCommitter::CommitInner(mjData* d, ContactStepper* inner,
     }
     episodes_.CloseVanished([&](int pair, const double pos[3], const double normal[3],
                                 double last_rate) {
+      // within the step: the rows' rate; at its start, separated in the
+      // step before's last sub-step: that step's rows' rate at its end
       const int id = k == 0 ? -1 : inner->FindPoint(pair, pos);
-      return id >= 0 ? -inner->Rate(k, id) : SeparationSpeed(d, pair, pos, normal, last_rate, start);
+      if (id >= 0) return -inner->Rate(k, id);
+      double rate = 0;
+      if (k == 0 && inner->EndRate(pair, pos, &rate)) return -rate;
+      return SeparationSpeed(d, pair, pos, normal, last_rate, start);
     });
     impacts_.Commit(sample.time, sample.points, episodes_);
   }
