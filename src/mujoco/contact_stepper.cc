@@ -59,7 +59,7 @@ constexpr double kRestingFraction = 1e-1;
 // depth, stays in contact through the step at depths below kSustainedDepth
 // times its own: its sub-step is kSustainedTurn rad of its vibration's
 // phase at the stiffness there, not a share of an impact's duration at its
-// episode's speed v0 (per_contact_hertz of them, pi / 50 rad a sub-step).
+// episode's speed v0 (per_contact_hertz of them, pi / 20 rad a sub-step).
 // box_stack.xml's boxes, rocking in contact on each other's pushes, kept
 // the pushes' sub-steps for as long as their contacts lasted. For
 // F = K d^n the vibration's largest depth is below 1.5 times its own, where

@@ -32,6 +32,12 @@ constexpr double kMujocoStep = 2e-3;
 // independent integration.
 constexpr double kReboundTolerance = 5e-3;
 
+// The default sub-steps per contact (ContactStepsOptions: 20, 80 for
+// Kelvin-Voigt) are the fewest that keep the paper's ball within the auto
+// timestep's default accuracy, 1e-3 of its rebound: measured 2e-4 at most
+// over the five laws below, 1.1e-3 at 10 (hertz), 1.3e-3 at 8 (flores).
+constexpr double kCountsRebound = 1e-3;
+
 // The ledger's trapezoid of the sub-samples' dissipated power against the
 // RK4 sub-steps' own energy change: O(sub-step^2) of the dissipated energy.
 constexpr double kLedgerTolerance = 1e-3;
@@ -64,6 +70,8 @@ TEST_F(InnerContactTest, ThePapersBallReboundsAsTheLawAtTwoMilliseconds) {
     const Episode impact = testing::SweepFirstImpact(scene, options);
     const double reference = IntegrateDrop(Drop{}, law, c.e).restitution_post;
     EXPECT_NEAR(impact.restitution_post(), reference, kReboundTolerance * reference)
+        << c.law << " e = " << c.e;
+    EXPECT_NEAR(impact.restitution_post(), reference, kCountsRebound * reference)
         << c.law << " e = " << c.e;
   }
 }
@@ -143,11 +151,15 @@ TEST_F(InnerContactTest, TheLedgerBooksWhatTheStepsWithContactsDissipate) {
 // energy (dissipative dampers, friction), and every step with points puts all
 // the bodies on the inner trajectory (Euler's own gain in free flight,
 // m g^2 h^2 / 2 = 1.9e-4 J a step for a cube, included), so the mechanical
-// energy rises only by rounding (1.8e-15 J at most over 5 s, measured) and
-// the dissipated energy never falls. 1e-9 J leaves rounding six orders of
-// room; an unbooked force's work shows at 1e-4 J to 1e-3 J (the patch's new
-// point that took the episode of the point in contact: 1.3e-3 J).
-constexpr double kStackLedgerTolerance = 1e-9;  // J
+// energy rises only by the RK4 sub-steps' truncation: 4.3e-8 J at most, in
+// the step that ends the top cube's landing, whose last sub-step takes the
+// contact's last 1.6e-7 J of spring energy to its separation (at 50
+// sub-steps per contact that step fell by 9e-8 J). The dissipated energy
+// never falls (rounding: 1e-9 J leaves it six orders of room). An unbooked
+// force's work shows at 1e-4 J to 1e-3 J (the patch's new point that took
+// the episode of the point in contact: 1.3e-3 J).
+constexpr double kStackRiseTolerance = 1e-6;  // J
+constexpr double kStackFallTolerance = 1e-9;  // J
 
 TEST_F(InnerContactTest, TheBoxStackNeitherGainsEnergyNorUnbooksWhatItDissipated) {
   Simulation& sim = MakeSceneSimulation("box_stack.xml", InnerSteps());
@@ -170,8 +182,8 @@ TEST_F(InnerContactTest, TheBoxStackNeitherGainsEnergyNorUnbooksWhatItDissipated
     mechanical = next;
     dissipated = e.dissipated;
   }
-  EXPECT_LT(worst_rise, kStackLedgerTolerance) << "at t = " << rise_time;
-  EXPECT_LT(worst_fall, kStackLedgerTolerance) << "at t = " << fall_time;
+  EXPECT_LT(worst_rise, kStackRiseTolerance) << "at t = " << rise_time;
+  EXPECT_LT(worst_fall, kStackFallTolerance) << "at t = " << fall_time;
 }
 
 TEST_F(InnerContactTest, ReadingARowLeavesTheRunsPathAlone) {
