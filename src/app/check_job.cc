@@ -197,11 +197,13 @@ bool PrintTag(Simulation* sim, int t, const std::vector<StartContact>& starts,
   Print(out, "  {:.1f} steps per contact at {} s: {} (needs timestep <= {:.3g} s)\n", steps, dt,
         ok ? "ok" : "TOO COARSE", estimate.timestep());
   if (!ok) {
-    // the contact integrated inside the step instead (ContactStepsOptions)
-    const ContactSteps per(kDefaultAccuracy);
+    // the contact integrated inside the step instead, at the contact steps'
+    // own count per contact (ContactStepsOptions)
+    const ContactStepsOptions inner;
+    const ContactSteps per(inner.per_contact_hertz, inner.per_contact_linear);
     Print(out,
-          "  or {}: {:.0f} sub-steps of its normal law inside each {} s "
-          "step near and in this contact ({:.0f} per contact; friction stays at the step)\n",
+          "  or {}: {:.0f} sub-steps of its law and friction inside each {} s "
+          "step near and in this contact ({:.0f} per contact)\n",
           names.Given("contact_steps", "auto"),
           std::ceil(dt / per.NormalStep(law.law, estimate.contact_duration)), dt,
           per.PerContact(law.law));
