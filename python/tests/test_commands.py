@@ -233,7 +233,7 @@ def test_check_prints_the_command_lines_report():
     report = contactlaws.check(BALL, law="flores", restitution=0.4, timestep=1e-4)
     # the options it advises named as the keywords
     assert report == _contactlaws._spelled(printed)
-    assert 'or contact_steps="auto": 4 sub-steps' in report
+    assert 'or contact_steps="auto": 2 sub-steps' in report
     assert "need a smaller timestep (timestep)" in report
     assert "steps per contact" in printed
 
