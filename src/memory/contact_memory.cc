@@ -371,6 +371,14 @@ void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& poi
       }
     }
   }
+  for (const Deferred& deferred : deferred_) {
+    double end = 0;
+    for (const PointEvaluation& e : points) {
+      if (e.episode == deferred.episode && !e.touch) end = e.dissipated_power;
+    }
+    dissipated_ += deferred.energy - deferred.half_step * end;
+  }
+  deferred_.clear();
   held_.clear();
   if (booking == Booking::kHeldForce) {
     for (const PointEvaluation& e : points) {

@@ -214,6 +214,18 @@ class DissipationLedger {
   void Commit(double t, const std::vector<PointEvaluation>& points,
               Booking booking = Booking::kTrapezoid);
 
+  // Adds energy (J) dissipated over the committed steps beyond what their
+  // booking took: an integrator's own quadrature of the power against the
+  // trapezoid (ContactStepper::dissipation_correction).
+  void Book(double energy) { dissipated_ += energy; }
+  // Books energy (J) at the next Commit less half_step (s) times the laws'
+  // dissipated power there of the point of episode (none: 0): the end of
+  // a trapezoid the next Commit closes, replaced by an integrator's own
+  // quadrature (ContactStepper::LastSubStep).
+  void Defer(int episode, double energy, double half_step) {
+    deferred_.push_back({episode, energy, half_step});
+  }
+
   // J, up to the latest evaluation (points, at time t): the laws' dissipated
   // power and friction's power on the bodies, integrated, less the energy the
   // friction springs of points hold now.
@@ -229,6 +241,12 @@ class DissipationLedger {
     double torque[3];    // N m, PointEvaluation::friction_torque
   };
 
+  struct Deferred {
+    int episode;
+    double energy;     // J
+    double half_step;  // s
+  };
+  std::vector<Deferred> deferred_;
   bool has_committed_ = false;
   double committed_time_ = 0;
   double committed_power_ = 0;

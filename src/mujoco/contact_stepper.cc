@@ -307,6 +307,15 @@ int ContactStepper::FindPoint(int pair, const double pos[3]) const {
   return -1;
 }
 
+bool ContactStepper::LastSubStep(int id, double* energy, double* half_step) const {
+  if (id >= static_cast<int>(last_staged_.size()) || !(last_staged_[id].half_step > 0)) {
+    return false;
+  }
+  *energy = last_staged_[id].energy;
+  *half_step = last_staged_[id].half_step;
+  return true;
+}
+
 bool ContactStepper::EndRate(int pair, const double pos[3], double* rate) const {
   for (const PointEnd& end : previous_end_) {
     if (end.pair == pair && end.pos[0] == pos[0] && end.pos[1] == pos[1] &&
@@ -831,6 +840,14 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
   rest_shift_.assign(m->nv, 0.0);
   rates_.clear();
 
+  // the laws' dissipated power of each point at the sample (W), the points
+  // whose sub-step RK4 took (in contact at its start, not resting), and the
+  // last sub-step's RK4 quadrature of their power, its start's power and
+  // length (dissipation_correction; the step's last: LastSubStep).
+  std::vector<double> power(n, 0.0), staged_energy(n, 0.0), staged_start(n, 0.0);
+  std::vector<char> staged(n, 0);
+  double staged_step = 0;
+  dissipation_correction_ = 0;
   double t = 0;  // since the step's start, s
   for (int k = 0; t < h_ * (1 - kEndTolerance); ++k) {
     if (samples_.size() <= static_cast<size_t>(k)) samples_.resize(k + 1);
@@ -841,6 +858,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     rates_.insert(rates_.end(), rate.begin(), rate.end());
     samples_used_ = k + 1;
     std::fill(force.begin(), force.end(), 0.0);
+    std::fill(power.begin(), power.end(), 0.0);
     for (int i = 0; i < n; ++i) {
       const bool in_contact = x[i] > 0;
       const int r = tangent_row_[i];
@@ -849,6 +867,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
         // the step's start: the evaluator's points as they are
         if (in_contact) {
           force[i] = points_[i].force;
+          power[i] = points_[i].dissipated_power;
           for (int j = 0; r >= 0 && j < 2; ++j) {
             force[r + j] = -vec3::Dot(points_[i].friction, tangent + 3 * j);
           }
@@ -897,7 +916,7 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       const ContactForce f =
           EvaluateLaw(law, ContactState{x[i], rate[i], e.impact_velocity, mass_[i]});
       e.force = force[i] = e.weight * f.total;
-      e.dissipated_power = e.weight * f.dissipated_power(rate[i]);
+      e.dissipated_power = power[i] = e.weight * f.dissipated_power(rate[i]);
       if (r < 0) continue;
 
       // the friction at this sub-sample, against the memory of the one
@@ -930,6 +949,13 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
       for (int c = 0; c < 3; ++c) moved[c] = x[r] * tangent[c] + x[r + 1] * tangent[3 + c];
       mju_mulMatTVec(local, anchor_turn_.data() + 9 * i, moved, 3, 3);
       for (int c = 0; c < 3; ++c) e.local[0][c] = points_[i].local[0][c] + local[c];
+    }
+    // the last sub-step's quadrature against the ledger's trapezoid, whose
+    // end is this sample
+    for (int i = 0; i < n && staged_step > 0; ++i) {
+      if (!staged[i]) continue;
+      dissipation_correction_ +=
+          staged_energy[i] - 0.5 * staged_step * (staged_start[i] + power[i]);
     }
     // the rows' acceleration at the sub-step's start (RK4's first stage),
     // which the touches within it are foreseen from
@@ -975,10 +1001,26 @@ void ContactStepper::Integrate(const mjModel* m, mjData* d,
     x_start_ = x;
     rate_start_ = rate;
     Rk4SubStep(t, step, force, contact_v0, &x, &rate);
+    for (int i = 0; i < n; ++i) {
+      staged[i] = acting[i] && !resting_[i];
+      if (!staged[i]) continue;
+      const double* stages = stage_power_.data() + 3 * i;
+      staged_start[i] = power[i];
+      staged_energy[i] = step / 6 * (power[i] + 2 * stages[0] + 2 * stages[1] + stages[2]);
+    }
+    staged_step = step;
     RestingShift(m, step, acting, &x);
     ImplicitRows(step, acting, force, contact_v0, &x, &rate);
     t += step;
     ++substeps_;
+  }
+  // the step's last sub-step: the ledger's trapezoid ends it at the next
+  // step's start (LastSubStep)
+  last_staged_.assign(n, LastStaged());
+  for (int i = 0; i < n && staged_step > 0; ++i) {
+    if (!staged[i]) continue;
+    last_staged_[i].energy = staged_energy[i] - 0.5 * staged_step * staged_start[i];
+    last_staged_[i].half_step = 0.5 * staged_step;
   }
   end_.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -1404,6 +1446,7 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
   double* p = stage_spread_.data() + 8 * nv;
   double* stage_p = stage_spread_.data() + 9 * nv;
   const double offsets[4] = {0, 0.5 * step, 0.5 * step, step};
+  stage_power_.assign(static_cast<size_t>(3) * n, 0.0);
   for (int s = 1; s < 4; ++s) {
     for (int i = 0; i < rows; ++i) {
       d[s][i] = (*x)[i] + offsets[s] * r[s - 1][i];
@@ -1417,8 +1460,10 @@ void ContactStepper::Rk4SubStep(double t0, double step, const std::vector<double
         f[s][i] = start_force[i];
       } else if (acting && d[s][i] > 0) {
         const LawParams& law = model_.pairs()[points_[i].pair].params;
-        f[s][i] = points_[i].weight *
-                  EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]}).total;
+        const ContactForce law_force =
+            EvaluateLaw(law, ContactState{d[s][i], r[s][i], v0[i], mass_[i]});
+        f[s][i] = points_[i].weight * law_force.total;
+        stage_power_[3 * i + s - 1] = points_[i].weight * law_force.dissipated_power(r[s][i]);
       }
       // (a resting point's force is held whatever the stage's depth, and
       // so is its implicit friction: the stages' predicted depths, from

@@ -155,6 +155,13 @@ void StepCommitter::CommitInner(mjData* d, ContactStepper* inner,
     });
     impacts_.Commit(sample.time, sample.points, episodes_);
   }
+  ledger_.Book(inner->dissipation_correction());
+  for (int id = 0; id < inner->point_count(); ++id) {
+    double energy = 0, half_step = 0;
+    if (inner_episode_[id] >= 0 && inner->LastSubStep(id, &energy, &half_step)) {
+      ledger_.Defer(inner_episode_[id], energy, half_step);
+    }
+  }
 }
 
 void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,

@@ -400,5 +400,29 @@ TEST(DissipationLedgerTest, ATouchDissipatesFromItsTouchNotFromTheLastCommit) {
   EXPECT_NEAR(ledger.Dissipated(1.0, {touch}), 1.0, kRoundoff);
 }
 
+TEST(DissipationLedgerTest, ADeferredQuadratureReplacesTheTrapezoidTheNextCommitCloses) {
+  // an integrator took 3 J over [0, 1] where the ledger's trapezoid books
+  // 0.5 (4 + 8) = 6 J: it defers 3 J less the trapezoid's start half (2 J)
+  // and the end half at the next commit's power of the same episode
+  DissipationLedger ledger;
+  PointEvaluation p = Point(0, 0, 1e-3, 1, 1, /*episode=*/0);
+  p.dissipated_power = 4.0;  // W
+  ledger.Commit(0.0, {p});
+  ledger.Defer(/*episode=*/0, 3.0 - 0.5 * 4.0, /*half_step=*/0.5);
+  PointEvaluation end = p;
+  end.dissipated_power = 8.0;
+  ledger.Commit(1.0, {end});
+  EXPECT_NEAR(ledger.Dissipated(1.0, {end}), 3.0, kRoundoff);
+  // the next commits book their trapezoids alone
+  ledger.Commit(2.0, {end});
+  EXPECT_NEAR(ledger.Dissipated(2.0, {end}), 3.0 + 8.0, kRoundoff);
+  // a point gone at the next commit (it separated): its end half is 0
+  ledger.Reset();
+  ledger.Commit(0.0, {p});
+  ledger.Defer(0, 1.0 - 0.5 * 4.0, 0.5);
+  ledger.Commit(1.0, {});
+  EXPECT_NEAR(ledger.Dissipated(1.0, {}), 1.0, kRoundoff);
+}
+
 }  // namespace
 }  // namespace contactlaws
