@@ -160,6 +160,41 @@ void AddDepthJacobianRate(const mjModel* m, const mjData* d, int body, int g,
     AddPointJacobianRate(m, d, body, xpos, direction, row);
     return;
   }
+  if (type == mjGEOM_ELLIPSOID) {
+    // the support point p = c + R s(u), u = R^T direction, s(u) = A^2 u / q,
+    // q = |A u|, A the semi-axes: besides its material point's
+    // acceleration, it rolls over the surface at R S u', S = ds/du =
+    // (A^2 - A^2 u u^T A^2 / q^2) / q (S u = 0 along u), u' = -w_body x u,
+    // which adds (w x n)^T R S R^T (w x n) to n . p'' (n = direction, w the
+    // spin): a torque row n x (R S R^T (w x n)). For a sphere (S = r (I -
+    // u u^T)) it cancels the material point's centripetal term, as a
+    // sphere's centre gives it.
+    AddPointJacobianRate(m, d, body, pos, direction, row);
+    const mjtNum* xmat = d->geom_xmat + 9 * g;
+    const mjtNum* size = m->geom_size + 3 * g;
+    const mjtNum* spin = d->cvel + 6 * body;
+    double u[3], turn[3], turn_local[3];
+    mju_mulMatTVec(u, xmat, direction, 3, 3);
+    mju_cross(turn, spin, direction);
+    mju_mulMatTVec(turn_local, xmat, turn, 3, 3);
+    double q2 = 0, along = 0;  // |A u|^2, u^T A^2 (w x n)
+    for (int k = 0; k < 3; ++k) {
+      const double a2 = size[k] * size[k];
+      q2 += a2 * u[k] * u[k];
+      along += a2 * u[k] * turn_local[k];
+    }
+    if (!(q2 > 0)) return;
+    const double q = std::sqrt(q2);
+    double rolled_local[3], rolled[3], torque[3];
+    for (int k = 0; k < 3; ++k) {
+      const double a2 = size[k] * size[k];
+      rolled_local[k] = (a2 * turn_local[k] - a2 * u[k] * along / q2) / q;
+    }
+    mju_mulMatVec(rolled, xmat, rolled_local, 3, 3);
+    mju_cross(torque, direction, rolled);
+    AddTorque(m, d, body, torque, row);
+    return;
+  }
   if (type != mjGEOM_CAPSULE && type != mjGEOM_CYLINDER) {
     AddPointJacobianRate(m, d, body, pos, direction, row);
     return;

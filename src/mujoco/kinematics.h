@@ -79,6 +79,9 @@ void AddPointJacobianRate(const mjModel* m, const mjData* d, int body, const mjt
 //    . p = direction . c + r s moves as c does and as the axis tilts:
 //    J' at c, and the derivative of -r (direction . a)(direction . (w x a))
 //    / s at the body's spin w, a torque row (AddTorque).
+//  - An ellipsoid: its support point along direction, which rolls over the
+//    surface (at its curvature) as the body turns: the material point's J'
+//    and a torque row for the rolling.
 //  - Elsewhere (a vertex, an edge, a face's point, a cylinder's face): the
 //    contact point, a material point.
 void AddDepthJacobianRate(const mjModel* m, const mjData* d, int body, int g,

@@ -125,6 +125,12 @@ double LowestHeight(const mjModel* m, const mjData* d, int g, int vertex = -1) {
       return xpos[2] - size[1] * std::abs(az) - size[0];
     case mjGEOM_CYLINDER:
       return xpos[2] - size[1] * std::abs(az) - size[0] * std::sqrt(1 - az * az);
+    case mjGEOM_ELLIPSOID: {
+      // the support distance along -z: |A R^T z|
+      double q2 = 0;
+      for (int j = 0; j < 3; ++j) q2 += size[j] * size[j] * xmat[6 + j] * xmat[6 + j];
+      return xpos[2] - std::sqrt(q2);
+    }
     default:  // a box: its eight vertices
       for (int k = 0; k < 8; ++k) {
         if (vertex >= 0 && k != vertex) continue;
@@ -144,13 +150,15 @@ TEST_F(KinematicsTest, TheDepthsJacobianRateIsItsSecondDerivativeAlongTheMotion)
   // mj_integratePos: exact for a free body). At a rolling contact the
   // material point's centripetal acceleration is not the depth's: a
   // cylinder on its rim, spinning about its axis, keeps its rim's lowest
-  // point where it is. The second difference at 1e-5 s is off by dt^2 / 12
+  // point where it is, and an ellipsoid's lowest point rolls over its
+  // surface. The second difference at 1e-5 s is off by dt^2 / 12
   // times the fourth derivative (w^4 r: 1e-5 m/s^2 at 70 rad/s) and by the
   // heights' roundoff over dt^2 (1e-6 m/s^2 at 0.1 m).
   constexpr double kDt = 1e-5;          // s
   constexpr double kTolerance = 1e-4;   // m/s^2
   const char* geoms[] = {R"(type="cylinder" size="0.03 0.01")", R"(type="capsule" size="0.02 0.06")",
-                         R"(type="sphere" size="0.03")", R"(type="box" size="0.03 0.04 0.05")"};
+                         R"(type="sphere" size="0.03")", R"(type="box" size="0.03 0.04 0.05")",
+                         R"(type="ellipsoid" size="0.05 0.03 0.02")"};
   std::mt19937 random(7);
   std::uniform_real_distribution<double> uniform(-1, 1);
   for (const char* geom : geoms) {
@@ -214,6 +222,18 @@ TEST_F(KinematicsTest, TheDepthsJacobianRateIsItsSecondDerivativeAlongTheMotion)
           mju_copy3(pos, xpos);
           pos[2] -= size[0];
           break;
+        case mjGEOM_ELLIPSOID: {
+          // R A^2 u / |A u|, u = R^T (-z)
+          double u[3], s[3], q2 = 0;
+          for (int j = 0; j < 3; ++j) {
+            u[j] = -xmat[6 + j];
+            q2 += size[j] * size[j] * u[j] * u[j];
+          }
+          for (int j = 0; j < 3; ++j) s[j] = size[j] * size[j] * u[j] / std::sqrt(q2);
+          mju_mulMatVec(pos, xmat, s, 3, 3);
+          mju_addTo3(pos, xpos);
+          break;
+        }
         default:  // the box's lowest vertex, found above
           mju_copy3(pos, xpos);
           for (int j = 0; j < 3; ++j) {
