@@ -38,7 +38,7 @@ def _impact_frame(columns):
 
 def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipation=None,
         duration=2, timestep=None, max_timestep=None, accuracy=None, integrator=None,
-        sample_rate=1000, columns=None, settle=False):
+        sample_rate=1000, columns=None, settle=False, contact_steps=None):
     """Run a scene as `contactlaws run` does.
 
     scene: an MJCF file with contactlaw tags. law, restitution (e in [0, 1]),
@@ -47,6 +47,8 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     relative error, and max_timestep, s). sample_rate: trajectory rows per
     simulated second. columns: "bodies,joints,pairs,friction,energy" or a part.
     settle: the bodies in contact at t = 0 moved into their static equilibrium.
+    contact_steps: "auto" or a number of sub-steps: the contacts integrated
+    inside each fixed step (docs/timestep.md, "Contact steps"); None: off.
     Returns a RunResult: .trajectory (time s, positions m, velocities m/s,
     forces N, energies J), .impacts, .summary; a diverged run keeps its rows
     up to the divergence, and warns.
@@ -54,7 +56,8 @@ def run(scene, *, law=None, restitution=None, friction=None, mu=None, dissipatio
     options = dict(law=law, restitution=restitution, friction=friction, mu=mu,
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
-                   sample_rate=sample_rate, columns=columns, settle=settle)
+                   sample_rate=sample_rate, columns=columns, settle=settle,
+                   contact_steps=contact_steps)
     names, rows, impacts, summary, messages, divergence = _run(str(scene), options)
     for message in messages:
         _warnings.warn(f"{scene}: {message}", stacklevel=2)

@@ -33,7 +33,8 @@ def run(scene: Scene, *, law: Optional[str] = ..., restitution: Optional[Number]
         dissipation: Optional[Number] = ..., duration: Number = ...,
         timestep: Union[Number, Literal["auto"], None] = ..., max_timestep: Optional[Number] = ...,
         accuracy: Optional[Number] = ..., integrator: Optional[str] = ...,
-        sample_rate: Number = ..., columns: Optional[str] = ..., settle: bool = ...) -> RunResult: ...
+        sample_rate: Number = ..., columns: Optional[str] = ..., settle: bool = ...,
+        contact_steps: Union[int, Literal["auto"], None] = ...) -> RunResult: ...
 
 class Simulation(_Simulation):
     def __init__(self, scene: Scene, *, law: Optional[str] = ...,

@@ -62,7 +62,7 @@ class CompareResult:
 def compare(scene, *, laws="all", restitution=None, frictions=None, friction=None, mu=None,
             dissipation=None, duration=2, timestep=None, max_timestep=None, accuracy=None,
             integrator=None, sample_rate=1000, columns=None, settle=False, jobs=None,
-            impacts_per_point=False):
+            impacts_per_point=False, contact_steps=None):
     """Every law x restitution on a scene, as `contactlaws compare`.
 
     laws: "all", "L1,L2" or a list. restitution: e in [0, 1], "E1,E2",
@@ -70,7 +70,9 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
     models to compare, each with every law. friction, mu, dissipation (s/m):
     overrides of every tag. duration: s of simulated time; timestep: s or
     "auto" (accuracy: relative error; max_timestep: s); sample_rate: rows per
-    simulated second; jobs: runs at a time (the results do not depend on it).
+    simulated second; jobs: runs at a time (the results do not depend on it);
+    contact_steps: "auto" or a number of sub-steps, the contacts integrated
+    inside each fixed step (None: off).
     Returns a CompareResult; warns when a run failed (its summary row says why).
     """
     options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
@@ -78,7 +80,7 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
                    dissipation=dissipation, duration=duration, timestep=timestep,
                    max_timestep=max_timestep, accuracy=accuracy, integrator=integrator,
                    sample_rate=sample_rate, columns=columns, settle=settle, jobs=jobs,
-                   impacts_per_point=impacts_per_point)
+                   impacts_per_point=impacts_per_point, contact_steps=contact_steps)
     result = _contactlaws._compare(str(scene), options)
     if result["failed"]:
         _warnings.warn(f"{scene}: a run failed: its summary row gives the reason", stacklevel=2)
@@ -89,7 +91,7 @@ def compare(scene, *, laws="all", restitution=None, frictions=None, friction=Non
 
 def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, mu=None,
                 dissipation=None, duration=2, timestep=None, max_timestep=None, accuracy=None,
-                integrator=None, settle=False, jobs=None):
+                integrator=None, settle=False, jobs=None, contact_steps=None):
     """The first impact of every law x restitution, as `contactlaws
     restitution` (the paper's Fig. 7).
 
@@ -101,7 +103,7 @@ def restitution(scene, *, laws="all", restitution="0.1:1.0:0.1", friction=None, 
     options = dict(laws=_text_list(laws), restitution=_numbers(restitution),
                    friction=friction, mu=mu, dissipation=dissipation, duration=duration,
                    timestep=timestep, max_timestep=max_timestep, accuracy=accuracy,
-                   integrator=integrator, settle=settle, jobs=jobs)
+                   integrator=integrator, settle=settle, jobs=jobs, contact_steps=contact_steps)
     result = _contactlaws._restitution(str(scene), options)
     if result["incomplete"]:
         _warnings.warn(f"{scene}: a first contact did not end within the duration",

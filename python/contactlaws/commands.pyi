@@ -44,7 +44,8 @@ def compare(scene: Scene, *, laws: Names = ..., restitution: Restitutions = ...,
             max_timestep: Optional[Number] = ..., accuracy: Optional[Number] = ...,
             integrator: Optional[str] = ..., sample_rate: Number = ...,
             columns: Optional[str] = ..., settle: bool = ..., jobs: Optional[int] = ...,
-            impacts_per_point: bool = ...) -> CompareResult: ...
+            impacts_per_point: bool = ...,
+            contact_steps: Union[int, Literal["auto"], None] = ...) -> CompareResult: ...
 
 def restitution(scene: Scene, *, laws: Names = ..., restitution: Restitutions = ...,
                 friction: Optional[str] = ..., mu: Optional[Number] = ...,
@@ -52,7 +53,8 @@ def restitution(scene: Scene, *, laws: Names = ..., restitution: Restitutions = 
                 timestep: Union[Number, Literal["auto"], None] = ...,
                 max_timestep: Optional[Number] = ..., accuracy: Optional[Number] = ...,
                 integrator: Optional[str] = ..., settle: bool = ...,
-                jobs: Optional[int] = ...) -> pd.DataFrame: ...
+                jobs: Optional[int] = ...,
+                contact_steps: Union[int, Literal["auto"], None] = ...) -> pd.DataFrame: ...
 
 def replay(scene: Scene, data: Data, *, start: Literal["first", "refit"] = ...,
            refit_height: Optional[Number] = ..., refit_lead: int = ...,
