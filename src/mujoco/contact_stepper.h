@@ -196,7 +196,8 @@ class ContactStepper {
                     std::vector<double>* x, std::vector<double>* rate);
   // Before ImplicitRows, in a sub-step whose points in contact all rest:
   // moves x (and rest_shift_) by the displacement that makes the sub-step
-  // backward Euler's, x1 = x0 + step x1', in the dofs of their trees.
+  // backward Euler's, x1 = x0 + step x1', along their rows (the normal ones,
+  // and a stick spring's tangential ones), in the dofs of their trees.
   void RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
                     std::vector<double>* x);
   // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
@@ -323,6 +324,10 @@ class ContactStepper {
   std::vector<double> impulse_sum_;  // per row: delta * sum_k P_k, N s^2
   std::vector<double> force_;      // nv: the generalized force added
   std::vector<double> rest_shift_; // nv: RestingShift's displacement over the step
+  // RestingShift's rows: its candidates, those kept, their Cholesky factor
+  // (candidates x candidates) and right-hand side
+  std::vector<int> rest_candidates_, rest_rows_;
+  std::vector<double> rest_factor_, rest_rhs_;
   std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
   std::vector<int> implicit_rows_; // ImplicitRows' rows
