@@ -371,14 +371,23 @@ void DissipationLedger::Commit(double t, const std::vector<PointEvaluation>& poi
       }
     }
   }
-  for (const Deferred& deferred : deferred_) {
-    double end = 0;
+  // the deferred quadratures, each less its end's half at its episode's
+  // point (by episode, as held_ below: a pile's hundreds of points)
+  if (!deferred_.empty()) {
+    std::sort(deferred_.begin(), deferred_.end(),
+              [](const Deferred& a, const Deferred& b) { return a.episode < b.episode; });
+    for (const Deferred& deferred : deferred_) dissipated_ += deferred.energy;
     for (const PointEvaluation& e : points) {
-      if (e.episode == deferred.episode && !e.touch) end = e.dissipated_power;
+      if (e.touch || e.episode < 0) continue;
+      const auto found = std::lower_bound(
+          deferred_.begin(), deferred_.end(), e.episode,
+          [](const Deferred& f, int episode) { return f.episode < episode; });
+      if (found != deferred_.end() && found->episode == e.episode) {
+        dissipated_ -= found->half_step * e.dissipated_power;
+      }
     }
-    dissipated_ += deferred.energy - deferred.half_step * end;
+    deferred_.clear();
   }
-  deferred_.clear();
   held_.clear();
   if (booking == Booking::kHeldForce) {
     for (const PointEvaluation& e : points) {

@@ -71,8 +71,11 @@ constexpr double kRestingFraction = 1e-1;
 // kMovingJacobianTurn within the step: the turn moves its equilibrium, and
 // the amplitude at the start does not bound the step.
 constexpr double kSustainedFraction = 0.5;
-// A resting row is left out of RestingShift's solve when all but this
-// fraction of its A_ii lies in the span of the rows kept before it (a
+constexpr double kSustainedDepth = 2.0;
+constexpr double kSustainedTurn = 0.25;
+
+// A resting row is left out of ProjectOntoRestingRows' solve when all but
+// this fraction of its A_ii lies in the span of the rows kept before it (a
 // box's fourth corner on a plane: the three others span its dofs).
 constexpr double kRestRowDependence = 1e-9;
 // RestingShift takes the whole trees' shift, unprojected, where their
@@ -80,8 +83,6 @@ constexpr double kRestRowDependence = 1e-9;
 // h^2 a / 2 = 2e-8 m a 2 ms step off RK4's path (a stack at rest; the
 // projection's solve cost box_stack.xml 11% of its instructions).
 constexpr double kRestAcceleration = 1e-2;
-constexpr double kSustainedDepth = 2.0;
-constexpr double kSustainedTurn = 0.25;
 
 // A point rests only if the step before found it calm (at rest, or
 // vibrating within kSustainedFraction of its depth): the rule reads one
@@ -236,17 +237,27 @@ bool EnvelopeCholesky(double* s, int n, std::vector<int>* first) {
   return true;
 }
 
-// x with L L^T x = b (L from EnvelopeCholesky).
+// A step's point and a committed one are the same when their pair and
+// position are: the configuration is frozen over the step, and a sample's
+// points keep the step's positions.
+bool SamePoint(int pair, const double pos[3], int other_pair, const double other_pos[3]) {
+  return pair == other_pair && pos[0] == other_pos[0] && pos[1] == other_pos[1] &&
+         pos[2] == other_pos[2];
+}
+
+// x with L L^T x = b (L from EnvelopeCholesky; its rows stride apart, n by
+// default); x may be b.
 void EnvelopeSolve(const double* l, int n, const std::vector<int>& first, const double* b,
-                   double* x) {
+                   double* x, int stride = 0) {
+  if (stride == 0) stride = n;
   for (int i = 0; i < n; ++i) {
-    const double* li = l + static_cast<size_t>(i) * n;
+    const double* li = l + static_cast<size_t>(i) * stride;
     double sum = b[i];
     for (int k = first[i]; k < i; ++k) sum -= li[k] * x[k];
     x[i] = sum / li[i];
   }
   for (int i = n - 1; i >= 0; --i) {
-    const double* li = l + static_cast<size_t>(i) * n;
+    const double* li = l + static_cast<size_t>(i) * stride;
     x[i] /= li[i];
     for (int k = first[i]; k < i; ++k) x[k] -= li[k] * x[i];
   }
@@ -308,10 +319,7 @@ void ContactStepper::AddNear(const mjData* d, int p, const mjContact& con, doubl
 
 int ContactStepper::FindPoint(int pair, const double pos[3]) const {
   for (size_t i = 0; i < points_.size(); ++i) {
-    const PointEvaluation& e = points_[i];
-    if (e.pair == pair && e.pos[0] == pos[0] && e.pos[1] == pos[1] && e.pos[2] == pos[2]) {
-      return static_cast<int>(i);
-    }
+    if (SamePoint(points_[i].pair, points_[i].pos, pair, pos)) return static_cast<int>(i);
   }
   return -1;
 }
@@ -327,8 +335,7 @@ bool ContactStepper::LastSubStep(int id, double* energy, double* half_step) cons
 
 bool ContactStepper::EndRate(int pair, const double pos[3], double* rate) const {
   for (const PointEnd& end : previous_end_) {
-    if (end.pair == pair && end.pos[0] == pos[0] && end.pos[1] == pos[1] &&
-        end.pos[2] == pos[2]) {
+    if (SamePoint(end.pair, end.pos, pair, pos)) {
       *rate = end.rate;
       return true;
     }
@@ -1117,6 +1124,15 @@ void ContactStepper::RestingShift(const mjModel* m, double step, const std::vect
   for (int i = 0; i < n; ++i) {
     for (const int body : model_.pairs()[points_[i].pair].body) root_marked_[m->body_rootid[body]] = 0;
   }
+  // only along the resting rows where the trees accelerate (a stack at rest
+  // takes the whole trees' shift: kRestAcceleration)
+  if (largest >= kRestAcceleration) ProjectOntoRestingRows(acting, dofs, &shift);
+  for (int k = 0; k < nv_; ++k) rest_shift_[k] += shift[k];
+  for (int r = 0; r < rows_; ++r) (*x)[r] += j_rows_.Dot(r, shift.data());
+}
+
+void ContactStepper::ProjectOntoRestingRows(const std::vector<char>& acting, int dofs,
+                                            std::vector<double>* shift) {
   // only along the resting rows R (the normal rows, and the tangential ones
   // of a stick spring ImplicitRows holds): the shift s' = M^-1 J_R^T l
   // nearest s (in M's norm) with J_R s' = J_R s, A_RR l = J_R s over the
@@ -1124,35 +1140,21 @@ void ContactStepper::RestingShift(const mjModel* m, double step, const std::vect
   // span three dofs). What the rows leave (a ball rolling or sliding along
   // a surface) moves as RK4 takes it: the whole tree's shift put a ball on a
   // slope h a t / 2 ahead of its path (1.7 mm in 1 s at 2 ms, 2.9e-3 J
-  // frictionless).
-  std::vector<int>& candidates = rest_candidates_;
-  candidates.clear();
-  if (largest < kRestAcceleration) dofs = 0;  // the whole trees' shift
-  for (int i = 0; i < n; ++i) {
-    if (!acting[i]) continue;
-    candidates.push_back(i);
-    const int r = tangent_row_[i];
-    if (r >= 0 && Implicit(model_.pairs()[points_[i].pair].friction.kind) && !memory_[i].sliding) {
-      candidates.push_back(r);
-      candidates.push_back(r + 1);
-    }
-  }
+  // frictionless). The kept rows are independent in the trees' dofs: at
+  // most dofs of them, L's rows dofs apart.
+  const int n = static_cast<int>(points_.size());
   std::vector<int>& kept = rest_rows_;
   std::vector<double>& l = rest_factor_;
   std::vector<double>& rhs = rest_rhs_;
   kept.clear();
-  const int most = static_cast<int>(candidates.size());
-  l.assign(static_cast<size_t>(most) * most, 0.0);
   rhs.clear();
-  for (const int i : candidates) {
+  l.assign(static_cast<size_t>(dofs) * dofs, 0.0);
+  const auto consider = [&](int i) {
     const int k = static_cast<int>(kept.size());
-    // rows that span every dof of the trees: the shift is theirs already
-    // (a box at rest on its four corners with their stick springs)
-    if (k == dofs) break;
-    double* row = l.data() + static_cast<size_t>(k) * most;
+    double* row = l.data() + static_cast<size_t>(k) * dofs;
     for (int j = 0; j < k; ++j) {
       double sum = Coupling(i, kept[j]);
-      const double* lj = l.data() + static_cast<size_t>(j) * most;
+      const double* lj = l.data() + static_cast<size_t>(j) * dofs;
       for (int c = 0; c < j; ++c) sum -= row[c] * lj[c];
       row[j] = sum / lj[j];
     }
@@ -1160,34 +1162,28 @@ void ContactStepper::RestingShift(const mjModel* m, double step, const std::vect
     for (int c = 0; c < k; ++c) diagonal -= row[c] * row[c];
     if (!(diagonal > kRestRowDependence * a_diag_[i])) {
       std::fill(row, row + k, 0.0);
-      continue;
+      return;
     }
     row[k] = std::sqrt(diagonal);
     kept.push_back(i);
-    rhs.push_back(j_rows_.Dot(i, shift.data()));
+    rhs.push_back(j_rows_.Dot(i, shift->data()));
+  };
+  for (int i = 0; i < n && static_cast<int>(kept.size()) < dofs; ++i) {
+    if (!acting[i]) continue;
+    consider(i);
+    const int r = tangent_row_[i];
+    if (r >= 0 && Implicit(model_.pairs()[points_[i].pair].friction.kind) && !memory_[i].sliding) {
+      for (int c = r; c < r + 2 && static_cast<int>(kept.size()) < dofs; ++c) consider(c);
+    }
   }
+  // rows that span every dof of the trees: the shift is theirs already (a
+  // box at rest on its four corners with their stick springs)
   const int count = static_cast<int>(kept.size());
-  if (count == dofs) {
-    for (int k = 0; k < nv_; ++k) rest_shift_[k] += shift[k];
-    for (int r = 0; r < rows_; ++r) (*x)[r] += j_rows_.Dot(r, shift.data());
-    return;
-  }
-  // L L^T l = rhs, l in rhs
-  for (int a = 0; a < count; ++a) {
-    const double* la = l.data() + static_cast<size_t>(a) * most;
-    double sum = rhs[a];
-    for (int c = 0; c < a; ++c) sum -= la[c] * rhs[c];
-    rhs[a] = sum / la[a];
-  }
-  for (int a = count - 1; a >= 0; --a) {
-    const double* la = l.data() + static_cast<size_t>(a) * most;
-    rhs[a] /= la[a];
-    for (int c = 0; c < a; ++c) rhs[c] -= la[c] * rhs[a];
-  }
-  shift.assign(nv_, 0.0);
-  for (int a = 0; a < count; ++a) minv_jt_rows_.AddTo(kept[a], rhs[a], shift.data());
-  for (int k = 0; k < nv_; ++k) rest_shift_[k] += shift[k];
-  for (int r = 0; r < rows_; ++r) (*x)[r] += j_rows_.Dot(r, shift.data());
+  if (count == dofs) return;
+  rest_first_.assign(count, 0);
+  EnvelopeSolve(l.data(), count, rest_first_, rhs.data(), rhs.data(), dofs);
+  shift->assign(nv_, 0.0);
+  for (int a = 0; a < count; ++a) minv_jt_rows_.AddTo(kept[a], rhs[a], shift->data());
 }
 
 void ContactStepper::ImplicitRows(double step, const std::vector<char>& acting,

@@ -200,6 +200,11 @@ class ContactStepper {
   // and a stick spring's tangential ones), in the dofs of their trees.
   void RestingShift(const mjModel* m, double step, const std::vector<char>& acting,
                     std::vector<double>* x);
+  // RestingShift's shift (nv) of the trees of dofs dofs, replaced by the
+  // nearest (in M's norm) that moves the resting rows of acting points as
+  // much and nothing else.
+  void ProjectOntoRestingRows(const std::vector<char>& acting, int dofs,
+                              std::vector<double>* shift);
   // The solve of ImplicitRows' pass for its rows solve_ (gains gain_):
   // (K^-1 + A_SS) f_S = K^-1 g_S + A_SS f0_S - A_SL delta_L in the rows
   // (SolveInRows), or, with z = M^-1 J_H^T delta_H the held rows' velocity
@@ -324,9 +329,9 @@ class ContactStepper {
   std::vector<double> impulse_sum_;  // per row: delta * sum_k P_k, N s^2
   std::vector<double> force_;      // nv: the generalized force added
   std::vector<double> rest_shift_; // nv: RestingShift's displacement over the step
-  // RestingShift's rows: its candidates, those kept, their Cholesky factor
-  // (candidates x candidates) and right-hand side
-  std::vector<int> rest_candidates_, rest_rows_;
+  // ProjectOntoRestingRows' rows kept, their Cholesky factor (dofs x dofs),
+  // envelope (none) and right-hand side
+  std::vector<int> rest_rows_, rest_first_;
   std::vector<double> rest_factor_, rest_rhs_;
   std::vector<double> rates_;      // samples x rows
   std::vector<double> stage_;      // Rk4SubStep's stages
