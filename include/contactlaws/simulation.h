@@ -111,7 +111,8 @@ class Simulation {
 
   // One step with the laws active.
   void Step() { contacts_->Step(); }
-  // One step of the given length, s (> 0): it becomes this run's timestep.
+  // One step of the given length, s (> 0): it becomes this run's timestep
+  // until Reset, which gives the run its own back.
   void Step(double timestep) { contacts_->Step(timestep); }
 
   // Back to the initial state (keyframe 0 or the model's qpos0).
@@ -209,6 +210,7 @@ class Simulation {
   size_t row_size_ = 0;               // Columns().size()
   std::optional<SettleReport> settled_;
   std::vector<mjtNum> settled_qpos_;  // the initial positions after settle
+  double timestep_ = 0;  // s: the run's own (Reset gives it back)
   // their contacts with the friction they carry at the start (settle_friction.h)
   std::vector<PointEvaluation> settled_contacts_;
 };

@@ -55,6 +55,7 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   contacts_ = std::make_unique<ContactData>(*contact_model_, data_.get());
   // the run's own options, on its data's side
   if (options.timestep) contacts_->options().timestep = *options.timestep;
+  timestep_ = contacts_->options().timestep;
   if (options.integrator) contacts_->options().integrator = *options.integrator;
   if (options.motion_only) contacts_->KeepMotionOnly();
 
@@ -65,16 +66,11 @@ Simulation::Simulation(std::shared_ptr<const mjModel> model, std::string source,
   row_size_ = Columns().size();
   Reset(/*fresh=*/true);
   if (options.settle) {
-    // relaxed under Euler, the run's integrator given back (settle.h says
-    // why), and its timestep: the relaxation's steps (Step(h)) are the auto
-    // timestep's where the run's is longer, and the last of them stayed the
-    // run's (a 2 ms scene settled ran at 0.21 ms)
+    // relaxed under Euler, the run's integrator given back (settle.h says why)
     const int integrator = contacts_->options().integrator;
-    const double timestep = contacts_->options().timestep;
     contacts_->options().integrator = mjINT_EULER;
     settled_ = Settle(this, &settled_contacts_);
     contacts_->options().integrator = integrator;
-    contacts_->options().timestep = timestep;
     settled_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
     Reset();
   }
@@ -93,8 +89,13 @@ void Simulation::Reset(bool fresh) {
   } else if (!fresh) {
     mj_resetData(model_.get(), data_.get());
   }
-  // the scene's state, its bodies in contact settled when asked
+  // the scene's state, its bodies in contact settled when asked, at the
+  // run's own timestep: a step of another length (Step(h): the auto
+  // timestep's, the settling relaxation's) became the run's, and a settled
+  // run at 2 ms went on at the relaxation's last step, 0.21 ms (as did a
+  // replay's trajectories after their settling)
   if (!settled_qpos_.empty()) mju_copy(data_->qpos, settled_qpos_.data(), model_->nq);
+  contacts_->options().timestep = timestep_;
   contacts_->Reset();
   for (const Drive& drive : contact_model_->drives()) {
     drive.Position(data_->time, data_->mocap_pos + 3 * drive.mocap);

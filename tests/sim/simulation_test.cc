@@ -283,6 +283,21 @@ class SceneTest : public testing::MujocoTest {
   }
 };
 
+TEST_F(SceneTest, AResetGivesTheRunItsOwnTimestepBack) {
+  // a step of another length (the auto timestep's, the settling
+  // relaxation's) is the run's until a reset: a settled run, or a replay's
+  // trajectory after its settling, went on at the relaxation's last step
+  SimulationOptions options;
+  options.timestep = 2e-3;
+  Simulation& sim = LoadScene("bouncing_ball.xml", options);
+  sim.Step(1e-4);
+  sim.Step();
+  EXPECT_DOUBLE_EQ(sim.time(), 2e-4);
+  sim.Reset();
+  sim.Step();
+  EXPECT_DOUBLE_EQ(sim.time(), 2e-3);
+}
+
 TEST_F(SceneTest, BouncingBallIsThePapers) {
   Simulation& sim = LoadScene("bouncing_ball.xml");
   const mjModel* m = sim.model();
