@@ -2,6 +2,7 @@
 
 #include "sim/dense_rows.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -21,6 +22,54 @@ double Hermite(double s, double y0, double m0, double y1, double m1) {
   const double s3 = s2 * s;
   return (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * y1 +
          (s3 - s2) * m1;
+}
+
+// q = q0 exp(phi): q0 turned by the rotation vector phi (q0's frame), to
+// rounding of q0's length; the kinematics that read q normalize it
+// (mj_kinematics and FreeBodyKinematics normalize qpos's quaternions in place).
+void Rotated(const mjtNum q0[4], const mjtNum phi[3], mjtNum q[4]) {
+  const double angle = std::sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
+  if (angle == 0) {  // no turn (a body that does not spin): q0 itself
+    std::copy(q0, q0 + 4, q);
+    return;
+  }
+  // sin(angle / 2) / angle, by its series below 1e-4 rad, where the series'
+  // next term (angle^4 / 3840) is below 2.6e-20, far under an ulp of 1/2
+  const double scale =
+      angle < 1e-4 ? 0.5 - angle * angle / 48 : std::sin(0.5 * angle) / angle;
+  const double r[4] = {std::cos(0.5 * angle), scale * phi[0], scale * phi[1], scale * phi[2]};
+  q[0] = q0[0] * r[0] - q0[1] * r[1] - q0[2] * r[2] - q0[3] * r[3];
+  q[1] = q0[0] * r[1] + q0[1] * r[0] + q0[2] * r[3] - q0[3] * r[2];
+  q[2] = q0[0] * r[2] - q0[1] * r[3] + q0[2] * r[0] + q0[3] * r[1];
+  q[3] = q0[0] * r[3] + q0[1] * r[2] - q0[2] * r[1] + q0[3] * r[0];
+}
+
+// The rotation of a step as the angular velocities turn it: q0^-1 q1 gives
+// its angle modulo a whole turn (mju_quat2Vel's in (-pi, pi]), and a step of
+// free flight can turn a body further (a die spinning at 10 rad/s through a
+// 0.4 s flight). Of the angles that q1 allows, the one nearest the trapezoid
+// of the ends' angular velocities (q0's frame) over the step, h (w0 + w1) / 2;
+// the same delta whenever that is within half a turn of it.
+void Unwrap(double h, const mjtNum w0[3], const mjtNum w1[3], mjtNum delta[3]) {
+  constexpr double kTurn = 2 * mjPI;
+  mjtNum predicted[3];
+  for (int k = 0; k < 3; ++k) predicted[k] = 0.5 * h * (w0[k] + w1[k]);
+  double angle = std::sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2]);
+  mjtNum axis[3];
+  if (angle > 0) {
+    for (int k = 0; k < 3; ++k) axis[k] = delta[k] / angle;
+  } else {
+    // q1 = +-q0: no axis of its own; the velocities' (whole turns about it)
+    const double turned = std::sqrt(predicted[0] * predicted[0] + predicted[1] * predicted[1] +
+                                    predicted[2] * predicted[2]);
+    if (turned < 0.5 * kTurn) return;
+    for (int k = 0; k < 3; ++k) axis[k] = predicted[k] / turned;
+  }
+  const double along = axis[0] * predicted[0] + axis[1] * predicted[1] + axis[2] * predicted[2];
+  const double turns = std::round((along - angle) / kTurn);
+  if (turns == 0) return;
+  angle += turns * kTurn;
+  for (int k = 0; k < 3; ++k) delta[k] = angle * axis[k];
 }
 
 }  // namespace
@@ -55,6 +104,7 @@ void DenseRows::Capture(State* state) {
 }
 
 void DenseRows::Start() {
+  turns_current_ = false;
   if (end_.time == sim_->time()) {
     std::swap(start_, end_);
   } else {
@@ -62,7 +112,10 @@ void DenseRows::Start() {
   }
 }
 
-void DenseRows::End() { Capture(&end_); }
+void DenseRows::End() {
+  Capture(&end_);
+  turns_current_ = false;
+}
 
 void DenseRows::Row(double t, double tolerance, std::vector<double>* row) {
   if (std::abs(t - end_.time) <= tolerance || !(start_.time < end_.time)) {
@@ -99,6 +152,26 @@ void DenseRows::Row(double t, double tolerance, std::vector<double>* row) {
   sim_->Row(scratch_.get(), readings_, spring + friction_spring, dissipated, row, kinetic_);
 }
 
+void DenseRows::Turns() {
+  const mjModel* m = sim_->model();
+  turns_.clear();
+  for (int j = 0; j < m->njnt; ++j) {
+    const mjtJoint type = static_cast<mjtJoint>(m->jnt_type[j]);
+    if (type != mjJNT_FREE && type != mjJNT_BALL) continue;
+    const int rotation = m->jnt_qposadr[j] + (type == mjJNT_FREE ? 3 : 0);
+    const int w = m->jnt_dofadr[j] + (type == mjJNT_FREE ? 3 : 0);
+    mjtNum inverse[4], relative[4], delta[3], end_rate[3];
+    mju_negQuat(inverse, start_.qpos.data() + rotation);
+    mju_mulQuat(relative, inverse, end_.qpos.data() + rotation);
+    mju_quat2Vel(delta, relative, 1.0);
+    mju_rotVecQuat(end_rate, end_.qvel.data() + w, relative);
+    Unwrap(end_.time - start_.time, start_.qvel.data() + w, end_rate, delta);
+    turns_.insert(turns_.end(), delta, delta + 3);
+    turns_.insert(turns_.end(), end_rate, end_rate + 3);
+  }
+  turns_current_ = true;
+}
+
 void DenseRows::Interpolate(double t) {
   const mjModel* m = sim_->model();
   mjData* d = scratch_.get();
@@ -110,7 +183,9 @@ void DenseRows::Interpolate(double t) {
   for (int v = 0; v < m->nv; ++v) {
     d->qvel[v] = Hermite(s, a.qvel[v], h * a.qacc[v], b.qvel[v], h * b.qacc[v]);
   }
+  if (!turns_current_) Turns();
   // coordinates from qpos and qvel, joint by joint
+  int turn = 0;  // the rotation's index in turns_
   for (int j = 0; j < m->njnt; ++j) {
     const int q = m->jnt_qposadr[j];
     const int v = m->jnt_dofadr[j];
@@ -132,18 +207,14 @@ void DenseRows::Interpolate(double t) {
     if (rotation < 0) continue;
     const int w = m->jnt_type[j] == mjJNT_FREE ? v + 3 : v;
     // phi: rotation vectors in q0's frame; angular velocities are local
-    mjtNum inverse[4], relative[4], delta[3], end_rate[3], phi[3];
-    mju_negQuat(inverse, a.qpos.data() + rotation);
-    mju_mulQuat(relative, inverse, b.qpos.data() + rotation);
-    mju_quat2Vel(delta, relative, 1.0);
-    mju_rotVecQuat(end_rate, b.qvel.data() + w, relative);
+    const mjtNum* delta = turns_.data() + 6 * turn;
+    const mjtNum* end_rate = delta + 3;
+    ++turn;
+    mjtNum phi[3];
     for (int k = 0; k < 3; ++k) {
       phi[k] = Hermite(s, 0.0, h * a.qvel[w + k], delta[k], h * end_rate[k]);
     }
-    mjtNum* quat = d->qpos + rotation;
-    mju_copy4(quat, a.qpos.data() + rotation);
-    mju_quatIntegrate(quat, phi, 1.0);
-    mju_normalize4(quat);
+    Rotated(a.qpos.data() + rotation, phi, d->qpos + rotation);
   }
   // driven bodies at their prescribed pose, then the kinematics the row reads
   d->time = t;

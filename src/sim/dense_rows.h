@@ -10,9 +10,12 @@
 //     cubic Hermite through the ends' qvel and qacc (exact for a parabola:
 //     free flight under gravity);
 //   - a quaternion (free and ball joints): q0 exp(phi(s)), phi the cubic
-//     Hermite from 0 to the rotation q0^-1 q1 (as a rotation vector) with the
-//     ends' angular velocities in q0's frame as its derivatives (exact for a
-//     rotation about a fixed axis), normalized;
+//     Hermite from 0 to the rotation q0^-1 q1 (as a rotation vector, of the
+//     angles q1 allows the one nearest the ends' angular velocities' turn:
+//     free flight's long steps turn a spinning body past half a turn) with
+//     the ends' angular velocities in q0's frame as its derivatives (exact
+//     for a rotation about a fixed axis), normalized by the kinematics that
+//     read it; the step's rotation and end velocity once per step;
 //   - the kinematics (positions, orientations, point velocities) and the
 //     ledger's kinetic and potential energy from that state: MuJoCo's
 //     stages, or, when every moving body is a single free body (a scene of
@@ -76,6 +79,8 @@ class DenseRows {
   void Capture(State* state);
   // scratch_'s qpos and qvel at time t, and their kinematics
   void Interpolate(double t);
+  // turns_ for the step from start_ to end_
+  void Turns();
 
   Simulation* sim_;
   const bool free_bodies_;  // OnlySingleFreeBodies: FreeBodyKinematics suffices
@@ -84,6 +89,11 @@ class DenseRows {
   State start_;
   State end_;
   std::vector<TagReading> readings_;  // interpolated
+  // Each rotation joint's turn over the step, the same for every row in it:
+  // the rotation vector of q0^-1 q1 and the end's angular velocity in q0's
+  // frame (6 numbers a joint, in joint order); current until the next End().
+  std::vector<mjtNum> turns_;
+  bool turns_current_ = false;
   std::vector<mjtNum> kept_positions_;  // Capture's qpos, kept through its forward pass
 };
 

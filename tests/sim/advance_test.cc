@@ -198,6 +198,50 @@ TEST(AdvanceTest, AutoStepsAreNotCutByRowsAndRowsInsideThemAreInterpolated) {
   EXPECT_LT(worst, kDefaultAccuracy * std::abs(contact[0][total]));
 }
 
+// A body spinning about a principal axis turns about a fixed axis at a
+// constant rate: MuJoCo's steps turn it exactly (to rounding), and the rows
+// inside a step, interpolated, must too. Tilted, so that the axis is no
+// coordinate axis; falling, so that the steps are free flight's long ones,
+// which turn it more than half a turn.
+TEST(AdvanceTest, RowsInsideAStepFollowABodyTurningAboutAFixedAxis) {
+  constexpr double kTurn = 1e-12;  // quaternion components: rounding over the steps
+  // rad/s about the body's own z: 1.1 turns in the run's 0.5 s, and 2.4
+  for (const double rate : {7.0, 30.0}) {
+    SCOPED_TRACE(fmt::format("{} rad/s", rate));
+    const Scene scene("spinning.xml", LoadModelString(fmt::format(R"(<mujoco>
+  <option integrator="RK4"/>
+  <worldbody><body name="box" pos="0 0 10"><freejoint/>
+    <geom type="box" size="0.1 0.2 0.3"/></body></worldbody>
+  <keyframe><key qpos="0 0 10 0.8600734 0.3738609 0.2174312 -0.2698897" qvel="0 0 0 0 0 {}"/>
+  </keyframe></mujoco>)", rate), "spinning.xml"));
+    std::unique_ptr<Simulation> sim = scene.Make({});
+    const std::vector<std::string> columns = sim->Columns();
+    const size_t qw = std::find(columns.begin(), columns.end(), "box.qw") - columns.begin();
+    ASSERT_LT(qw + 3, columns.size());
+    const mjtNum* q0 = sim->data()->qpos + 3;
+    const mjtNum start[4] = {q0[0], q0[1], q0[2], q0[3]};
+    AdvanceOptions options;
+    options.duration = 0.5;
+    options.sample_rate = 1000;
+    options.auto_timestep = AutoTimestepOptions{};
+    std::vector<std::vector<double>> rows;
+    const AdvanceResult result =
+        Advance(sim.get(), options, [&](const std::vector<double>& row) { rows.push_back(row); });
+    ASSERT_EQ(result.status, AdvanceResult::Status::kComplete);
+    ASSERT_EQ(rows.size(), 501u);
+    // free flight under RK4: steps as long as the run, its rows inside them
+    ASSERT_LT(result.steps, 10);
+    for (const std::vector<double>& row : rows) {
+      const double t = row[0];
+      // q0 (cos(w t / 2), 0, 0, sin(w t / 2))
+      const mjtNum turn[4] = {std::cos(rate * t / 2), 0, 0, std::sin(rate * t / 2)};
+      mjtNum expected[4];
+      mju_mulQuat(expected, start, turn);
+      for (int k = 0; k < 4; ++k) ASSERT_NEAR(row[qw + k], expected[k], kTurn) << t << " " << k;
+    }
+  }
+}
+
 // Stopping belongs to a run: a run whose flag is set stops before its next
 // step, and a run of the same scene with its own flag, clear, goes on to its
 // end. A flag set on the way (here by a row) stops the run at that row.
