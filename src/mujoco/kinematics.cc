@@ -56,6 +56,17 @@ bool OnlySingleFreeBodies(const mjModel* m) {
   return true;
 }
 
+__attribute__((optimize("fp-contract=off"))) void NormalizeQuaternion(mjtNum q[4]) {
+  const mjtNum norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (norm < mjMINVAL) {
+    q[0] = 1;
+    q[1] = q[2] = q[3] = 0;
+    return;
+  }
+  const mjtNum inverse = 1 / norm;
+  for (int i = 0; i < 4; ++i) q[i] *= inverse;
+}
+
 double FreeBodyKinematics(const mjModel* m, mjData* d) {
   double kinetic = 0;
   for (int b = 1; b < m->nbody; ++b) {
@@ -70,10 +81,10 @@ double FreeBodyKinematics(const mjModel* m, mjData* d) {
     mjtNum* xmat = d->xmat + 9 * b;
     mjtNum* xipos = d->xipos + 3 * b;
     // mj_kinematics normalizes qpos's quaternion, then its copy
-    mju_normalize4(qpos + 3);
+    NormalizeQuaternion(qpos + 3);
     mju_copy3(xpos, qpos);
     mju_copy4(xquat, qpos + 3);
-    mju_normalize4(xquat);
+    NormalizeQuaternion(xquat);
     mju_quat2Mat(xmat, xquat);
     mj_local2Global(d, xipos, d->ximat + 9 * b, m->body_ipos + 3 * b, m->body_iquat + 4 * b, b,
                     m->body_sameframe[b]);

@@ -38,6 +38,10 @@ bool SingleFreeBody(const mjModel* m, int body);
 // moving body's kinematics.
 bool OnlySingleFreeBodies(const mjModel* m);
 
+// mju_normalize4's arithmetic, inline: the same bits (the norm's sum in the
+// same order, unfused; then times its inverse; (1, 0, 0, 0) below mjMINVAL).
+void NormalizeQuaternion(mjtNum q[4]);
+
 // For every single free body, from d's qpos (its quaternion normalized in
 // place, as mj_kinematics does) and qvel, what a trajectory row
 // reads, without the rest of MuJoCo's pipeline (positions of geoms and sites,

@@ -387,6 +387,28 @@ TEST_F(KinematicsTest, FreeBodyKinematicsIsMujocosPipelineForFreeBodies) {
   EXPECT_NEAR(kinetic, mujoco_kinetic, 1e-14 * mujoco_kinetic);
 }
 
+TEST(NormalizeQuaternionTest, GivesMujocosBits) {
+  // quaternions of every direction and of lengths from 1e-8 to 1e8, ones a
+  // rounding off unit length (a third), and below mjMINVAL
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> exponent(-8, 8);
+  for (int i = 0; i < 300000; ++i) {
+    mjtNum q[4];
+    for (mjtNum& c : q) c = normal(random);
+    const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    const double scale = i % 3 == 0 ? 1 / length : std::pow(10.0, exponent(random));
+    for (mjtNum& c : q) c *= i % 1000 == 1 ? 1e-17 : scale;
+    mjtNum mujoco[4] = {q[0], q[1], q[2], q[3]};
+    mjtNum ours[4] = {q[0], q[1], q[2], q[3]};
+    mju_normalize4(mujoco);
+    NormalizeQuaternion(ours);
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_EQ(ours[k], mujoco[k]) << fmt::format("{} {} {} {}", q[0], q[1], q[2], q[3]);
+    }
+  }
+}
+
 TEST_F(KinematicsTest, OnlySingleFreeBodiesRefusesTreesAndDrivenBodies) {
   UniqueModel tree = Load(R"(<mujoco><worldbody>
     <body><freejoint/><geom type="sphere" size="0.1"/>
