@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/crc32.h"
 #include "contactlaws/contact_model.h"
 
 namespace contactlaws::cli {
@@ -65,11 +66,6 @@ class Record {
   }
   std::string bytes_;
 };
-
-uint32_t Crc(uint32_t crc, const void* data, size_t size) {
-  return static_cast<uint32_t>(
-      crc32_z(crc, static_cast<const Bytef*>(data), static_cast<z_size_t>(size)));
-}
 
 // The local header of a stored member; with sizes, a ZIP64 one (its sizes in
 // the extra field, which has room for them whatever they are).
@@ -188,7 +184,7 @@ void NpzFile::Header(const std::vector<std::string>& columns) {
     name.resize(width, U'\0');
     array.append(reinterpret_cast<const char*>(name.data()), width * sizeof(char32_t));
   }
-  names_ = {kColumnsName, written_, array.size(), Crc(0, array.data(), array.size())};
+  names_ = {kColumnsName, written_, array.size(), Crc32(0, array.data(), array.size())};
   Write(LocalHeader(kColumnsName, names_.crc, names_.size, false));
   Write(array);
 
@@ -210,7 +206,7 @@ void NpzFile::Row(const std::vector<double>& values) {
   }
   ++rows_;
   const size_t bytes = values.size() * sizeof(double);
-  data_crc_ = Crc(data_crc_, values.data(), bytes);
+  data_crc_ = Crc32(data_crc_, values.data(), bytes);
   if (file_.get()) std::fwrite(values.data(), 1, bytes, file_.get());
   written_ += bytes;
 }
@@ -222,7 +218,7 @@ void NpzFile::Commit() {
     const uint64_t data_bytes = written_ - rows_data_offset_ - rows_header_length_;
     rows_member_.size = header.size() + data_bytes;
     rows_member_.crc = static_cast<uint32_t>(
-        crc32_combine(Crc(0, header.data(), header.size()), data_crc_,
+        crc32_combine(Crc32(0, header.data(), header.size()), data_crc_,
                       static_cast<z_off_t>(data_bytes)));
     const uint64_t directory = written_;
     const std::string local = LocalHeader(kRowsName, rows_member_.crc, rows_member_.size, true);
