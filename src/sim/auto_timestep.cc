@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include "contactlaws/contact_model.h"
@@ -65,6 +66,8 @@ bool HasOwnDynamics(const ContactModel& cm) {
   }
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_stiffness[j] > 0 || m->jnt_limited[j]) return true;
+    // a body on a hinge or a ball joint swings under gravity: a pendulum
+    if (m->jnt_type[j] == mjJNT_HINGE || m->jnt_type[j] == mjJNT_BALL) return true;
   }
   for (int v = 0; v < m->nv; ++v) {
     if (m->dof_damping[v] > 0 || m->dof_frictionloss[v] > 0) return true;
@@ -72,7 +75,38 @@ bool HasOwnDynamics(const ContactModel& cm) {
   return false;
 }
 
+// Below it a body's inertia is a sphere's (rounding of a cube's): it spins
+// about a fixed axis, which every integrator turns exactly.
+constexpr double kSphericalInertia = 1e-9;
+
 }  // namespace
+
+// The composite inertia of a free joint's body and the bodies below it,
+// about their centre of mass, at qpos0 (a rigid set unless joints below
+// move it, which are the scene's own dynamics: HasOwnDynamics).
+std::vector<AutoTimestep::Spinner> AutoTimestep::Spinners(const mjModel* m) {
+  std::vector<AutoTimestep::Spinner> spinners;
+  UniqueData d(mj_makeData(m));
+  if (!d) throw Error("AutoTimestep: MuJoCo could not allocate mjData");
+  mj_kinematics(m, d.get());
+  mj_comPos(m, d.get());
+  mj_crb(m, d.get());
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_type[j] != mjJNT_FREE) continue;
+    // crb: the composite inertia (xx, yy, zz, xy, xz, yz first) about the
+    // subtree's centre of mass, world axes
+    const mjtNum* c = d->crb + 10 * m->jnt_bodyid[j];
+    Eigen::Matrix3d inertia;
+    inertia << c[0], c[3], c[4], c[3], c[1], c[5], c[4], c[5], c[2];
+    const Eigen::Vector3d principal =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly)
+            .eigenvalues();
+    if (!(principal[0] > 0)) continue;
+    const double anisotropy = (principal[2] - principal[0]) / principal[0];
+    if (anisotropy > kSphericalInertia) spinners.push_back({m->jnt_dofadr[j], anisotropy});
+  }
+  return spinners;
+}
 
 double StepsPerContact(double accuracy) {
   return kDefaultStepsPerContact * std::pow(kDefaultAccuracy / accuracy, kStepsExponent);
@@ -112,6 +146,7 @@ AutoTimestep::AutoTimestep(const ContactData& contacts, const AutoTimestepOption
   pair_damping_.assign(cm.pairs().size(), 0.0);
   binding_.assign(2 * cm.pairs().size(), 0);
   settled_rule_ = contacts.options().integrator == mjINT_RK4;
+  spinners_ = Spinners(cm.model());
 }
 
 AutoTimestep::~AutoTimestep() = default;
@@ -125,6 +160,16 @@ double AutoTimestep::FlightStep() const {
   if (HasOwnDynamics(cm)) step = std::min(step, opt.timestep);
   if (opt.integrator != mjINT_RK4) {
     step = std::min(step, kFirstOrderFlightStep * options_.accuracy / kDefaultAccuracy);
+  }
+  return step;
+}
+
+double AutoTimestep::SpinStep(const mjData* d) const {
+  double step = kInfinity;
+  for (const Spinner& s : spinners_) {
+    const mjtNum* w = d->qvel + s.dof + 3;
+    const double rate = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * s.anisotropy;
+    if (rate > 0) step = std::min(step, 2 * mjPI / (rate * options_.steps_per_contact));
   }
   return step;
 }
@@ -297,6 +342,8 @@ double AutoTimestep::Next(mjData* d, double until) {
         previous_ > 0 ? std::min(bound.step, options_.growth * previous_) : bound.step;
     approach_->Step(d, reach, in_contact_, *pair_steps_, &bound, &fine);
   }
+
+  bound.Limit(SpinStep(d));
 
   for (const ContactData::Evaluation& e : contacts_.latest()) in_contact_[e.pair] = 0;
   if (fine) finest_step_ = std::min(finest_step_, bound.pace);

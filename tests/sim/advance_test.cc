@@ -198,9 +198,9 @@ TEST(AdvanceTest, AutoStepsAreNotCutByRowsAndRowsInsideThemAreInterpolated) {
   EXPECT_LT(worst, kDefaultAccuracy * std::abs(contact[0][total]));
 }
 
-// A body spinning about a principal axis turns about a fixed axis at a
-// constant rate: MuJoCo's steps turn it exactly (to rounding), and the rows
-// inside a step, interpolated, must too. Tilted, so that the axis is no
+// A cube spinning turns about a fixed axis at a constant rate (every axis
+// is a principal one): MuJoCo's steps turn it exactly (to rounding), and the
+// rows inside a step, interpolated, must too. Tilted, so that the axis is no
 // coordinate axis; falling, so that the steps are free flight's long ones,
 // which turn it more than half a turn.
 TEST(AdvanceTest, RowsInsideAStepFollowABodyTurningAboutAFixedAxis) {
@@ -211,7 +211,7 @@ TEST(AdvanceTest, RowsInsideAStepFollowABodyTurningAboutAFixedAxis) {
     const Scene scene("spinning.xml", LoadModelString(fmt::format(R"(<mujoco>
   <option integrator="RK4"/>
   <worldbody><body name="box" pos="0 0 10"><freejoint/>
-    <geom type="box" size="0.1 0.2 0.3"/></body></worldbody>
+    <geom type="box" size="0.1 0.1 0.1"/></body></worldbody>
   <keyframe><key qpos="0 0 10 0.8600734 0.3738609 0.2174312 -0.2698897" qvel="0 0 0 0 0 {}"/>
   </keyframe></mujoco>)", rate), "spinning.xml"));
     std::unique_ptr<Simulation> sim = scene.Make({});

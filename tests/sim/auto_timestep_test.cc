@@ -378,5 +378,79 @@ TEST(AutoTimestepTest, ARestingDieComesToRestAsAtAFineFixedStep) {
   EXPECT_LT(std::abs(creep), kLedgerCreep);
 }
 
+// Free flight and joints in it, untagged scenes stepped by their flight
+// rules alone: at the end of `duration`, the state of sim stepped by the
+// auto timestep, and the number of its steps.
+struct Flight {
+  std::vector<mjtNum> qpos, qvel;
+  double kinetic = 0;
+  long steps = 0;
+};
+Flight Fly(const Scene& scene, double duration, std::optional<double> fixed_step) {
+  std::unique_ptr<Simulation> sim = scene.Make({});
+  std::optional<AutoTimestep> stepper;
+  if (!fixed_step) stepper.emplace(sim->contacts());
+  mj_forward(sim->model(), sim->data());
+  Flight flight;
+  while (sim->time() < duration - 1e-9) {
+    sim->Step(stepper ? stepper->Next(sim->data(), duration - sim->time()) : *fixed_step);
+    ++flight.steps;
+  }
+  mj_forward(sim->model(), sim->data());
+  const mjModel* m = sim->model();
+  const mjData* d = sim->data();
+  flight.qpos.assign(d->qpos, d->qpos + m->nq);
+  flight.qvel.assign(d->qvel, d->qvel + m->nv);
+  flight.kinetic = sim->Energy().kinetic;
+  return flight;
+}
+
+// A 10 x 20 x 40 cm box spinning at 10 rad/s near its middle axis tumbles
+// (Euler's equations); under RK4 the flight rule took steps as long as the
+// run and its kinetic energy went from 99 J to 1e10 J. Its turning spin
+// bounds the step (rule 8); a cube's and a ball's do not (they spin about a
+// fixed axis: free flight's long steps).
+TEST(AutoTimestepTest, AFreeBodyThatTumblesIsSteppedForItsTurningSpin) {
+  constexpr double kEnergyShare = 1e-8;  // of 99 J: RK4 at 50 steps a turn lost 5e-11
+  constexpr double kPath = 1e-3;  // quaternion and rad/s against 1e-4 s: 7e-4 measured
+  auto body = [](const char* geom) {
+    return Scene("tumbling.xml", LoadModelString(fmt::format(R"(<mujoco>
+  <option integrator="RK4"/>
+  <worldbody><body name="body" pos="0 0 10"><freejoint/>{}</body></worldbody>
+  <keyframe><key qpos="0 0 10 1 0 0 0" qvel="0 0 0 0.2 10 0.2"/></keyframe></mujoco>)", geom),
+                                             "tumbling.xml"));
+  };
+  const Scene box = body(R"(<geom type="box" size="0.05 0.1 0.2" mass="1"/>)");
+  const Flight automatic = Fly(box, 2, std::nullopt);
+  const Flight fine = Fly(box, 2, 1e-4);
+  EXPECT_NEAR(automatic.kinetic, fine.kinetic, kEnergyShare * fine.kinetic);
+  for (int i = 3; i < 7; ++i) EXPECT_NEAR(automatic.qpos[i], fine.qpos[i], kPath) << i;
+  for (int i = 3; i < 6; ++i) EXPECT_NEAR(automatic.qvel[i], fine.qvel[i], kPath) << i;
+  // 2 pi / (10 rad/s x 3.0 x 50): 4.2 ms
+  EXPECT_GT(automatic.steps, 400);
+  EXPECT_LT(automatic.steps, 600);
+  // a cube and a ball: a step or two for the whole flight
+  for (const char* geom : {R"(<geom type="box" size="0.1 0.1 0.1" mass="1"/>)",
+                           R"(<geom type="sphere" size="0.1" mass="1"/>)"}) {
+    EXPECT_LT(Fly(body(geom), 2, std::nullopt).steps, 10) << geom;
+  }
+}
+
+// A rod on a hinge swings under gravity: the scene's own dynamics (rule 7),
+// stepped at its timestep. The flight rule took it for a parabola: RK4 steps
+// of the whole run, its energy doubled in 3 s.
+TEST(AutoTimestepTest, APendulumIsTheScenesOwnDynamics) {
+  constexpr double kAngle = 1e-6;  // rad against 1e-4 s: 7e-10 measured
+  const Scene pendulum("pendulum.xml", LoadModelString(R"(<mujoco><option integrator="RK4"/>
+  <worldbody><body name="arm" pos="0 0 2"><joint name="hinge" type="hinge" axis="0 1 0"/>
+    <geom type="capsule" fromto="0 0 0 0.5 0 0" size="0.02" mass="1"/></body></worldbody>
+  </mujoco>)", "pendulum.xml"));
+  const Flight automatic = Fly(pendulum, 2, std::nullopt);
+  const Flight fine = Fly(pendulum, 2, 1e-4);
+  EXPECT_NEAR(automatic.qpos[0], fine.qpos[0], kAngle);
+  EXPECT_NEAR(automatic.qvel[0], fine.qvel[0], kAngle * 10);
+  EXPECT_EQ(automatic.steps, 1000);  // the scene's 2 ms
+}
+
 }  // namespace
 }  // namespace contactlaws
