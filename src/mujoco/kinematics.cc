@@ -68,6 +68,17 @@ __attribute__((optimize("fp-contract=off"))) void NormalizeQuaternion(mjtNum q[4
 }
 
 double FreeBodyKinematics(const mjModel* m, mjData* d) {
+  // mj_kinematics normalizes qpos's quaternion, then its copy: every body's
+  // first, in a loop of their own, where one body's square root and division
+  // need not wait for another's
+  for (int b = 1; b < m->nbody; ++b) {
+    if (!SingleFreeBody(m, b)) continue;
+    mjtNum* quat = d->qpos + m->jnt_qposadr[m->body_jntadr[b]] + 3;
+    mjtNum* xquat = d->xquat + 4 * b;
+    NormalizeQuaternion(quat);
+    mju_copy4(xquat, quat);
+    NormalizeQuaternion(xquat);
+  }
   double kinetic = 0;
   for (int b = 1; b < m->nbody; ++b) {
     if (!SingleFreeBody(m, b)) continue;
@@ -80,11 +91,7 @@ double FreeBodyKinematics(const mjModel* m, mjData* d) {
     mjtNum* xquat = d->xquat + 4 * b;
     mjtNum* xmat = d->xmat + 9 * b;
     mjtNum* xipos = d->xipos + 3 * b;
-    // mj_kinematics normalizes qpos's quaternion, then its copy
-    NormalizeQuaternion(qpos + 3);
     mju_copy3(xpos, qpos);
-    mju_copy4(xquat, qpos + 3);
-    NormalizeQuaternion(xquat);
     mju_quat2Mat(xmat, xquat);
     mj_local2Global(d, xipos, d->ximat + 9 * b, m->body_ipos + 3 * b, m->body_iquat + 4 * b, b,
                     m->body_sameframe[b]);

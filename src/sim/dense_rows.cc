@@ -28,11 +28,12 @@ double Hermite(double s, double y0, double m0, double y1, double m1) {
 // rounding of q0's length; the kinematics that read q normalize it
 // (mj_kinematics and FreeBodyKinematics normalize qpos's quaternions in place).
 void Rotated(const mjtNum q0[4], const mjtNum phi[3], mjtNum q[4]) {
-  const double angle = std::sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
-  if (angle == 0) {  // no turn (a body that does not spin): q0 itself
+  const double squared = phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2];
+  if (squared == 0) {  // no turn (a body that does not spin): q0 itself
     std::copy(q0, q0 + 4, q);
     return;
   }
+  const double angle = std::sqrt(squared);
   // sin(angle / 2) / angle, by its series below 1e-4 rad, where the series'
   // next term (angle^4 / 3840) is below 2.6e-20, far under an ulp of 1/2
   const double scale =
