@@ -23,7 +23,8 @@ PendingFile::PendingFile(std::string path, const char* mode) : path_(std::move(p
   // a trajectory of many bodies is 100 MB: written in 1 MB system calls
   // rather than stdio's 4 KB ones (25,000 of them, a fifth of the file's
   // system time)
-  std::setvbuf(file_, nullptr, _IOFBF, kBuffer);
+  buffer_ = std::make_unique<char[]>(kBuffer);
+  std::setvbuf(file_, buffer_.get(), _IOFBF, kBuffer);
 }
 
 PendingFile::~PendingFile() {

@@ -9,6 +9,7 @@
 #define CONTACTLAWS_CLI_PENDING_FILE_H_
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace contactlaws::cli {
@@ -34,6 +35,9 @@ class PendingFile {
 
   std::string path_;
   std::string temp_;
+  // stdio's buffer, ours: glibc's setvbuf takes the size of none it
+  // allocates itself (it then buffers st_blksize, 4 KB); freed after file_
+  std::unique_ptr<char[]> buffer_;
   std::FILE* file_ = nullptr;
 };
 
