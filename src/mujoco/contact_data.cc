@@ -121,7 +121,7 @@ void ContactData::AfterStep() {
   capture_->Disarm();
   const bool inner = stepper_->enabled() && capture_->held() && d_->time > capture_->time();
   if (inner) stepper_->CorrectPositions(&view_, d_);
-  committer_->AfterStep(d_, evaluator_->latest(), *capture_, *step_start_,
+  committer_->AfterStep(d_, evaluator_->latest(), *capture_, *step_start_, view_.opt.integrator,
                         inner ? stepper_.get() : nullptr);
   stepper_->Committed();
   stepper_->Spend();

@@ -166,7 +166,7 @@ void StepCommitter::CommitInner(mjData* d, ContactStepper* inner,
 
 void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
                               const StepCapture& capture, const StepStartVelocities& start,
-                              ContactStepper* inner) {
+                              int integrator, ContactStepper* inner) {
   if (list_visible_points_) AppendVisiblePoints(model_, latest, d, &visible_overflow_);
   CheckDivergence(d, capture, start);
   if (!capture.held() || divergence_) return;
@@ -176,7 +176,7 @@ void StepCommitter::AfterStep(mjData* d, const std::vector<PointEvaluation>& lat
   const std::vector<PointEvaluation>& points = capture.points();
   // MuJoCo's Euler and implicit integrators hold the laws' forces (explicit,
   // in qfrc_passive) through the step; RK4's stages follow them
-  const DissipationLedger::Booking booking = model_.model()->opt.integrator == mjINT_RK4
+  const DissipationLedger::Booking booking = integrator == mjINT_RK4
                                                  ? DissipationLedger::Booking::kTrapezoid
                                                  : DissipationLedger::Booking::kHeldForce;
   ledger_.Commit(capture.time(), points, booking);

@@ -37,11 +37,13 @@ class StepCommitter {
   // After the step: lists latest (the step's last evaluation) in d->contact,
   // sets divergence() when the step diverged, and else commits capture (the
   // step's start, when held) into the memory. start: the velocities recorded
-  // at this step's start and the one before.
+  // at this step's start and the one before. integrator: the one that took
+  // the step (the data's options, which a run may set apart from the
+  // model's), which decides how the ledger books it.
   // inner: the step's contacts integrated inside it, whose sub-samples are
   // committed in its start's stead (contact_stepper.h); or none.
   void AfterStep(mjData* d, const std::vector<PointEvaluation>& latest,
-                 const StepCapture& capture, const StepStartVelocities& start,
+                 const StepCapture& capture, const StepStartVelocities& start, int integrator,
                  ContactStepper* inner = nullptr);
 
   // Forgets every episode, impact, the energy and any divergence.

@@ -67,14 +67,14 @@ ManagedData* Managed(const Nesting& nesting, const mjData* d) {
   return nesting.outermost() ? Plugin::Get().Find(d) : nullptr;
 }
 
-// Before a step of managed (d's): with CONTACTLAWS_ACCURACY, the program's
-// options (m's) with the auto timestep as the data's own.
+// Before a step of managed (d's): the program's options (m's) as the data's
+// own, with CONTACTLAWS_ACCURACY the auto timestep's step.
 void Begin(const mjModel* m, mjData* d, ManagedData* managed) {
-  if (managed->auto_step) {
-    mjOption& options = managed->contacts.options();
-    options = m->opt;
-    options.timestep = managed->auto_step->Next(d, kPluginMaxStep);
-  }
+  // the program's options (its integrator the ledger books by, whatever its
+  // user set since)
+  mjOption& options = managed->contacts.options();
+  options = m->opt;
+  if (managed->auto_step) options.timestep = managed->auto_step->Next(d, kPluginMaxStep);
   managed->contacts.BeforeStep();
 }
 
