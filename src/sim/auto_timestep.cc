@@ -12,6 +12,7 @@
 #include "contactlaws/contact_model.h"
 #include "sim/estimate.h"
 #include "mujoco/damper_rate.h"
+#include "mujoco/kinematics.h"
 #include "sim/approach_steps.h"
 #include "sim/contact_steps.h"
 
@@ -81,26 +82,37 @@ constexpr double kSphericalInertia = 1e-9;
 
 }  // namespace
 
-// The composite inertia of a free joint's body and the bodies below it,
-// about their centre of mass, at qpos0 (a rigid set unless joints below
-// move it, which are the scene's own dynamics: HasOwnDynamics).
+// A single free body's principal moments are the model's (body_inertia);
+// a free body with bodies welded below it has their composite inertia about
+// their centre of mass, at qpos0 (a rigid set unless joints below move it,
+// which are the scene's own dynamics: HasOwnDynamics), from MuJoCo's crb.
 std::vector<AutoTimestep::Spinner> AutoTimestep::Spinners(const mjModel* m) {
   std::vector<AutoTimestep::Spinner> spinners;
-  UniqueData d(mj_makeData(m));
-  if (!d) throw Error("AutoTimestep: MuJoCo could not allocate mjData");
-  mj_kinematics(m, d.get());
-  mj_comPos(m, d.get());
-  mj_crb(m, d.get());
+  UniqueData d;  // for a composite body's crb, made once when one is met
   for (int j = 0; j < m->njnt; ++j) {
     if (m->jnt_type[j] != mjJNT_FREE) continue;
-    // crb: the composite inertia (xx, yy, zz, xy, xz, yz first) about the
-    // subtree's centre of mass, world axes
-    const mjtNum* c = d->crb + 10 * m->jnt_bodyid[j];
-    Eigen::Matrix3d inertia;
-    inertia << c[0], c[3], c[4], c[3], c[1], c[5], c[4], c[5], c[2];
-    const Eigen::Vector3d principal =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly)
-            .eigenvalues();
+    const int b = m->jnt_bodyid[j];
+    Eigen::Vector3d principal;  // ascending
+    if (SingleFreeBody(m, b)) {
+      principal = Eigen::Vector3d(m->body_inertia[3 * b], m->body_inertia[3 * b + 1],
+                                  m->body_inertia[3 * b + 2]);
+      std::sort(principal.data(), principal.data() + 3);
+    } else {
+      if (!d) {
+        d.reset(mj_makeData(m));
+        if (!d) throw Error("AutoTimestep: MuJoCo could not allocate mjData");
+        mj_kinematics(m, d.get());
+        mj_comPos(m, d.get());
+        mj_crb(m, d.get());
+      }
+      // crb: the composite inertia (xx, yy, zz, xy, xz, yz first) about the
+      // subtree's centre of mass, world axes
+      const mjtNum* c = d->crb + 10 * b;
+      Eigen::Matrix3d inertia;
+      inertia << c[0], c[3], c[4], c[3], c[1], c[5], c[4], c[5], c[2];
+      principal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly)
+                      .eigenvalues();
+    }
     if (!(principal[0] > 0)) continue;
     const double anisotropy = (principal[2] - principal[0]) / principal[0];
     if (anisotropy > kSphericalInertia) spinners.push_back({m->jnt_dofadr[j], anisotropy});

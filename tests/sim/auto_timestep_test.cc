@@ -430,6 +430,17 @@ TEST(AutoTimestepTest, AFreeBodyThatTumblesIsSteppedForItsTurningSpin) {
   // 2 pi / (10 rad/s x 3.0 x 50): 4.2 ms
   EXPECT_GT(automatic.steps, 400);
   EXPECT_LT(automatic.steps, 600);
+  // a dumbbell, a sphere welded to a sphere: its composite inertia (crb)
+  const Scene dumbbell = body(R"(<geom type="sphere" size="0.05" mass="1"/>
+    <body pos="0.3 0.02 0"><geom type="sphere" size="0.04" mass="0.7"/></body>)");
+  const Flight dumbbell_automatic = Fly(dumbbell, 2, std::nullopt);
+  const Flight dumbbell_fine = Fly(dumbbell, 2, 1e-4);
+  EXPECT_NEAR(dumbbell_automatic.kinetic, dumbbell_fine.kinetic,
+              kEnergyShare * dumbbell_fine.kinetic);
+  for (int i = 3; i < 7; ++i) {
+    EXPECT_NEAR(dumbbell_automatic.qpos[i], dumbbell_fine.qpos[i], kPath) << i;
+  }
+  EXPECT_GT(dumbbell_automatic.steps, 100);
   // a cube and a ball: a step or two for the whole flight
   for (const char* geom : {R"(<geom type="box" size="0.1 0.1 0.1" mass="1"/>)",
                            R"(<geom type="sphere" size="0.1" mass="1"/>)"}) {
