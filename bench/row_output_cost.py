@@ -49,7 +49,8 @@ def main():
     parser.add_argument("--duration", default="20")
     args = parser.parse_args()
     if args.repeats < 1 or args.load < 0:
-        sys.exit("row_output_cost: --repeats must be >= 1 and --load >= 0")
+        sys.exit(f"row_output_cost: --repeats {args.repeats} must be >= 1 and "
+                 f"--load {args.load} >= 0")
 
     with tempfile.TemporaryDirectory() as work:
         scene = args.scene

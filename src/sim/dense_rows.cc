@@ -38,11 +38,8 @@ void Rotated(const mjtNum q0[4], const mjtNum phi[3], mjtNum q[4]) {
   // next term (angle^4 / 3840) is below 2.6e-20, far under an ulp of 1/2
   const double scale =
       angle < 1e-4 ? 0.5 - angle * angle / 48 : std::sin(0.5 * angle) / angle;
-  const double r[4] = {std::cos(0.5 * angle), scale * phi[0], scale * phi[1], scale * phi[2]};
-  q[0] = q0[0] * r[0] - q0[1] * r[1] - q0[2] * r[2] - q0[3] * r[3];
-  q[1] = q0[0] * r[1] + q0[1] * r[0] + q0[2] * r[3] - q0[3] * r[2];
-  q[2] = q0[0] * r[2] - q0[1] * r[3] + q0[2] * r[0] + q0[3] * r[1];
-  q[3] = q0[0] * r[3] + q0[1] * r[2] - q0[2] * r[1] + q0[3] * r[0];
+  const mjtNum r[4] = {std::cos(0.5 * angle), scale * phi[0], scale * phi[1], scale * phi[2]};
+  mju_mulQuat(q, q0, r);
 }
 
 // The rotation of a step as the angular velocities turn it: q0^-1 q1 gives

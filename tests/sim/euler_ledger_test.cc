@@ -82,7 +82,8 @@ TEST_F(EulerLedgerTest, TheLedgerBooksByTheIntegratorTheRunStepsWith) {
   EXPECT_GT(dissipated_, 0.25);
   EXPECT_LT(std::abs(by_rk4), kDriftTolerance * dissipated_);
   std::string rk4_scene = kBallAtAWall;
-  rk4_scene.replace(rk4_scene.find("integrator=\"Euler\""), 18, "integrator=\"RK4\"");
+  const std::string euler_option = "integrator=\"Euler\"";
+  rk4_scene.replace(rk4_scene.find(euler_option), euler_option.size(), "integrator=\"RK4\"");
   SimulationOptions euler;
   euler.integrator = mjINT_EULER;
   const double by_euler = WallDrift(1e-4, rk4_scene, euler);
