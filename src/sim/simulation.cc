@@ -91,9 +91,7 @@ void Simulation::Reset(bool fresh) {
   }
   // the scene's state, its bodies in contact settled when asked, at the
   // run's own timestep: a step of another length (Step(h): the auto
-  // timestep's, the settling relaxation's) became the run's, and a settled
-  // run at 2 ms went on at the relaxation's last step, 0.21 ms (as did a
-  // replay's trajectories after their settling)
+  // timestep's, the settling relaxation's) is the run's only until here
   if (!settled_qpos_.empty()) mju_copy(data_->qpos, settled_qpos_.data(), model_->nq);
   contacts_->options().timestep = timestep_;
   contacts_->Reset();
